@@ -1,0 +1,170 @@
+// 3D collision response. Keep parallel to response2d.cpp. Conventions: response.h.
+#include <Eigen/Cholesky>
+
+#include "engine/response.h"
+
+namespace collide {
+
+Vec3 relative_velocity(const ImpactBody3& a, const ImpactBody3& b) {
+    return point_velocity(b) - point_velocity(a);
+}
+
+double rotational_term(const ImpactBody3& body, const Vec3& n) {
+    const Vec3 rn = body.r.cross(n);
+    return rn.dot(body.inv_I * rn);
+}
+
+Mat3 collision_matrix(const ImpactBody3& a, const ImpactBody3& b) {
+    const Mat3 Ra = skew(a.r), Rb = skew(b.r);
+    return (a.inv_m + b.inv_m) * Mat3::Identity() - Ra * a.inv_I * Ra - Rb * b.inv_I * Rb;
+}
+
+void apply_impulse(const ImpactBody3& a, const ImpactBody3& b, Response3* r) {
+    r->va = a.v - a.inv_m * r->P;
+    r->wa = a.w - a.inv_I * (a.r.cross(r->P) + r->couple);
+    r->vb = b.v + b.inv_m * r->P;
+    r->wb = b.w + b.inv_I * (b.r.cross(r->P) + r->couple);
+}
+
+// No impulse: the bodies keep their velocities.
+static Response3 unchanged(const ImpactBody3& a, const ImpactBody3& b) {
+    Response3 r;
+    r.separating = true;
+    r.va = a.v;
+    r.wa = a.w;
+    r.vb = b.v;
+    r.wb = b.w;
+    return r;
+}
+
+Response3 frictionless(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
+    const double un = relative_velocity(a, b).dot(n);
+    if (un >= 0.0) return unchanged(a, b);
+    const double denominator = a.inv_m + b.inv_m + rotational_term(a, n) + rotational_term(b, n);
+    Response3 r;
+    r.P = (-(1.0 + e) * un / denominator) * n;
+    apply_impulse(a, b, &r);
+    return r;
+}
+
+Vec3 sticking_impulse(const Mat3& K, const Vec3& u, const Vec3& n, double e) {
+    // Final relative velocity -e un n: K P = -e un n - u.
+    return K.llt().solve(-e * u.dot(n) * n - u);
+}
+
+Vec3 slip_direction(const Mat3& K, const Vec3& u, const Vec3& n) {
+    Vec3 ut = u - u.dot(n) * n;
+    // No initial slip: the contact starts to slip the way the normal impulse alone drives it.
+    if (ut.norm() <= 1e-12 * u.norm()) {
+        const Vec3 Kn = K * n;
+        ut = Kn - Kn.dot(n) * n;
+    }
+    const double len = ut.norm();
+    return len > 0.0 ? Vec3(ut / len) : Vec3::Zero();
+}
+
+Response3 coulomb(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu) {
+    const Vec3 u = relative_velocity(a, b);
+    const double un = u.dot(n);
+    if (un >= 0.0) return unchanged(a, b);
+    const Mat3 K = collision_matrix(a, b);
+    Response3 r;
+    r.P = sticking_impulse(K, u, n, e);
+    const double Pn = r.P.dot(n);
+    const double Pt = (r.P - Pn * n).norm();
+    if (!(Pn >= 0.0 && Pt <= mu * Pn)) {
+        // Outside the friction cone: slide, friction mu Pn against the initial slip.
+        const Vec3 t = slip_direction(K, u, n);
+        const Vec3 d = n - mu * t;
+        const double denominator = n.dot(K * d);
+        // denominator <= 0 (only for large mu with strongly coupled K, a Painleve-like case):
+        // no sliding impulse can reverse the approach; keep the sticking impulse.
+        if (denominator > 0.0) {
+            r.P = (-(1.0 + e) * un / denominator) * d;
+            r.sliding = true;
+        }
+    }
+    apply_impulse(a, b, &r);
+    return r;
+}
+
+Response3 matrix(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
+    const Vec3 u = relative_velocity(a, b);
+    if (u.dot(n) >= 0.0) return unchanged(a, b);
+    Response3 r;
+    r.P = collision_matrix(a, b).llt().solve(-(1.0 + e) * u);
+    apply_impulse(a, b, &r);
+    return r;
+}
+
+// The combined rigid motion (v at point x, w) of the welded pair, evaluated for each body.
+static Response3 move_together(const ImpactBody3& a, const ImpactBody3& b, const Vec3& vp,
+                               const Vec3& w) {
+    // vp: velocity of the combined body's material point at the contact point p.
+    // Body centres are at p - r, so v_body = vp + w x (-r).
+    Response3 r;
+    r.va = vp - w.cross(a.r);
+    r.vb = vp - w.cross(b.r);
+    r.wa = w;
+    r.wb = w;
+    if (!b.is_static()) {
+        // Impulse on B and the couple beyond rb x P: dLb (about xb) = Ib dwb = rb x P + C.
+        r.P = (r.vb - b.v) / b.inv_m;
+        r.couple = b.I * (r.wb - b.w) - b.r.cross(r.P);
+    } else {
+        r.P = -(r.va - a.v) / a.inv_m;
+        r.couple = -(a.I * (r.wa - a.w)) - a.r.cross(r.P);
+    }
+    return r;
+}
+
+Response3 stick(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n) {
+    if (relative_velocity(a, b).dot(n) >= 0.0) return unchanged(a, b);
+    // A static partner carries the other body with its own (prescribed) motion.
+    if (a.is_static()) return move_together(a, b, point_velocity(a), a.w);
+    if (b.is_static()) return move_together(a, b, point_velocity(b), b.w);
+    // Positions relative to the contact point: x - p = -r.
+    const double ma = 1.0 / a.inv_m, mb = 1.0 / b.inv_m, M = ma + mb;
+    const Vec3 xc = (ma * -a.r + mb * -b.r) / M;  // common centre of mass, relative to p
+    const Vec3 da = -a.r - xc, db = -b.r - xc;     // each centre relative to xc
+    // Parallel axis: I = Ic + m (|d|^2 E - d d^T).
+    auto shifted = [](const Mat3& I, double m, const Vec3& d) {
+        return Mat3(I + m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
+    };
+    const Mat3 I = shifted(a.I, ma, da) + shifted(b.I, mb, db);
+    const Vec3 v = (ma * a.v + mb * b.v) / M;
+    const Vec3 L = a.I * a.w + ma * da.cross(a.v) + b.I * b.w + mb * db.cross(b.v);
+    const Vec3 w = I.llt().solve(L);
+    // Velocity of the combined body at p: v + w x (p - xc) = v + w x (-xc).
+    return move_together(a, b, v - w.cross(xc), w);
+}
+
+Mat6 newton_euler_matrix(const ImpactBody3& body) {
+    const double m = 1.0 / body.inv_m;
+    const Vec3 c = -body.r;  // centre of mass relative to the contact point
+    const Mat3 C = skew(c);
+    const Mat3 H = m * C;  // [h]x with h = m c
+    Mat6 nem;
+    nem.topLeftCorner<3, 3>() = body.I + m * C * C.transpose();
+    nem.topRightCorner<3, 3>() = H;
+    nem.bottomLeftCorner<3, 3>() = H.transpose();
+    nem.bottomRightCorner<3, 3>() = m * Mat3::Identity();
+    return nem;
+}
+
+Response3 stick_newton_euler(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n) {
+    if (relative_velocity(a, b).dot(n) >= 0.0) return unchanged(a, b);
+    if (a.is_static()) return move_together(a, b, point_velocity(a), a.w);
+    if (b.is_static()) return move_together(a, b, point_velocity(b), b.w);
+    // Each body's motion as the 6-vector (w, v at p).
+    auto twist = [](const ImpactBody3& body) {
+        Vec6 V;
+        V << body.w, point_velocity(body);
+        return V;
+    };
+    const Mat6 Na = newton_euler_matrix(a), Nb = newton_euler_matrix(b);
+    const Vec6 V = (Na + Nb).llt().solve(Na * twist(a) + Nb * twist(b));
+    return move_together(a, b, V.tail<3>(), V.head<3>());
+}
+
+}  // namespace collide
