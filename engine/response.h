@@ -107,6 +107,24 @@ Response2 matrix(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, doub
 // total angular momentum about xc; each body then moves with that rigid motion. Needs only r
 // (centres are at p - r). n only decides whether the bodies approach (un < 0).
 Response3 stick(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n);
+// The welded pair as one rigid body, positions relative to the contact point p (two dynamic
+// bodies): M = ma + mb, xc = (ma xa + mb xb) / M, I = sum (Ii + mi (|di|^2 E - di di^T)) with
+// di = xi - xc, v = (ma va + mb vb) / M, L = sum (Ii wi + mi di x vi), w = I^-1 L.
+struct Combined3 {
+    double M = 0.0;
+    Vec3 xc = Vec3::Zero(), da = Vec3::Zero(), db = Vec3::Zero();
+    Mat3 I = Mat3::Zero();
+    Vec3 v = Vec3::Zero(), L = Vec3::Zero(), w = Vec3::Zero();
+};
+Combined3 combined_body(const ImpactBody3& a, const ImpactBody3& b);
+struct Combined2 {
+    double M = 0.0;
+    Vec2 xc = Vec2::Zero(), da = Vec2::Zero(), db = Vec2::Zero();
+    double I = 0.0;
+    Vec2 v = Vec2::Zero();
+    double L = 0.0, w = 0.0;
+};
+Combined2 combined_body(const ImpactBody2& a, const ImpactBody2& b);
 Response2 stick(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n);
 Response1 stick(const ImpactBody1& a, const ImpactBody1& b, double n);
 

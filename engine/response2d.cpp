@@ -110,19 +110,27 @@ static Response2 move_together(const ImpactBody2& a, const ImpactBody2& b, const
     return r;
 }
 
+Combined2 combined_body(const ImpactBody2& a, const ImpactBody2& b) {
+    Combined2 c;
+    const double ma = 1.0 / a.inv_m, mb = 1.0 / b.inv_m;
+    c.M = ma + mb;
+    c.xc = (ma * -a.r + mb * -b.r) / c.M;
+    c.da = -a.r - c.xc;
+    c.db = -b.r - c.xc;
+    // Parallel axis: I = Ic + m |d|^2.
+    c.I = a.I + ma * c.da.squaredNorm() + b.I + mb * c.db.squaredNorm();
+    c.v = (ma * a.v + mb * b.v) / c.M;
+    c.L = a.I * a.w + ma * cross(c.da, a.v) + b.I * b.w + mb * cross(c.db, b.v);
+    c.w = c.L / c.I;
+    return c;
+}
+
 Response2 stick(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n) {
     if (relative_velocity(a, b).dot(n) >= 0.0) return unchanged(a, b);
     if (a.is_static()) return move_together(a, b, point_velocity(a), a.w);
     if (b.is_static()) return move_together(a, b, point_velocity(b), b.w);
-    const double ma = 1.0 / a.inv_m, mb = 1.0 / b.inv_m, M = ma + mb;
-    const Vec2 xc = (ma * -a.r + mb * -b.r) / M;
-    const Vec2 da = -a.r - xc, db = -b.r - xc;
-    // Parallel axis: I = Ic + m |d|^2.
-    const double I = a.I + ma * da.squaredNorm() + b.I + mb * db.squaredNorm();
-    const Vec2 v = (ma * a.v + mb * b.v) / M;
-    const double L = a.I * a.w + ma * cross(da, a.v) + b.I * b.w + mb * cross(db, b.v);
-    const double w = L / I;
-    return move_together(a, b, v - cross(w, xc), w);
+    const Combined2 c = combined_body(a, b);
+    return move_together(a, b, c.v - cross(c.w, c.xc), c.w);
 }
 
 }  // namespace collide

@@ -118,25 +118,32 @@ static Response3 move_together(const ImpactBody3& a, const ImpactBody3& b, const
     return r;
 }
 
+Combined3 combined_body(const ImpactBody3& a, const ImpactBody3& b) {
+    Combined3 c;
+    const double ma = 1.0 / a.inv_m, mb = 1.0 / b.inv_m;
+    c.M = ma + mb;
+    c.xc = (ma * -a.r + mb * -b.r) / c.M;  // centres are at x - p = -r
+    c.da = -a.r - c.xc;
+    c.db = -b.r - c.xc;
+    // Parallel axis: I = Ic + m (|d|^2 E - d d^T).
+    auto shifted = [](const Mat3& I, double m, const Vec3& d) {
+        return Mat3(I + m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
+    };
+    c.I = shifted(a.I, ma, c.da) + shifted(b.I, mb, c.db);
+    c.v = (ma * a.v + mb * b.v) / c.M;
+    c.L = a.I * a.w + ma * c.da.cross(a.v) + b.I * b.w + mb * c.db.cross(b.v);
+    c.w = c.I.llt().solve(c.L);
+    return c;
+}
+
 Response3 stick(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n) {
     if (relative_velocity(a, b).dot(n) >= 0.0) return unchanged(a, b);
     // A static partner carries the other body with its own (prescribed) motion.
     if (a.is_static()) return move_together(a, b, point_velocity(a), a.w);
     if (b.is_static()) return move_together(a, b, point_velocity(b), b.w);
-    // Positions relative to the contact point: x - p = -r.
-    const double ma = 1.0 / a.inv_m, mb = 1.0 / b.inv_m, M = ma + mb;
-    const Vec3 xc = (ma * -a.r + mb * -b.r) / M;  // common centre of mass, relative to p
-    const Vec3 da = -a.r - xc, db = -b.r - xc;     // each centre relative to xc
-    // Parallel axis: I = Ic + m (|d|^2 E - d d^T).
-    auto shifted = [](const Mat3& I, double m, const Vec3& d) {
-        return Mat3(I + m * (d.squaredNorm() * Mat3::Identity() - d * d.transpose()));
-    };
-    const Mat3 I = shifted(a.I, ma, da) + shifted(b.I, mb, db);
-    const Vec3 v = (ma * a.v + mb * b.v) / M;
-    const Vec3 L = a.I * a.w + ma * da.cross(a.v) + b.I * b.w + mb * db.cross(b.v);
-    const Vec3 w = I.llt().solve(L);
+    const Combined3 c = combined_body(a, b);
     // Velocity of the combined body at p: v + w x (p - xc) = v + w x (-xc).
-    return move_together(a, b, v - w.cross(xc), w);
+    return move_together(a, b, c.v - c.w.cross(c.xc), c.w);
 }
 
 Mat6 newton_euler_matrix(const ImpactBody3& body) {

@@ -1,0 +1,44 @@
+// Errors in user input: they name the file, the line and column where known, and the key.
+// The command prints one such message on stderr and exits with code 2.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace collide {
+
+struct SourcePos {
+    int line = 0;    // 1-based; 0 = unknown
+    int column = 0;  // 1-based; 0 = unknown
+};
+
+class InputError : public std::runtime_error {
+public:
+    InputError(std::string file, SourcePos pos, std::string key, std::string message)
+        : std::runtime_error(format(file, pos, key, message)),
+          file_(std::move(file)), pos_(pos), key_(std::move(key)), message_(std::move(message)) {}
+
+    const std::string& file() const { return file_; }
+    SourcePos pos() const { return pos_; }
+    const std::string& key() const { return key_; }
+    const std::string& message() const { return message_; }
+
+    // "FILE:LINE:COL: key: message" (parts that are unknown are left out).
+    static std::string format(const std::string& file, SourcePos pos, const std::string& key,
+                              const std::string& message) {
+        std::string s = file;
+        if (pos.line > 0) s += ":" + std::to_string(pos.line);
+        if (pos.line > 0 && pos.column > 0) s += ":" + std::to_string(pos.column);
+        s += ": ";
+        if (!key.empty()) s += key + ": ";
+        return s + message;
+    }
+
+private:
+    std::string file_;
+    SourcePos pos_;
+    std::string key_;
+    std::string message_;
+};
+
+}  // namespace collide

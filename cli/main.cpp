@@ -1,0 +1,62 @@
+// The `collide` command.
+#include <iostream>
+#include <sstream>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/input_error.h"
+#include "cli/solve.h"
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+int run_solve(const std::string& file, const std::string& format) {
+    const collide::SolveProblem problem = collide::parse_solve_file(file);
+    const collide::Solution solution = collide::solve(problem);
+    // Write to memory first: on any failure nothing half-written reaches stdout.
+    std::ostringstream out;
+    if (format == "json") collide::write_json(problem, solution, out);
+    else if (format == "markdown") collide::write_markdown(problem, solution, out);
+    else collide::write_text(problem, solution, out);
+    std::cout << out.str() << std::flush;
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"collide: an educational rigid-body collision simulator (1D, 2D, 3D).\n"
+                 "Conventions: SI units; the contact normal n points from body A into body B;\n"
+                 "the impulse P acts as +P on B and -P on A."};
+    app.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
+    app.require_subcommand(1);
+
+    std::string file, format = "text";
+    CLI::App* solve = app.add_subcommand(
+        "solve", "Solve one collision from a TOML file and show the worked example");
+    solve->add_option("FILE", file, "collision description (TOML); - reads stdin")->required();
+    solve->add_option("--format", format, "text (worked example), markdown (with LaTeX) or json")
+        ->check(CLI::IsMember({"text", "markdown", "json"}))
+        ->capture_default_str();
+    solve->footer(
+        "Example: collide solve lessons/solve/rod-on-ground.toml --format markdown\n"
+        "File format: see README.md, section 'collide solve'.");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : kBadInput;
+    }
+    try {
+        if (*solve) return run_solve(file, format);
+    } catch (const collide::InputError& e) {
+        std::cerr << "collide: error: " << e.what() << "\n";
+        return kBadInput;
+    } catch (const std::exception& e) {
+        std::cerr << "collide: internal error: " << e.what() << "\n";
+        return 1;
+    }
+    return 0;
+}

@@ -1,0 +1,93 @@
+#include "cli/notation.h"
+
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
+#include <cstdio>
+#include <utility>
+#include <vector>
+
+namespace collide::notation {
+
+std::string to_tex(const std::string& text) {
+    static const std::vector<std::pair<std::string, std::string>> symbols = {
+        {"ω", "\\omega "}, {"μ", "\\mu "}, {"Δ", "\\Delta "}, {"]×", "]_\\times "},
+        {"×", "\\times "}, {"·", "\\cdot "}, {"⁻¹", "^{-1}"}, {"²", "^{2}"}, {"ᵀ", "^{T}"},
+        {"′", "'"}, {"≥", "\\ge "}, {"≤", "\\le "}, {"→", "\\Rightarrow "}, {"−", "-"},
+        {"≈", "\\approx "}, {"%", "\\%"}, {"‖", "\\|"}, {"✓", "\\checkmark "}};
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        bool matched = false;
+        for (const auto& [from, to] : symbols) {
+            if (text.compare(i, from.size(), from) == 0) {
+                out += to;
+                i += from.size();
+                matched = true;
+                break;
+            }
+        }
+        if (matched) continue;
+        // Subscripts: v_pa -> v_{pa}.
+        if (text[i] == '_') {
+            std::size_t j = i + 1;
+            while (j < text.size() && std::isalnum(static_cast<unsigned char>(text[j]))) ++j;
+            out += "_{" + text.substr(i + 1, j - i - 1) + "}";
+            i = j;
+            continue;
+        }
+        out += text[i++];
+    }
+    return out;
+}
+
+F words(const std::string& text) { return {text, "\\text{" + text + "}"}; }
+
+F unit(const std::string& u) {
+    std::string tex;
+    for (std::size_t i = 0; i < u.size();) {  // kg·m²/s -> kg\cdot m^{2}/s
+        if (u.compare(i, 2, "·") == 0) { tex += "\\cdot "; i += 2; }
+        else if (u.compare(i, 2, "²") == 0) { tex += "^{2}"; i += 2; }
+        else tex += u[i++];
+    }
+    return {" " + u, "\\,\\mathrm{" + tex + "}"};
+}
+
+std::string num_text(double x) {
+    if (x == 0.0) x = 0.0;  // no "-0"
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", x);
+    return buf;
+}
+
+F num(double x) {
+    const std::string t = num_text(x);
+    const std::size_t e = t.find('e');
+    if (e == std::string::npos) return {t, t};
+    const int exponent = std::atoi(t.c_str() + e + 1);
+    return {t, t.substr(0, e) + "\\times 10^{" + std::to_string(exponent) + "}"};
+}
+
+F vec(const Vec3& v, int dim) {
+    if (dim == 1) return num(v.x());
+    F out{"(", "("};
+    for (int i = 0; i < dim; ++i) {
+        if (i) out = out + F{", ", ",\\ "};
+        out = out + num(v[i]);
+    }
+    return out + F{")", ")"};
+}
+
+F spin(const Vec3& w, int dim) { return dim == 2 ? num(w.z()) : vec(w, 3); }
+
+F mat(const Mat3& m, int dim) {
+    const int n = dim == 3 ? 3 : dim == 2 ? 2 : 1;
+    F out{"[", "\\begin{pmatrix}"};
+    for (int i = 0; i < n; ++i) {
+        out = out + F{i ? ", [" : "[", i ? " \\\\ " : ""};
+        for (int j = 0; j < n; ++j) out = out + F{j ? ", " : "", j ? " & " : ""} + num(m(i, j));
+        out = out + F{"]", ""};
+    }
+    return out + F{"]", "\\end{pmatrix}"};
+}
+
+}  // namespace collide::notation

@@ -1,0 +1,36 @@
+// Formulas written once, printed two ways: plain Unicode text for the terminal and LaTeX for
+// Markdown. A formula is written in the text notation (v_pa, ω_a, I_a⁻¹, ×, ·) and converted to
+// LaTeX mechanically; numbers, units and prose carry both forms themselves.
+#pragma once
+
+#include <string>
+
+#include "engine/math.h"
+
+namespace collide::notation {
+
+struct F {
+    std::string txt, tex;
+};
+inline F operator+(F a, const F& b) { return {a.txt + b.txt, a.tex + b.tex}; }
+
+// Text notation -> LaTeX: Greek letters, ×, ·, ⁻¹, ², ᵀ, ′, subscripts v_pa -> v_{pa}.
+std::string to_tex(const std::string& text);
+
+// A formula in the text notation.
+inline F f(const std::string& text) { return {text, to_tex(text)}; }
+// Prose inside a formula line (upright in LaTeX).
+F words(const std::string& text);
+// A unit after a number: " m/s" / "\,\mathrm{m/s}".
+F unit(const std::string& u);
+// A number to 6 significant digits ("-0" shown as "0"; 1e-07 as 1\times10^{-7} in LaTeX).
+F num(double x);
+std::string num_text(double x);
+// A vector of the problem's dimension: 1D a number, 2D (x, y), 3D (x, y, z).
+F vec(const Vec3& v, int dim);
+// An angular velocity: 2D the z component, 3D the vector.
+F spin(const Vec3& w, int dim);
+// A matrix of the problem's dimension (2D: the upper-left 2x2).
+F mat(const Mat3& m, int dim);
+
+}  // namespace collide::notation

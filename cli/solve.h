@@ -1,0 +1,56 @@
+// `collide solve`: one collision, every quantity of the worked example, and its three outputs
+// (text worked example, Markdown with LaTeX, JSON). Formats: README.md.
+#pragma once
+
+#include <iosfwd>
+
+#include "cli/solve_problem.h"
+#include "engine/page.h"
+
+namespace collide {
+
+// Everything the worked example shows, embedded in 3D whatever the dimension
+// (1D: along x; 2D: the xy plane, spins and 2D cross products along z).
+struct Solution {
+    int dim = 3;
+    Vec3 n = Vec3::UnitX();
+    // Contact kinematics before the impulse.
+    Vec3 ra = Vec3::Zero(), rb = Vec3::Zero();    // lever arms p - x
+    Vec3 vpa = Vec3::Zero(), vpb = Vec3::Zero();  // contact-point velocities
+    Vec3 u = Vec3::Zero();                        // vpb - vpa
+    double un = 0.0;
+    // Frictionless denominator: 1/ma + 1/mb + rot_a + rot_b.
+    double inv_ma = 0.0, inv_mb = 0.0, rot_a = 0.0, rot_b = 0.0;
+    Mat3 inv_Ia = Mat3::Zero(), inv_Ib = Mat3::Zero();  // world; 2D: zz
+    Mat3 Ia = Mat3::Zero(), Ib = Mat3::Zero();
+    Mat3 K = Mat3::Zero();                              // collision matrix (2D: 2x2 block)
+    Vec3 P_stick = Vec3::Zero();                        // coulomb: sticking impulse
+    Vec3 slip = Vec3::Zero();                           // coulomb: sliding direction t
+    double slide_denominator = 0.0;                     // n . K (n - mu t)
+    // stick: the combined body (centre relative to the contact point).
+    double M = 0.0;
+    Vec3 xc = Vec3::Zero(), da = Vec3::Zero(), db = Vec3::Zero();
+    Mat3 Ic = Mat3::Zero();
+    Vec3 vc = Vec3::Zero(), Lc = Vec3::Zero(), wc = Vec3::Zero();
+    double newton_euler_difference = 0.0;  // |6x6 result - direct result|, m/s and rad/s
+    page::Listing3 listing;                // page-listing (1D: rotational parts zero)
+    // The outcome.
+    bool separating = false, sliding = false;
+    Vec3 P = Vec3::Zero(), couple = Vec3::Zero();
+    Vec3 va = Vec3::Zero(), wa = Vec3::Zero(), vb = Vec3::Zero(), wb = Vec3::Zero();
+    Vec3 u_after = Vec3::Zero();
+    double un_after = 0.0;
+    // Checks: totals of the dynamic bodies, before and after.
+    Vec3 p_before = Vec3::Zero(), p_after = Vec3::Zero();
+    Vec3 L_before = Vec3::Zero(), L_after = Vec3::Zero();              // about problem.about
+    Vec3 Lp_before = Vec3::Zero(), Lp_after = Vec3::Zero();            // about the contact point
+    double ke_before = 0.0, ke_after = 0.0;
+};
+
+Solution solve(const SolveProblem& problem);
+
+void write_text(const SolveProblem& problem, const Solution& s, std::ostream& out);
+void write_markdown(const SolveProblem& problem, const Solution& s, std::ostream& out);
+void write_json(const SolveProblem& problem, const Solution& s, std::ostream& out);
+
+}  // namespace collide

@@ -1,0 +1,513 @@
+// The worked example of `collide solve` (text and Markdown) and its JSON record.
+// Each step shows the formula in the page's symbols, then the numbers substituted.
+#include <cmath>
+#include <ostream>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/notation.h"
+#include "cli/solve.h"
+
+namespace collide {
+
+namespace {
+
+using namespace notation;
+
+struct Step {
+    std::string title;
+    std::vector<F> lines;
+    std::vector<std::string> notes;  // prose after the lines
+};
+
+// Symbols with a body subscript: sym("v", 'a') = "v_a".
+// A base that already has a subscript extends it: sym("v_p", 'a') = "v_pa".
+std::string sym(const std::string& base, char body) {
+    return base + (base.find('_') == std::string::npos ? "_" : "") + body;
+}
+
+class Builder {
+public:
+    Builder(const SolveProblem& P, const Solution& s) : P(P), s(s), d(P.dimension) {}
+
+    std::vector<Step> build() {
+        given();
+        if (d == 1) {
+            step("Relative velocity along the normal", {f("u_n = (v_b − v_a) n"),
+                 f("u_n = (") + num(s.vpb.x()) + f(" − ") + paren(s.vpa.x()) + f(") × ") +
+                     paren(s.n.x()) + f(" = ") + num(s.un) + unit("m/s")});
+        } else {
+            kinematics();
+        }
+        if (s.separating) {
+            step("No collision", {f("u_n = ") + num(s.un) + unit("m/s") + f(" ≥ 0")},
+                 {"The contact points are separating (or resting): no impulse acts, every velocity "
+                  "stays as it was."});
+        } else {
+            switch (P.model) {
+                case Model::frictionless: frictionless_steps(); break;
+                case Model::coulomb: coulomb_steps(); break;
+                case Model::matrix: matrix_steps(); break;
+                case Model::stick: stick_steps(); break;
+                case Model::page_listing: listing_steps(); break;
+            }
+            if (P.model != Model::page_listing && P.model != Model::stick) final_velocities();
+            restitution_check();
+        }
+        checks();
+        return steps;
+    }
+
+private:
+    const SolveProblem& P;
+    const Solution& s;
+    const int d;
+    std::vector<Step> steps;
+
+    F V(const Vec3& v) const { return vec(v, d); }
+    F W(const Vec3& w) const { return spin(w, d); }
+    // After an operator: a negative 2D spin in parentheses.
+    F Wp(const Vec3& w) const { return d == 2 ? paren(w.z()) : spin(w, d); }
+    static F paren(double x) { return x < 0 ? f("(") + num(x) + f(")") : num(x); }
+    const SolveBody& body(char c) const { return c == 'a' ? P.a : P.b; }
+    bool is_static(char c) const { return body(c).b3.is_static; }
+
+    void step(const std::string& title, std::vector<F> lines, std::vector<std::string> notes = {}) {
+        steps.push_back({title, std::move(lines), std::move(notes)});
+    }
+
+    void given() {
+        std::vector<F> lines;
+        std::vector<std::string> notes;
+        for (char c : {'a', 'b'}) {
+            const SolveBody& B = body(c);
+            const bool show_shape = !B.shape.empty() && B.shape != B.name;
+            const std::string who = B.name + (show_shape ? " (" + B.shape + ")" : "");
+            const Vec3 x = d == 1 ? Vec3(B.b1.position, 0, 0) : B.b3.position;
+            const Vec3 vi = d == 1 ? Vec3(B.b1.v, 0, 0) : B.b3.v;
+            F line = words(who + ": ");
+            if (B.b3.is_static)
+                line = line + words("static (immovable), ") + f("1/" + sym("m", c) + " = 0");
+            else
+                line = line + f(sym("m", c) + " = ") + num(B.b3.mass) + unit("kg");
+            if (d >= 2 || B.b1.position != 0.0) line = line + f(", " + sym("x", c) + " = ") + V(x) + unit("m");
+            line = line + f(", " + sym("v", c) + " = ") + V(vi) + unit("m/s");
+            if (d >= 2) line = line + f(", " + sym("ω", c) + " = ") + W(B.b3.w) + unit("rad/s");
+            lines.push_back(line);
+            if (d >= 2 && !B.b3.is_static) {
+                const Mat3& I = c == 'a' ? s.Ia : s.Ib;
+                if (d == 2)
+                    lines.push_back(f(sym("I", c) + " = ") + num(I(2, 2)) + unit("kg·m²"));
+                else
+                    lines.push_back(f(sym("I", c) + " = R I_body Rᵀ = ") + mat(I, 3) + unit("kg·m²"));
+            }
+        }
+        if (d >= 2) lines.push_back(f("p = ") + V(P.point) + unit("m") + f(",  n = ") + V(s.n));
+        else lines.push_back(f("n = ") + num(s.n.x()));
+        F coeffs = f("e = ") + num(P.restitution);
+        if (P.model == Model::coulomb) coeffs = coeffs + f(",  μ = ") + num(P.friction);
+        lines.push_back(coeffs);
+        if (d == 3) notes.push_back("Inertia tensors are in world axes, about each centre of mass.");
+        if (d >= 2) notes.push_back("p is the contact point; n the unit normal from A into B.");
+        else notes.push_back("n = +1 when B lies in the +x direction from A, -1 otherwise.");
+        step("Given", lines, notes);
+    }
+
+    void kinematics() {
+        std::vector<F> lever, vel;
+        for (char c : {'a', 'b'}) {
+            const SolveBody& B = body(c);
+            const Vec3& r = c == 'a' ? s.ra : s.rb;
+            const Vec3& vp = c == 'a' ? s.vpa : s.vpb;
+            lever.push_back(f(sym("r", c) + " = p − " + sym("x", c) + " = ") + V(P.point) + f(" − ") +
+                            V(B.b3.position) + f(" = ") + V(r) + unit("m"));
+            vel.push_back(f(sym("v_p", c) + " = " + sym("v", c) + " + " + sym("ω", c) + " × " +
+                            sym("r", c) + " = ") + V(B.b3.v) + f(" + ") + W(B.b3.w) + f(" × ") +
+                          V(r) + f(" = ") + V(vp) + unit("m/s"));  // vectors carry parentheses
+        }
+        step("Lever arms  r = p − x", lever);
+        step("Contact-point velocities  v_p = v + ω × r", vel,
+             d == 2 ? std::vector<std::string>{"In 2D, ω × r = ω (−r_y, r_x)."}
+                    : std::vector<std::string>{});
+        step("Relative velocity at the contact  u = v_pb − v_pa,  u_n = u · n",
+             {f("u = ") + V(s.vpb) + f(" − ") + V(s.vpa) + f(" = ") + V(s.u) + unit("m/s"),
+              f("u_n = ") + V(s.u) + f(" · ") + V(s.n) + f(" = ") + num(s.un) + unit("m/s") +
+                  words(s.un < 0 ? "  (u_n < 0: approaching)" : "")});
+    }
+
+    // The frictionless denominator D and its terms.
+    F denominator_formula() const {
+        if (d == 1) return f("D = 1/m_a + 1/m_b");
+        if (d == 2) return f("D = 1/m_a + 1/m_b + (r_a × n)²/I_a + (r_b × n)²/I_b");
+        return f("D = 1/m_a + 1/m_b + (r_a × n)·I_a⁻¹(r_a × n) + (r_b × n)·I_b⁻¹(r_b × n)");
+    }
+    double denominator() const { return s.inv_ma + s.inv_mb + s.rot_a + s.rot_b; }
+    F denominator_numbers() const {
+        F line = f("D = ") + num(s.inv_ma) + f(" + ") + num(s.inv_mb);
+        if (d >= 2) line = line + f(" + ") + num(s.rot_a) + f(" + ") + num(s.rot_b);
+        return line + f(" = ") + num(denominator()) + unit("1/kg");
+    }
+
+    void frictionless_steps() {
+        std::vector<std::string> notes;
+        if (d == 2) notes.push_back("2D cross products are scalars: r × n = r_x n_y − r_y n_x.");
+        if (d == 1 && P.model != Model::frictionless)
+            notes.push_back(std::string("On a line there is no tangential direction: the ") +
+                            model_name(P.model) + " model is the frictionless formula.");
+        step("Denominator (effective inverse mass along n)", {denominator_formula(), denominator_numbers()},
+             notes);
+        impulse_along_n(denominator());
+    }
+
+    void impulse_along_n(double D) {
+        const double j = -(1 + P.restitution) * s.un / D;
+        step("Impulse  j = −(1 + e) u_n / D,  P = j n",
+             {f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") + num(D) +
+                  f(" = ") + num(j) + unit("N·s"),
+              f("P = j n = ") + V(s.P) + unit("N·s")},
+             {"P acts on B at the contact point; A receives −P."});
+    }
+
+    void collision_matrix_step() {
+        const std::string formula =
+            d == 2 ? "K = (1/m_a + 1/m_b) E + perp(r_a) perp(r_a)ᵀ/I_a + perp(r_b) perp(r_b)ᵀ/I_b"
+                   : "K = (1/m_a + 1/m_b) E − [r_a]× I_a⁻¹ [r_a]× − [r_b]× I_b⁻¹ [r_b]×";
+        std::vector<std::string> notes = {
+            "An impulse P changes the relative contact velocity by K P. K is symmetric positive "
+            "definite, so it can always be inverted (Cholesky: K = L Lᵀ)."};
+        if (d == 2) notes.push_back("perp(r) = (−r_y, r_x).");
+        step("Collision matrix", {f(formula), f("K = ") + mat(s.K, d) + unit("1/kg")}, notes);
+    }
+
+    void coulomb_steps() {
+        collision_matrix_step();
+        const double Pn = s.P_stick.dot(s.n);
+        const double Pt = (s.P_stick - Pn * s.n).norm();
+        step("Sticking impulse  P_s = K⁻¹(−e u_n n − u)",
+             {f("P_s = ") + V(s.P_stick) + unit("N·s"),
+              f("P_n = P_s · n = ") + num(Pn) + unit("N·s") + f(",  |P_t| = |P_s − P_n n| = ") +
+                  num(Pt) + unit("N·s")},
+             {"The impulse that stops the tangential slip and reverses the normal approach by e."});
+        const bool inside = !s.sliding;
+        step("Friction cone  |P_t| ≤ μ P_n",
+             {num(Pt) + f(inside ? " ≤ " : " > ") + num(P.friction) + f(" × ") + paren(Pn) + f(" = ") +
+              num(P.friction * Pn)},
+             {inside ? "Inside the cone: the contact sticks, P = P_s."
+                     : "Outside the cone: the contact slides."});
+        if (inside) {
+            step("Impulse", {f("P = P_s = ") + V(s.P) + unit("N·s")});
+            return;
+        }
+        const double j = s.P.dot(s.n);
+        step("Sliding impulse  P = j (n − μ t),  j = −(1 + e) u_n / (n · K(n − μ t))",
+             {f("t = ") + V(s.slip) + words("  (the direction of the initial tangential slip)"),
+              f("n · K(n − μ t) = ") + num(s.slide_denominator) + unit("1/kg"),
+              f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") +
+                  num(s.slide_denominator) + f(" = ") + num(j) + unit("N·s"),
+              f("P = ") + V(s.P) + unit("N·s")},
+             {"Friction μ j opposes the initial slip; μ = 0 gives the frictionless impulse."});
+    }
+
+    void matrix_steps() {
+        collision_matrix_step();
+        const Mat3 Kinv = d == 2 ? embed2_inverse() : Mat3(s.K.inverse());
+        step("The page's matrix method  (e + 1) u = −K P  →  P = −(1 + e) K⁻¹ u",
+             {f("K⁻¹ = ") + mat(Kinv, d) + unit("kg"),
+              f("P = −(1 + ") + num(P.restitution) + f(") K⁻¹ ") + V(s.u) + f(" = ") + V(s.P) + unit("N·s")},
+             {"Restitution acts on the whole relative velocity, tangential part too: a rough "
+              "(\"superball\") collision, not the frictionless one. Afterwards u′ = −e u."});
+    }
+    Mat3 embed2_inverse() const {
+        Mat3 out = Mat3::Zero();
+        out.topLeftCorner<2, 2>() = s.K.topLeftCorner<2, 2>().inverse();
+        return out;
+    }
+
+    void stick_steps() {
+        if (is_static(a_or_b_static())) {
+            const char st = a_or_b_static();
+            step("Stick to a static body",
+                 {f("v′ = v_" + std::string(1, st) + " + ω_" + std::string(1, st) + " × (x − x_" +
+                    std::string(1, st) + "),  ω′ = ω_" + std::string(1, st))},
+                 {"The moving body welds to the immovable one and takes its motion."});
+            final_values();
+            return;
+        }
+        if (d == 1) {
+            step("Combined body  M = m_a + m_b,  v = (m_a v_a + m_b v_b)/M",
+                 {f("M = ") + num(s.M) + unit("kg") + f(",  v = ") + num(s.vc.x()) + unit("m/s")},
+                 {"Perfectly inelastic on a line: both move on with the centre-of-mass velocity."});
+            final_values();
+            impulse_from_change();
+            return;
+        }
+        const Vec3 xc = P.point + s.xc;
+        step("Combined body  M = m_a + m_b,  x_c = (m_a x_a + m_b x_b)/M",
+             {f("M = ") + num(s.M) + unit("kg") + f(",  x_c = ") + V(xc) + unit("m"),
+              f("d_a = x_a − x_c = ") + V(s.da) + unit("m") + f(",  d_b = x_b − x_c = ") + V(s.db) + unit("m")});
+        step(d == 2 ? "Inertia about x_c (parallel axis)  I = I_a + m_a |d_a|² + I_b + m_b |d_b|²"
+                    : "Inertia about x_c (parallel axis)  I = Σ (I_i + m_i (|d_i|² E − d_i d_iᵀ))",
+             {f("I = ") + (d == 2 ? num(s.Ic(2, 2)) : mat(s.Ic, 3)) + unit("kg·m²")});
+        step("Momentum and angular momentum about x_c",
+             {f("v = (m_a v_a + m_b v_b)/M = ") + V(s.vc) + unit("m/s"),
+              f("L = I_a ω_a + m_a d_a × v_a + I_b ω_b + m_b d_b × v_b = ") + W(s.Lc) + unit("kg·m²/s"),
+              f("ω = I⁻¹ L = ") + W(s.wc) + unit("rad/s")});
+        final_values();
+        impulse_from_change();
+        if (d == 3)
+            step("The page's 6×6 Newton-Euler form gives the same motion",
+                 {f("(NEM_a + NEM_b) V = NEM_a V_a + NEM_b V_b,  NEM = [[I_p, [h]×], [[h]×ᵀ, m E]]"),
+                  f("max difference from the direct result = ") + num(s.newton_euler_difference)},
+                 {"Every matrix is taken about the same point (the contact point), as the page says "
+                  "rotations must be; h = m (x − p), I_p = I + m [c]× [c]×ᵀ with c = x − p."});
+    }
+    char a_or_b_static() const { return is_static('a') ? 'a' : 'b'; }
+
+    // stick: each body moves with the combined rigid motion.
+    void final_values() {
+        std::vector<F> lines;
+        for (char c : {'a', 'b'}) {
+            const Vec3& v = c == 'a' ? s.va : s.vb;
+            const Vec3& w = c == 'a' ? s.wa : s.wb;
+            const bool welded = d >= 2 && !is_static('a') && !is_static('b');
+            F line = f(sym("v", c) + (welded ? "′ = v + ω × " + sym("d", c) + " = " : "′ = "));
+            line = line + V(v) + unit("m/s");
+            if (d >= 2) line = line + f(",  " + sym("ω", c) + "′ = ") + W(w) + unit("rad/s");
+            lines.push_back(line);
+        }
+        step("Final velocities", lines);
+    }
+
+    void impulse_from_change() {
+        std::vector<F> lines = {f("P = m_b (v_b′ − v_b) = ") + V(s.P) + unit("N·s")};
+        std::vector<std::string> notes;
+        if (d >= 2) {
+            lines.push_back(f("C = I_b (ω_b′ − ω_b) − r_b × P = ") + W(s.couple) + unit("N·m·s"));
+            notes.push_back(
+                "The page asks whether a rotational impulse can pass between colliding bodies. "
+                "For bodies that stick, yes: the weld transmits the couple C besides the impulse P.");
+        }
+        step("Impulse that did this", lines, notes);
+    }
+
+    void listing_steps() {
+        const page::Listing3& L = s.listing;
+        std::vector<F> lines;
+        if (d >= 2) {
+            lines.push_back(f("angularVelChangea = I_a⁻¹(n × r_a) = ") + W(L.angularVelChangea));
+            lines.push_back(f("angularVelChangeb = I_b⁻¹(n × r_b) = ") + W(L.angularVelChangeb));
+            lines.push_back(f("scalar = 1/m_a + ((I_a⁻¹(n × r_a)) × r_a)·n + 1/m_b + ((I_b⁻¹(n × r_b)) × r_b)·n = ") +
+                            num(L.scalar) + unit("1/kg"));
+        } else {
+            lines.push_back(f("scalar = 1/m_a + 1/m_b = ") + num(L.scalar) + unit("1/kg"));
+        }
+        lines.push_back(f("Jmod = (e + 1)|v_ai − v_bi| / scalar = ") + num(L.Jmod) + unit("N·s"));
+        lines.push_back(f("J = n Jmod = ") + V(L.J) + unit("N·s"));
+        lines.push_back(f("v_af = v_ai − J/m_a = ") + V(L.vaf) + unit("m/s"));
+        lines.push_back(f("v_bf = v_bi − J/m_b = ") + V(L.vbf) + unit("m/s"));
+        if (d >= 2) {
+            lines.push_back(f("ω_af = ω_ai − angularVelChangea = ") + W(s.wa) + unit("rad/s"));
+            lines.push_back(f("ω_bf = ω_bi − angularVelChangeb = ") + W(s.wb) + unit("rad/s"));
+        }
+        std::vector<std::string> notes = {
+            "This is the page's code listing run as written: the errata lesson's example, not "
+            "physics. It uses the speed of the centres |v_ai − v_bi| instead of the normal "
+            "contact-point velocity (ignores spin and direction, and acts on separating bodies); "
+            "v_bf subtracts J, so momentum is not conserved; the angular changes are per unit "
+            "impulse (not times Jmod)."};
+        if (d >= 2) {
+            const double correct = denominator();
+            notes.push_back("Its rotational terms are subtracted (n × r, then × r again): scalar = " +
+                            num_text(L.scalar) + " 1/kg where the correct denominator is " +
+                            num_text(correct) + " 1/kg.");
+        }
+        notes.push_back("Run the same file with model = \"frictionless\" for the correct answer.");
+        step("The page's listing, as written", lines, notes);
+    }
+
+    void final_velocities() {
+        std::vector<F> lines;
+        for (char c : {'a', 'b'}) {
+            const char* sign = c == 'a' ? " − " : " + ";
+            const Vec3& v0 = body(c).b3.v;
+            const Vec3& v = c == 'a' ? s.va : s.vb;
+            const Vec3& w = c == 'a' ? s.wa : s.wb;
+            const Vec3 v0_1d(body(c).b1.v, 0, 0);
+            if (is_static(c)) {
+                lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + " = ") + V(v) + unit("m/s") +
+                                words("  (static)"));
+                continue;
+            }
+            lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + sign + "P/" + sym("m", c) + " = ") +
+                            V(d == 1 ? v0_1d : v0) + f(sign) + V(s.P) + f(" / ") + num(body(c).b3.mass) +
+                            f(" = ") + V(v) + unit("m/s"));
+            if (d >= 2) {
+                const std::string torque = d == 2 ? "(" + sym("r", c) + " × P)/" + sym("I", c)
+                                                  : sym("I", c) + "⁻¹(" + sym("r", c) + " × P)";
+                lines.push_back(f(sym("ω", c) + "′ = " + sym("ω", c) + sign + torque + " = ") +
+                                W(body(c).b3.w) + f(sign) + Wp((c == 'a' ? s.inv_Ia : s.inv_Ib) *
+                                                               (c == 'a' ? s.ra : s.rb).cross(s.P)) +
+                                f(" = ") + W(w) + unit("rad/s"));
+            }
+        }
+        step("Final velocities", lines, {"The impulse −P acts on A and +P on B, at the contact point."});
+    }
+
+    void restitution_check() {
+        std::vector<F> lines = {f("u_n′ = ") + num(s.un_after) + unit("m/s")};
+        std::vector<std::string> notes;
+        switch (P.model) {
+            case Model::frictionless:
+                lines.push_back(f("−e u_n = ") + num(-P.restitution * s.un) + unit("m/s"));
+                notes.push_back("Newton's restitution: the normal approach speed is reversed and scaled by e.");
+                break;
+            case Model::coulomb:
+                lines.push_back(f("−e u_n = ") + num(-P.restitution * s.un) + unit("m/s"));
+                if (d >= 2)
+                    lines.push_back(f("u_t′ = u′ − u_n′ n = ") + V(s.u_after - s.un_after * s.n) + unit("m/s"));
+                if (!s.sliding) {
+                    notes.push_back("Sticking: the tangential slip is stopped.");
+                } else {
+                    const double before = (s.u - s.un * s.n).norm();
+                    const double after = (s.u_after - s.un_after * s.n).norm();
+                    if (after <= before)
+                        notes.push_back("Sliding: the slip speed fell from " + num_text(before) +
+                                        " to " + num_text(after) + " m/s.");
+                    else
+                        notes.push_back(
+                            "Sliding: the slip speed rose from " + num_text(before) + " to " +
+                            num_text(after) +
+                            " m/s. In this one-step model friction keeps the direction of the "
+                            "initial slip t for the whole impact, while the normal impulse itself "
+                            "drives tangential motion through the off-diagonal terms of K. Impact "
+                            "integration (Routh's method) lets the slip direction change during "
+                            "the impact.");
+                }
+                break;
+            case Model::matrix:
+                lines.push_back(f("u′ = ") + V(s.u_after) + f(",  −e u = ") + V(-P.restitution * s.u) + unit("m/s"));
+                notes.push_back("The matrix method reverses the whole relative velocity, scaled by e.");
+                break;
+            case Model::stick:
+                notes.push_back("The bodies move on as one: the contact points share one velocity "
+                                "(u_n′ = 0).");
+                break;
+            case Model::page_listing:
+                lines.push_back(f("−e u_n = ") + num(-P.restitution * s.un) + unit("m/s") +
+                                words("  (what a correct answer gives)"));
+                break;
+        }
+        step("Restitution check", lines, notes);
+    }
+
+    void checks() {
+        std::vector<F> lines;
+        auto row = [&](const std::string& name, F before, F after, F change, const std::string& u) {
+            lines.push_back(words(name + ": ") + f("before ") + before + f(",  after ") + after +
+                            f(",  change ") + change + unit(u));
+        };
+        row("momentum", V(s.p_before), V(s.p_after), V(s.p_after - s.p_before), "kg·m/s");
+        if (d >= 2)
+            row("angular momentum about o = " + vec(P.about, d).txt, W(s.L_before), W(s.L_after),
+                W(s.L_after - s.L_before), "kg·m²/s");
+        const double dke = s.ke_after - s.ke_before;
+        row("kinetic energy", num(s.ke_before), num(s.ke_after), num(dke), "J");
+        std::vector<std::string> notes;
+        if (s.ke_before > 0)
+            notes.push_back("Kinetic energy changed by " + num_text(100.0 * dke / s.ke_before) + " %.");
+        notes.push_back(d >= 2 ? "Kinetic energy counts 1/2 m v·v + 1/2 ω·I ω (the full inertia tensor); "
+                                 "angular momentum is Σ (I ω + m (x − o) × v), all about one fixed point."
+                               : "Kinetic energy is Σ 1/2 m v².");
+        if (is_static('a') || is_static('b')) {
+            notes.push_back("One body is static (immovable, infinite mass): it is left out of the "
+                            "totals, and the pair's momentum is not conserved (the static body "
+                            "absorbs it).");
+            if (d >= 2)
+                lines.push_back(words("angular momentum about the contact point: ") + f("before ") +
+                                W(s.Lp_before) + f(",  after ") + W(s.Lp_after) + unit("kg·m²/s"));
+            if (d >= 2)
+                notes.push_back("About the contact point the impulse has no lever arm, so that "
+                                "angular momentum is conserved.");
+        }
+        step("Checks", lines, notes);
+    }
+};
+
+std::string headline(const SolveProblem& P) {
+    std::string h = "Collision response: " + std::to_string(P.dimension) + "D, model " +
+                    model_name(P.model) + ", e = " + num_text(P.restitution);
+    if (P.model == Model::coulomb) h += ", μ = " + num_text(P.friction);
+    return h;
+}
+
+const char* kConventions =
+    "Conventions: n points from A into B; the impulse P acts as +P on B and -P on A at the "
+    "contact point; u = v_pb - v_pa, u_n < 0 means approaching; SI units.";
+
+}  // namespace
+
+void write_text(const SolveProblem& P, const Solution& s, std::ostream& out) {
+    if (!P.title.empty()) out << P.title << "\n";
+    out << headline(P) << "\n" << kConventions << "\n";
+    int i = 0;
+    for (const Step& st : Builder(P, s).build()) {
+        out << "\n" << ++i << ". " << st.title << "\n";
+        for (const F& line : st.lines) out << "   " << line.txt << "\n";
+        for (const std::string& note : st.notes) out << "   " << note << "\n";
+    }
+}
+
+void write_markdown(const SolveProblem& P, const Solution& s, std::ostream& out) {
+    out << "# " << (P.title.empty() ? "Collision response" : P.title) << "\n\n";
+    out << "*" << headline(P) << ".* " << kConventions << "\n";
+    int i = 0;
+    for (const Step& st : Builder(P, s).build()) {
+        out << "\n## " << ++i << ". " << st.title << "\n\n";
+        for (const F& line : st.lines) out << "$$" << line.tex << "$$\n\n";
+        for (const std::string& note : st.notes) out << note << "\n\n";
+    }
+}
+
+void write_json(const SolveProblem& P, const Solution& s, std::ostream& out) {
+    using nlohmann::ordered_json;
+    const int d = P.dimension;
+    // Vectors have the problem's dimension; 1D values are numbers.
+    auto V = [d](const Vec3& v) -> ordered_json {
+        if (d == 1) return v.x();
+        ordered_json a = ordered_json::array();
+        for (int i = 0; i < d; ++i) a.push_back(v[i]);
+        return a;
+    };
+    auto W = [d, &V](const Vec3& w) -> ordered_json { return d == 2 ? ordered_json(w.z()) : V(w); };
+    auto body = [&](const Vec3& v, const Vec3& w) {
+        ordered_json b;
+        b["v"] = V(v);
+        if (d >= 2) b["w"] = W(w);
+        return b;
+    };
+    ordered_json j;
+    j["dimension"] = d;
+    j["model"] = model_name(P.model);
+    j["restitution"] = P.restitution;
+    j["friction"] = P.friction;
+    j["normal"] = V(s.n);
+    if (d >= 2) j["point"] = V(P.point);
+    j["impulse"] = V(s.P);
+    j["normal_impulse"] = s.P.dot(s.n);
+    j["sliding"] = s.sliding;
+    j["separating"] = s.separating;
+    j["a"] = body(s.va, s.wa);
+    j["b"] = body(s.vb, s.wb);
+    j["relative_normal_velocity"] = {{"before", s.un}, {"after", s.un_after}};
+    j["kinetic_energy"] = {{"before", s.ke_before}, {"after", s.ke_after}};
+    j["momentum"] = {{"before", V(s.p_before)}, {"after", V(s.p_after)}};
+    if (d >= 2) {
+        j["angular_momentum"] = {{"before", W(s.L_before)}, {"after", W(s.L_after)}};
+        j["about"] = V(P.about);
+        if (P.model == Model::stick) j["couple"] = W(s.couple);
+    }
+    out << j.dump(2) << "\n";
+}
+
+}  // namespace collide

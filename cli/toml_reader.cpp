@@ -1,0 +1,239 @@
+#include "cli/toml_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <sstream>
+
+namespace collide {
+
+namespace {
+
+constexpr std::size_t kMaxFileBytes = 1 << 20;  // collision and scenario files are small
+constexpr double kMaxMagnitude = 1e12;          // beyond this, squares lose all precision
+
+SourcePos to_pos(const toml::source_region& r) {
+    return SourcePos{static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
+}
+
+const char* type_name(const toml::node& n) {
+    switch (n.type()) {
+        case toml::node_type::table: return "a table";
+        case toml::node_type::array: return "an array";
+        case toml::node_type::string: return "a string";
+        case toml::node_type::integer: return "an integer";
+        case toml::node_type::floating_point: return "a number";
+        case toml::node_type::boolean: return "a boolean";
+        case toml::node_type::date: return "a date";
+        case toml::node_type::time: return "a time";
+        case toml::node_type::date_time: return "a date-time";
+        default: return "nothing";
+    }
+}
+
+std::string show(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diag = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t up = row[j];
+            const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                              std::tolower(static_cast<unsigned char>(b[j - 1]));
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diag + (same ? 0 : 1)});
+            diag = up;
+        }
+    }
+    return row[b.size()];
+}
+
+}  // namespace
+
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    std::string best;
+    std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const std::string& c : candidates) {
+        const std::size_t d = edit_distance(word, c);
+        if (d < best_d) {
+            best_d = d;
+            best = c;
+        }
+    }
+    return best;
+}
+
+std::string read_input_file(const std::string& path, std::string* display_name) {
+    const std::string name = path == "-" ? "<stdin>" : path;
+    *display_name = name;
+    std::string text;
+    if (path == "-") {
+        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) throw InputError(name, {}, "", "cannot open the file (does it exist?)");
+        in.seekg(0, std::ios::end);
+        const auto size = static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg()));
+        if (size > kMaxFileBytes)
+            throw InputError(name, {}, "",
+                             "the file is too large (" + std::to_string(size) +
+                                 " bytes); input files are limited to 1 MiB");
+        in.seekg(0);
+        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
+    return text;
+}
+
+toml::table parse_toml_text(const std::string& text, const std::string& name) {
+    if (text.size() > kMaxFileBytes)
+        throw InputError(name, {}, "", "the input is too large; input files are limited to 1 MiB");
+    if (text.find('\0') != std::string::npos)
+        throw InputError(name, {}, "", "not a text file (it contains NUL bytes); expected TOML");
+    if (text.find_first_not_of(" \t\r\n") == std::string::npos)
+        throw InputError(name, {}, "", "the file is empty; expected a TOML description");
+    try {
+        return toml::parse(text, name);
+    } catch (const toml::parse_error& err) {
+        throw InputError(name, to_pos(err.source()), "",
+                         "TOML syntax error: " + std::string(err.description()));
+    }
+}
+
+TableReader::TableReader(const toml::table& table, std::string file, std::string prefix)
+    : table_(table), file_(std::move(file)), prefix_(std::move(prefix)) {}
+
+std::string TableReader::full_key(const std::string& key) const {
+    return prefix_.empty() ? key : prefix_ + "." + key;
+}
+
+SourcePos TableReader::table_pos() const { return to_pos(table_.source()); }
+
+SourcePos TableReader::pos(const std::string& key) const {
+    if (const toml::node* n = table_.get(key)) return to_pos(n->source());
+    return table_pos();
+}
+
+void TableReader::fail(const std::string& key, const std::string& message) const {
+    throw InputError(file_, pos(key), key.empty() ? prefix_ : full_key(key), message);
+}
+
+void TableReader::allow_only(const std::vector<std::string>& allowed) const {
+    for (auto&& [k, v] : table_) {
+        const std::string key(k.str());
+        if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+        std::string msg = "unknown key";
+        const std::string hint = closest_match(key, allowed);
+        if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
+        std::string list;
+        for (const std::string& a : allowed) list += (list.empty() ? "" : ", ") + a;
+        msg += "; allowed here: " + list;
+        throw InputError(file_, to_pos(k.source()), full_key(key), msg);
+    }
+}
+
+void TableReader::forbid(const std::string& key, const std::string& why) const {
+    if (has(key)) fail(key, why);
+}
+
+bool TableReader::has(const std::string& key) const { return table_.get(key) != nullptr; }
+
+const toml::node* TableReader::node(const std::string& key) const { return table_.get(key); }
+
+double TableReader::checked_number(const toml::node& n, const std::string& key,
+                                   const std::string& what) const {
+    if (!n.is_number())
+        throw InputError(file_, to_pos(n.source()), full_key(key),
+                         "expected " + what + ", got " + type_name(n));
+    const double x = n.value<double>().value_or(std::nan(""));
+    if (!std::isfinite(x))
+        throw InputError(file_, to_pos(n.source()), full_key(key),
+                         "expected " + what + ", got " + show(x) + " (values must be finite)");
+    if (std::abs(x) > kMaxMagnitude)
+        throw InputError(file_, to_pos(n.source()), full_key(key),
+                         "value " + show(x) + " is out of range (|value| <= 1e12; choose units "
+                         "that keep numbers moderate)");
+    return x;
+}
+
+std::optional<double> TableReader::number(const std::string& key, const std::string& what) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    return checked_number(*n, key, what);
+}
+
+double TableReader::required_number(const std::string& key, const std::string& what) const {
+    if (auto x = number(key, what)) return *x;
+    fail("", "missing key '" + key + "' (" + what + ")");
+}
+
+std::optional<long long> TableReader::integer(const std::string& key,
+                                              const std::string& what) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    if (!n->is_integer()) fail(key, "expected " + what + ", got " + type_name(*n));
+    return n->value<long long>();
+}
+
+std::optional<bool> TableReader::boolean(const std::string& key) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    if (!n->is_boolean()) fail(key, std::string("expected true or false, got ") + type_name(*n));
+    return n->value<bool>();
+}
+
+std::optional<std::string> TableReader::string(const std::string& key,
+                                               const std::string& what) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    if (!n->is_string()) fail(key, "expected " + what + ", got " + type_name(*n));
+    return n->value<std::string>();
+}
+
+std::optional<std::vector<double>> TableReader::numbers(const std::string& key, std::size_t count,
+                                                        const std::string& what) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    const toml::array* arr = n->as_array();
+    if (!arr) fail(key, "expected " + what + ", got " + type_name(*n));
+    if (arr->size() != count)
+        fail(key, "expected " + what + " (" + std::to_string(count) + " numbers), got " +
+                      std::to_string(arr->size()) + (arr->size() == 1 ? " number" : " numbers"));
+    std::vector<double> out;
+    for (const toml::node& el : *arr) out.push_back(checked_number(el, key, what));
+    return out;
+}
+
+std::optional<Mat3> TableReader::matrix3(const std::string& key, const std::string& what) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    const toml::array* rows = n->as_array();
+    if (!rows || rows->size() != 3) fail(key, "expected " + what);
+    Mat3 m;
+    for (int i = 0; i < 3; ++i) {
+        const toml::array* row = rows->get(i)->as_array();
+        if (!row || row->size() != 3)
+            throw InputError(file_, to_pos(rows->get(i)->source()), full_key(key),
+                             "expected " + what + "; row " + std::to_string(i + 1) +
+                                 " is not 3 numbers");
+        for (int j = 0; j < 3; ++j) m(i, j) = checked_number(*row->get(j), key, what);
+    }
+    return m;
+}
+
+std::optional<TableReader> TableReader::table(const std::string& key) const {
+    const toml::node* n = table_.get(key);
+    if (!n) return std::nullopt;
+    const toml::table* t = n->as_table();
+    if (!t) fail(key, std::string("expected a table [") + key + "], got " + type_name(*n));
+    return TableReader(*t, file_, full_key(key));
+}
+
+}  // namespace collide

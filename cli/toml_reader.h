@@ -1,0 +1,67 @@
+// Typed, located access to TOML tables for our input files. Every error names the file, the
+// line and column, the full key ("a.mass") and what was expected.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <toml++/toml.h>
+
+#include "cli/input_error.h"
+#include "engine/math.h"
+
+namespace collide {
+
+// Reads a whole input file ("-" is stdin, shown as "<stdin>" in messages). Throws InputError
+// when it cannot be read or is larger than 1 MiB.
+std::string read_input_file(const std::string& path, std::string* display_name);
+// Parses TOML with the checks every input gets: text (no NUL bytes), not empty, at most 1 MiB.
+// `name` is the file name used in messages. Throws InputError.
+toml::table parse_toml_text(const std::string& text, const std::string& name);
+
+// Closest candidate by edit distance, or "" if none is close ("did you mean" hints).
+std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
+
+class TableReader {
+public:
+    // prefix: the table's own key ("a" for [a], "" for the root).
+    TableReader(const toml::table& table, std::string file, std::string prefix);
+
+    // Rejects keys not in `allowed`, with a "did you mean" hint.
+    void allow_only(const std::vector<std::string>& allowed) const;
+    // Rejects a key that is known but means nothing here (e.g. "w" in 1D).
+    void forbid(const std::string& key, const std::string& why) const;
+
+    bool has(const std::string& key) const;
+    std::string full_key(const std::string& key) const;
+    SourcePos pos(const std::string& key) const;  // the key's value, or the table
+    SourcePos table_pos() const;
+
+    // Finite number with |x| <= 1e12 (integers accepted). `what` describes it in errors.
+    std::optional<double> number(const std::string& key, const std::string& what) const;
+    double required_number(const std::string& key, const std::string& what) const;
+    std::optional<long long> integer(const std::string& key, const std::string& what) const;
+    std::optional<bool> boolean(const std::string& key) const;
+    std::optional<std::string> string(const std::string& key, const std::string& what) const;
+    // Array of exactly n numbers.
+    std::optional<std::vector<double>> numbers(const std::string& key, std::size_t n,
+                                               const std::string& what) const;
+    // 3x3 array of arrays of numbers.
+    std::optional<Mat3> matrix3(const std::string& key, const std::string& what) const;
+    const toml::node* node(const std::string& key) const;
+    std::optional<TableReader> table(const std::string& key) const;
+
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const;
+    const std::string& file() const { return file_; }
+
+private:
+    double checked_number(const toml::node& n, const std::string& key,
+                          const std::string& what) const;
+
+    const toml::table& table_;
+    std::string file_;
+    std::string prefix_;
+};
+
+}  // namespace collide
