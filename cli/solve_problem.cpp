@@ -30,7 +30,7 @@ std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int d
 
 double positive(const TableReader& t, const std::string& key, const std::string& what) {
     const double x = t.required_number(key, what);
-    if (!(x > 0)) t.fail(key, "expected " + what + " > 0, got " + std::to_string(x));
+    if (!(x > 0)) t.fail(key, "expected " + what + " > 0, got " + show(x));
     if (x < kMinSize) t.fail(key, "too small (below 1e-12); choose units that keep numbers moderate");
     return x;
 }
@@ -43,12 +43,12 @@ void check_inertia(const TableReader& t, const std::string& key, const Mat3& I) 
     const Vec3 lambda = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();  // ascending
     if (!(lambda[0] > 1e-12 * lambda[2]))
         t.fail(key, "the inertia tensor must be positive definite; its principal moments are " +
-                        std::to_string(lambda[0]) + ", " + std::to_string(lambda[1]) + ", " +
-                        std::to_string(lambda[2]) + " kg m^2");
+                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
+                        show(lambda[2]) + " kg m^2");
     if (lambda[0] + lambda[1] < lambda[2] * (1 - 1e-9))
         t.fail(key, "no rigid body has this inertia: the principal moments " +
-                        std::to_string(lambda[0]) + ", " + std::to_string(lambda[1]) + ", " +
-                        std::to_string(lambda[2]) + " break I1 + I2 >= I3");
+                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
+                        show(lambda[2]) + " break I1 + I2 >= I3");
 }
 
 struct Shape {
@@ -247,7 +247,7 @@ void resolve_geometry(const TableReader& root, SolveProblem* P) {
             if (miss.norm() > 1e-9 * scale)
                 s.t->fail("r", "position + r must be the contact point " +
                                    std::string(root.has("point") ? "'point'" : "(fixed by the other body)") +
-                                   "; they differ by " + std::to_string(miss.norm()) +
+                                   "; they differ by " + show(miss.norm()) +
                                    " m (give only two of point, position, r)");
         } else if (s.r) {
             x = *p - *s.r;

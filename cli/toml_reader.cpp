@@ -33,12 +33,6 @@ const char* type_name(const toml::node& n) {
     }
 }
 
-std::string show(double x) {
-    std::ostringstream s;
-    s << x;
-    return s.str();
-}
-
 std::size_t edit_distance(const std::string& a, const std::string& b) {
     std::vector<std::size_t> row(b.size() + 1);
     for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
@@ -58,7 +52,24 @@ std::size_t edit_distance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
+std::string show(double x) {
+    std::ostringstream s;
+    s << x;
+    return s.str();
+}
+
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
+    // Names a physics student may well type for our keys.
+    static const std::vector<std::pair<std::string, std::string>> aliases = {
+        {"velocity", "v"}, {"vel", "v"}, {"omega", "w"}, {"angular_velocity", "w"},
+        {"spin", "w"}, {"pos", "position"}, {"x", "position"}, {"m", "mass"},
+        {"e", "restitution"}, {"cor", "restitution"}, {"mu", "friction"}, {"n", "normal"},
+        {"I", "inertia"}, {"quaternion", "orientation"}, {"rotation", "orientation"},
+        {"q", "orientation"}, {"theta", "angle"}, {"dim", "dimension"}, {"contact", "point"},
+        {"fixed", "static"}, {"immovable", "static"}};
+    for (const auto& [alias, key] : aliases)
+        if (word == alias && std::find(candidates.begin(), candidates.end(), key) != candidates.end())
+            return key;
     std::string best;
     std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
     for (const std::string& c : candidates) {
@@ -102,8 +113,11 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
     try {
         return toml::parse(text, name);
     } catch (const toml::parse_error& err) {
-        throw InputError(name, to_pos(err.source()), "",
-                         "TOML syntax error: " + std::string(err.description()));
+        std::string what(err.description());
+        // toml++ reports an unterminated string as the line break it runs into.
+        if (what.find("control characters") != std::string::npos)
+            what += " (is a closing quote missing?)";
+        throw InputError(name, to_pos(err.source()), "", "TOML syntax error: " + what);
     }
 }
 
@@ -118,7 +132,9 @@ SourcePos TableReader::table_pos() const { return to_pos(table_.source()); }
 
 SourcePos TableReader::pos(const std::string& key) const {
     if (const toml::node* n = table_.get(key)) return to_pos(n->source());
-    return table_pos();
+    // A key missing from the root table has no place in the file; one missing from [a] points
+    // at the table's header.
+    return prefix_.empty() ? SourcePos{} : table_pos();
 }
 
 void TableReader::fail(const std::string& key, const std::string& message) const {

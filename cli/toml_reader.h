@@ -20,6 +20,9 @@ std::string read_input_file(const std::string& path, std::string* display_name);
 // `name` is the file name used in messages. Throws InputError.
 toml::table parse_toml_text(const std::string& text, const std::string& name);
 
+// A number as a person writes it: 0.5, -2, 1e+300.
+std::string show(double x);
+
 // Closest candidate by edit distance, or "" if none is close ("did you mean" hints).
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates);
 

@@ -1,6 +1,6 @@
 // Math vocabulary of the engine: Eigen aliases and the cross products of the page.
 //
-// Conventions (written once for the whole code base; see docs/conventions.md):
+// Conventions (written once for the whole code base in docs/conventions.md):
 //   SI units (m, kg, s, rad); right-handed frame; 3D: y is up; 2D: the xy plane,
 //   angles and angular velocities positive counter-clockwise (about +z).
 #pragma once

@@ -1,4 +1,4 @@
-// The page's formulas exactly as written, errors included (docs/PHYSICS errata 1-8).
+// The page's formulas exactly as written, errors included (docs/errata.md, errata 1-8).
 // Only for the errata lesson and its tests: the correct solvers are in response.h.
 #pragma once
 

@@ -41,10 +41,18 @@ static Response2 unchanged(const ImpactBody2& a, const ImpactBody2& b) {
 Response2 frictionless(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e) {
     const double un = relative_velocity(a, b).dot(n);
     if (un >= 0.0) return unchanged(a, b);
-    const double denominator = a.inv_m + b.inv_m + rotational_term(a, n) + rotational_term(b, n);
+    // Spin change per unit impulse along n, (r x n)/I: it gives both the rotational terms
+    // (r x n)^2/I of the denominator and, times j, the final spins.
+    const double rna = cross(a.r, n), rnb = cross(b.r, n);
+    const double dwa = a.inv_I * rna, dwb = b.inv_I * rnb;
+    const double denominator = a.inv_m + b.inv_m + rna * dwa + rnb * dwb;
+    const double j = -(1.0 + e) * un / denominator;
     Response2 r;
-    r.P = (-(1.0 + e) * un / denominator) * n;
-    apply_impulse(a, b, &r);
+    r.P = j * n;
+    r.va = a.v - a.inv_m * r.P;
+    r.wa = a.w - j * dwa;
+    r.vb = b.v + b.inv_m * r.P;
+    r.wb = b.w + j * dwb;
     return r;
 }
 

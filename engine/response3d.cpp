@@ -40,10 +40,18 @@ static Response3 unchanged(const ImpactBody3& a, const ImpactBody3& b) {
 Response3 frictionless(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
     const double un = relative_velocity(a, b).dot(n);
     if (un >= 0.0) return unchanged(a, b);
-    const double denominator = a.inv_m + b.inv_m + rotational_term(a, n) + rotational_term(b, n);
+    // Spin change per unit impulse along n, I^-1 (r x n): it gives both the rotational terms
+    // (r x n).I^-1(r x n) of the denominator and, times j, the final spins (no second product).
+    const Vec3 rna = a.r.cross(n), rnb = b.r.cross(n);
+    const Vec3 dwa = a.inv_I * rna, dwb = b.inv_I * rnb;
+    const double denominator = a.inv_m + b.inv_m + rna.dot(dwa) + rnb.dot(dwb);
+    const double j = -(1.0 + e) * un / denominator;
     Response3 r;
-    r.P = (-(1.0 + e) * un / denominator) * n;
-    apply_impulse(a, b, &r);
+    r.P = j * n;
+    r.va = a.v - a.inv_m * r.P;
+    r.wa = a.w - j * dwa;
+    r.vb = b.v + b.inv_m * r.P;
+    r.wb = b.w + j * dwb;
     return r;
 }
 

@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# Installs every Debian 12 package the build needs. Idempotent; run as root (or with sudo).
+# The list grows with the project: see ../shared/STACK.md for how each is found from CMake.
+set -euo pipefail
+
+packages=(
+  cmake g++ make pkg-config         # toolchain
+  libeigen3-dev                     # linear algebra (double precision)
+  libtomlplusplus-dev               # input files
+  nlohmann-json3-dev                # JSON output
+  libcli11-dev                      # command line
+  libgtest-dev                      # tests
+  libbenchmark-dev                  # collide-bench
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then
+  echo "install-deps: all ${#packages[@]} packages are installed"
+  exit 0
+fi
+
+sudo=()
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "install-deps: run as root (missing: ${missing[*]})" >&2; exit 1; }
+  sudo=(sudo)
+fi
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -q
+"${sudo[@]}" apt-get install -y -q --no-install-recommends "${missing[@]}"

@@ -1,0 +1,188 @@
+// `collide solve` end to end through the library: the bundled examples against closed forms,
+// the geometry rules of the file format, the JSON schema and the Markdown math.
+#include <cmath>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/input_error.h"
+#include "cli/solve.h"
+
+namespace collide {
+namespace {
+
+std::string example(const std::string& name) {
+    return std::string(COLLIDE_SOURCE_DIR) + "/lessons/solve/" + name;
+}
+
+constexpr double kTol = 1e-12;
+
+// A uniform rod (m, L) falls at v0 with its lower end on frictionless static ground, at angle
+// theta to the ground. With r = (-L/2 cos th, -L/2 sin th), n = +y and I = m L^2 / 12:
+//   D = 1/m + (r x n)^2 / I = (1 + 3 cos^2 th) / m,  j = (1 + e) v0 / D,
+//   w' = (r x P) / I = -(L/2) cos th j / I.
+TEST(SolveExamples, RodOnGroundMatchesClosedForm) {
+    const SolveProblem P = parse_solve_file(example("rod-on-ground.toml"));
+    const Solution s = solve(P);
+    const double m = 1, L = 1, e = 0.5, v0 = 2, th = M_PI / 6, I = m * L * L / 12;
+    const double j = (1 + e) * m * v0 / (1 + 3 * std::cos(th) * std::cos(th));
+    EXPECT_NEAR(s.P.y(), j, kTol);
+    EXPECT_NEAR(s.P.x(), 0.0, kTol);
+    EXPECT_NEAR(s.vb.y(), -v0 + j / m, kTol);
+    EXPECT_NEAR(s.wb.z(), -(L / 2) * std::cos(th) * j / I, 1e-9);
+    EXPECT_NEAR(s.un_after, -e * s.un, kTol);
+    // The ground is static: angular momentum about the contact point is conserved.
+    EXPECT_NEAR(s.Lp_after.z(), s.Lp_before.z(), kTol);
+}
+
+// 1D: va' = (ma va + mb vb + mb e (vb - va)) / (ma + mb), vb' = (... + ma e (va - vb)) / (...).
+TEST(SolveExamples, CartsMatchTextbook) {
+    const Solution s = solve(parse_solve_file(example("carts-1d.toml")));
+    const double ma = 2, mb = 1, va = 3, vb = 0, e = 0.5;
+    EXPECT_NEAR(s.va.x(), (ma * va + mb * vb + mb * e * (vb - va)) / (ma + mb), kTol);
+    EXPECT_NEAR(s.vb.x(), (ma * va + mb * vb + ma * e * (va - vb)) / (ma + mb), kTol);
+    EXPECT_NEAR(s.p_after.x(), s.p_before.x(), kTol);
+    // Energy lost in 1D: (1 - e^2) ma mb (va - vb)^2 / (2 (ma + mb)).
+    EXPECT_NEAR(s.ke_before - s.ke_after, (1 - e * e) * ma * mb * 9 / (2 * (ma + mb)), kTol);
+}
+
+// The matrix method with e = 1 reverses the whole contact velocity and keeps the energy.
+TEST(SolveExamples, SuperballReversesWholeContactVelocity) {
+    const Solution s = solve(parse_solve_file(example("superball-2d.toml")));
+    EXPECT_LE((s.u_after + s.u).norm(), kTol);
+    EXPECT_NEAR(s.ke_after, s.ke_before, 1e-12 * s.ke_before);
+}
+
+TEST(SolveExamples, BoxesSlideOnTheConeEdge) {
+    const Solution s = solve(parse_solve_file(example("boxes-3d.toml")));
+    ASSERT_TRUE(s.sliding);
+    const double Pn = s.P.dot(s.n);
+    EXPECT_NEAR((s.P - Pn * s.n).norm(), 0.3 * Pn, kTol);  // |P_t| = mu P_n when sliding
+    EXPECT_LE((s.p_after - s.p_before).norm(), kTol);
+    EXPECT_LE((s.L_after - s.L_before).norm(), kTol);
+    EXPECT_NEAR(s.un_after, -0.5 * s.un, kTol);
+}
+
+TEST(SolveExamples, StickAgreesWithNewtonEuler) {
+    const Solution s = solve(parse_solve_file(example("stick-3d.toml")));
+    EXPECT_LT(s.newton_euler_difference, 1e-12);
+    EXPECT_LE((s.wa - s.wb).norm(), kTol);
+    EXPECT_LE((s.p_after - s.p_before).norm(), kTol);
+    EXPECT_LE((s.L_after - s.L_before).norm(), kTol);
+    EXPECT_LT(s.ke_after, s.ke_before);
+}
+
+const char* kTwoSpheres = R"(
+dimension = 3
+restitution = 1.0
+normal = [1.0, 0.0, 0.0]
+[a]
+mass = 1.0
+shape = "sphere"
+radius = 0.5
+position = [-0.5, 0.0, 0.0]
+v = [1.0, 0.0, 0.0]
+[b]
+mass = 1.0
+shape = "sphere"
+radius = 0.5
+position = [0.5, 0.0, 0.0]
+r = [-0.5, 0.0, 0.0]
+)";
+
+// Without 'point', the body that gives position and r fixes the contact point; the other
+// body's r follows from its position.
+TEST(SolveFormat, ContactPointFromPositionAndR) {
+    const SolveProblem P = parse_solve_text(kTwoSpheres, "spheres.toml");
+    EXPECT_LE((P.point - Vec3::Zero()).norm(), kTol);
+    const Solution s = solve(P);
+    EXPECT_LE((s.ra - Vec3(0.5, 0, 0)).norm(), kTol);
+    // Equal spheres, head on, e = 1: velocities exchange.
+    EXPECT_LE((s.va - Vec3::Zero()).norm(), kTol);
+    EXPECT_LE((s.vb - Vec3(1, 0, 0)).norm(), kTol);
+}
+
+TEST(SolveFormat, NormalIsNormalisedAndQuaternionToo) {
+    std::string text = kTwoSpheres;
+    text.replace(text.find("normal = [1.0, 0.0, 0.0]"), 24, "normal = [4.0, 0.0, 0.0]");
+    const SolveProblem P = parse_solve_text(text, "x.toml");
+    EXPECT_NEAR(P.normal.norm(), 1.0, kTol);
+}
+
+TEST(SolveFormat, ErrorsNameFileLineAndKey) {
+    std::string text = kTwoSpheres;
+    text.replace(text.find("mass = 1.0"), 10, "mass = -1.0");
+    try {
+        parse_solve_text(text, "bad.toml");
+        FAIL() << "negative mass accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "bad.toml");
+        EXPECT_EQ(e.key(), "a.mass");
+        EXPECT_EQ(e.pos().line, 6);
+        EXPECT_EQ(e.pos().column, 8);
+    }
+}
+
+// The JSON record: the documented keys in order, vectors of the file's dimension.
+TEST(SolveJson, SchemaFor3D) {
+    const SolveProblem P = parse_solve_file(example("boxes-3d.toml"));
+    std::ostringstream out;
+    write_json(P, solve(P), out);
+    const auto j = nlohmann::ordered_json::parse(out.str());
+    const std::vector<std::string> keys = {
+        "dimension", "model", "restitution", "friction", "normal", "point", "impulse",
+        "normal_impulse", "sliding", "separating", "a", "b", "relative_normal_velocity",
+        "kinetic_energy", "momentum", "angular_momentum"};
+    std::size_t i = 0;
+    for (auto it = j.begin(); it != j.end() && i < keys.size(); ++it)
+        if (it.key() == keys[i]) ++i;
+    EXPECT_EQ(i, keys.size()) << "missing or out of order: " << (i < keys.size() ? keys[i] : "");
+    EXPECT_EQ(j["dimension"], 3);
+    EXPECT_EQ(j["model"], "coulomb");
+    EXPECT_EQ(j["impulse"].size(), 3u);
+    EXPECT_EQ(j["a"]["w"].size(), 3u);
+    EXPECT_EQ(j["angular_momentum"]["before"].size(), 3u);
+    EXPECT_TRUE(j["sliding"].get<bool>());
+}
+
+TEST(SolveJson, OneDimensionalValuesAreNumbers) {
+    const SolveProblem P = parse_solve_file(example("carts-1d.toml"));
+    std::ostringstream out;
+    write_json(P, solve(P), out);
+    const auto j = nlohmann::json::parse(out.str());
+    EXPECT_TRUE(j["impulse"].is_number());
+    EXPECT_TRUE(j["normal"].is_number());
+    EXPECT_TRUE(j["a"]["v"].is_number());
+    EXPECT_FALSE(j["a"].contains("w"));
+    EXPECT_TRUE(j["momentum"]["after"].is_number());
+    EXPECT_DOUBLE_EQ(j["impulse"].get<double>(), 3.0);  // (1 + e)(va - vb)/(1/ma + 1/mb)
+}
+
+// Markdown: every formula line is display math, with no Unicode left for LaTeX to choke on.
+TEST(SolveMarkdown, FormulasAreLatex) {
+    const SolveProblem P = parse_solve_file(example("boxes-3d.toml"));
+    std::ostringstream out;
+    write_markdown(P, solve(P), out);
+    std::istringstream lines(out.str());
+    int math = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("$$", 0) != 0) continue;
+        ++math;
+        for (const char* bad : {"ω", "×", "·", "⁻¹", "′", "−", "μ"})
+            EXPECT_EQ(line.find(bad), std::string::npos) << line;
+    }
+    EXPECT_GT(math, 10);
+}
+
+TEST(SolveRun, SeparatingBodiesGetNoImpulse) {
+    std::string text = kTwoSpheres;
+    text.replace(text.find("v = [1.0, 0.0, 0.0]"), 19, "v = [-1.0, 0.0, 0.0]");
+    const Solution s = solve(parse_solve_text(text, "x.toml"));
+    EXPECT_TRUE(s.separating);
+    EXPECT_EQ(s.P.norm(), 0.0);
+    EXPECT_EQ(s.va, Vec3(-1, 0, 0));
+}
+
+}  // namespace
+}  // namespace collide
