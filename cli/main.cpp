@@ -11,8 +11,9 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-int run_solve(const std::string& file, const std::string& format) {
-    const collide::SolveProblem problem = collide::parse_solve_file(file);
+int run_solve(const std::string& file, const std::string& format, const std::string& model) {
+    collide::SolveProblem problem = collide::parse_solve_file(file);
+    if (!model.empty()) collide::parse_model(model, &problem.model);
     const collide::Solution solution = collide::solve(problem);
     // Write to memory first: on any failure nothing half-written reaches stdout.
     std::ostringstream out;
@@ -29,20 +30,29 @@ int main(int argc, char** argv) {
     CLI::App app{"collide: an educational rigid-body collision simulator (1D, 2D, 3D).\n"
                  "Conventions: SI units; the contact normal n points from body A into body B;\n"
                  "the impulse P acts as +P on B and -P on A."};
+    app.name("collide");
     app.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
     app.require_subcommand(1);
 
-    std::string file, format = "text";
+    std::string file, format = "text", model;
     CLI::App* solve = app.add_subcommand(
         "solve", "Solve one collision from a TOML file and show the worked example");
     solve->add_option("FILE", file, "collision description (TOML); - reads stdin")->required();
     solve->add_option("--format", format, "text (worked example), markdown (with LaTeX) or json")
         ->check(CLI::IsMember({"text", "markdown", "json"}))
         ->capture_default_str();
+    solve->add_option("--model", model,
+                      "use this response model instead of the file's: frictionless, coulomb, "
+                      "matrix, stick or page-listing")
+        ->check(CLI::IsMember({"frictionless", "coulomb", "matrix", "stick", "page-listing"}));
     solve->footer(
         "Example: collide solve lessons/solve/rod-on-ground.toml --format markdown\n"
         "File format: see README.md, section 'collide solve'.");
 
+    if (argc == 1) {  // bare `collide`: show what it can do
+        std::cout << app.help();
+        return 0;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -50,7 +60,7 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : kBadInput;
     }
     try {
-        if (*solve) return run_solve(file, format);
+        if (*solve) return run_solve(file, format, model);
     } catch (const collide::InputError& e) {
         std::cerr << "collide: error: " << e.what() << "\n";
         return kBadInput;

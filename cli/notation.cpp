@@ -27,6 +27,12 @@ std::string to_tex(const std::string& text) {
             }
         }
         if (matched) continue;
+        // A wide gap between two formulas on one line ("M = 2 kg,  x_c = ...").
+        if (text.compare(i, 2, "  ") == 0) {
+            while (i < text.size() && text[i] == ' ') ++i;
+            out += "\\quad ";
+            continue;
+        }
         // Subscripts: v_pa -> v_{pa}.
         if (text[i] == '_') {
             std::size_t j = i + 1;
@@ -40,7 +46,26 @@ std::string to_tex(const std::string& text) {
     return out;
 }
 
-F words(const std::string& text) { return {text, "\\text{" + text + "}"}; }
+F words(const std::string& text) {
+    // Text mode: escape what LaTeX would read as markup; keep wide gaps as \quad.
+    std::string tex;
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        const char c = text[i];
+        if (c == ' ' && i + 1 < text.size() && text[i + 1] == ' ') {
+            while (i + 1 < text.size() && text[i + 1] == ' ') ++i;
+            tex += "\\quad ";
+        } else if (std::string("_%&#$").find(c) != std::string::npos) {
+            tex += std::string("\\") + c;
+        } else if (c == '{' || c == '}') {
+            tex += std::string("\\") + c;
+        } else if (c == '^' || c == '~' || c == '\\') {
+            tex += c == '^' ? "\\^{}" : c == '~' ? "\\~{}" : "\\textbackslash{}";
+        } else {
+            tex += c;
+        }
+    }
+    return {text, "\\text{" + tex + "}"};
+}
 
 F unit(const std::string& u) {
     std::string tex;

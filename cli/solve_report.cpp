@@ -91,9 +91,9 @@ private:
                 line = line + words("static (immovable), ") + f("1/" + sym("m", c) + " = 0");
             else
                 line = line + f(sym("m", c) + " = ") + num(B.b3.mass) + unit("kg");
-            if (d >= 2 || B.b1.position != 0.0) line = line + f(", " + sym("x", c) + " = ") + V(x) + unit("m");
-            line = line + f(", " + sym("v", c) + " = ") + V(vi) + unit("m/s");
-            if (d >= 2) line = line + f(", " + sym("ω", c) + " = ") + W(B.b3.w) + unit("rad/s");
+            if (d >= 2 || B.b1.position != 0.0) line = line + f(",  " + sym("x", c) + " = ") + V(x) + unit("m");
+            line = line + f(",  " + sym("v", c) + " = ") + V(vi) + unit("m/s");
+            if (d >= 2) line = line + f(",  " + sym("ω", c) + " = ") + W(B.b3.w) + unit("rad/s");
             lines.push_back(line);
             if (d >= 2 && !B.b3.is_static) {
                 const Mat3& I = c == 'a' ? s.Ia : s.Ib;
@@ -133,7 +133,7 @@ private:
         step("Relative velocity at the contact  u = v_pb − v_pa,  u_n = u · n",
              {f("u = ") + V(s.vpb) + f(" − ") + V(s.vpa) + f(" = ") + V(s.u) + unit("m/s"),
               f("u_n = ") + V(s.u) + f(" · ") + V(s.n) + f(" = ") + num(s.un) + unit("m/s") +
-                  words(s.un < 0 ? "  (u_n < 0: approaching)" : "")});
+                  words(s.un < 0 ? "  (approaching)" : "")});
     }
 
     // The frictionless denominator D and its terms.
@@ -322,7 +322,7 @@ private:
                             num_text(L.scalar) + " 1/kg where the correct denominator is " +
                             num_text(correct) + " 1/kg.");
         }
-        notes.push_back("Run the same file with model = \"frictionless\" for the correct answer.");
+        notes.push_back("For the correct answer: collide solve FILE --model frictionless.");
         step("The page's listing, as written", lines, notes);
     }
 
@@ -404,8 +404,8 @@ private:
     void checks() {
         std::vector<F> lines;
         auto row = [&](const std::string& name, F before, F after, F change, const std::string& u) {
-            lines.push_back(words(name + ": ") + f("before ") + before + f(",  after ") + after +
-                            f(",  change ") + change + unit(u));
+            lines.push_back(words(name + ": ") + words("before ") + before + f(",  ") +
+                            words("after ") + after + f(",  ") + words("change ") + change + unit(u));
         };
         row("momentum", V(s.p_before), V(s.p_after), V(s.p_after - s.p_before), "kg·m/s");
         if (d >= 2)
@@ -424,8 +424,9 @@ private:
                             "totals, and the pair's momentum is not conserved (the static body "
                             "absorbs it).");
             if (d >= 2)
-                lines.push_back(words("angular momentum about the contact point: ") + f("before ") +
-                                W(s.Lp_before) + f(",  after ") + W(s.Lp_after) + unit("kg·m²/s"));
+                lines.push_back(words("angular momentum about the contact point: ") +
+                                words("before ") + W(s.Lp_before) + f(",  ") + words("after ") +
+                                W(s.Lp_after) + unit("kg·m²/s"));
             if (d >= 2)
                 notes.push_back("About the contact point the impulse has no lever arm, so that "
                                 "angular momentum is conserved.");
