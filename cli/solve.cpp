@@ -2,6 +2,8 @@
 // the worked example. No formula is written here: every number comes from engine/.
 #include "cli/solve.h"
 
+#include <type_traits>
+
 #include "engine/diagnostics.h"
 
 namespace collide {
@@ -58,7 +60,7 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
     s->P_stick = embed(sticking_impulse(K, u, n, e));
     const auto t = slip_direction(K, u, n);
     s->slip = embed(t);
-    s->slide_denominator = n.dot(K * (n - mu * t));
+    s->slide_denominator = sliding_denominator(K, n, t, mu);
     if (!a.is_static() && !b.is_static()) {
         const auto c = combined_body(a, b);
         s->M = c.M;
@@ -83,6 +85,7 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
     if (P.model != Model::page_listing) {
         s->separating = r.separating;
         s->sliding = r.sliding;
+        if constexpr (!std::is_same_v<decltype(r), Response1>) s->painleve = r.painleve;
         s->P = embed(r.P);
         s->couple = embed(r.couple);
         s->va = embed(r.va);

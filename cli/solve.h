@@ -35,7 +35,7 @@ struct Solution {
     double newton_euler_difference = 0.0;  // |6x6 result - direct result|, m/s and rad/s
     page::Listing3 listing;                // page-listing (1D: rotational parts zero)
     // The outcome.
-    bool separating = false, sliding = false;
+    bool separating = false, sliding = false, painleve = false;
     Vec3 P = Vec3::Zero(), couple = Vec3::Zero();
     Vec3 va = Vec3::Zero(), wa = Vec3::Zero(), vb = Vec3::Zero(), wb = Vec3::Zero();
     Vec3 u_after = Vec3::Zero();

@@ -161,7 +161,7 @@ private:
     }
 
     void impulse_along_n(double D) {
-        const double j = -(1 + P.restitution) * s.un / D;
+        const double j = s.P.dot(s.n);
         step("Impulse  j = −(1 + e) u_n / D,  P = j n",
              {f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") + num(D) +
                   f(" = ") + num(j) + unit("N·s"),
@@ -189,14 +189,27 @@ private:
               f("P_n = P_s · n = ") + num(Pn) + unit("N·s") + f(",  |P_t| = |P_s − P_n n| = ") +
                   num(Pt) + unit("N·s")},
              {"The impulse that stops the tangential slip and reverses the normal approach by e."});
-        const bool inside = !s.sliding;
+        const bool inside = Pn >= 0 && Pt <= P.friction * Pn;  // the engine's test
         step("Friction cone  |P_t| ≤ μ P_n",
              {num(Pt) + f(inside ? " ≤ " : " > ") + num(P.friction) + f(" × ") + paren(Pn) + f(" = ") +
               num(P.friction * Pn)},
              {inside ? "Inside the cone: the contact sticks, P = P_s."
-                     : "Outside the cone: the contact slides."});
+                     : "Outside the cone: sticking would need more friction than μ allows."});
         if (inside) {
             step("Impulse", {f("P = P_s = ") + V(s.P) + unit("N·s")});
+            return;
+        }
+        if (!s.sliding) {
+            const std::string why =
+                "n · K(n − μ t) = " + num_text(s.slide_denominator) +
+                " ≤ 0: no sliding impulse can reverse the approach (a Painlevé-like case, beyond "
+                "what a one-step friction model can resolve). ";
+            step("No sliding solution",
+                 {f("P = ") + V(s.P) + unit("N·s")},
+                 {why + (s.painleve ? "The sticking impulse would pull, so Collide uses the "
+                                      "frictionless impulse."
+                                    : "Collide keeps the sticking impulse (it pushes): friction "
+                                      "as large as needed.")});
             return;
         }
         const double j = s.P.dot(s.n);
@@ -212,11 +225,18 @@ private:
     void matrix_steps() {
         collision_matrix_step();
         const Mat3 Kinv = d == 2 ? embed2_inverse() : Mat3(s.K.inverse());
+        std::vector<std::string> notes = {
+            "Restitution acts on the whole relative velocity, tangential part too: a rough "
+            "(\"superball\") collision, not the frictionless one. Afterwards u′ = −e u."};
+        if (s.P.dot(s.n) < 0)
+            notes.push_back("Here P · n = " + num_text(s.P.dot(s.n)) +
+                            " N·s < 0: the impulse pulls the bodies together at the contact. "
+                            "Reversing the whole relative velocity is not always possible with a "
+                            "push; this is where the method stops being a model of a real contact.");
         step("The page's matrix method  (e + 1) u = −K P  →  P = −(1 + e) K⁻¹ u",
              {f("K⁻¹ = ") + mat(Kinv, d) + unit("kg"),
               f("P = −(1 + ") + num(P.restitution) + f(") K⁻¹ ") + V(s.u) + f(" = ") + V(s.P) + unit("N·s")},
-             {"Restitution acts on the whole relative velocity, tangential part too: a rough "
-              "(\"superball\") collision, not the frictionless one. Afterwards u′ = −e u."});
+             notes);
     }
     Mat3 embed2_inverse() const {
         Mat3 out = Mat3::Zero();

@@ -36,6 +36,7 @@ struct Response2 {
     double couple = 0.0;    // angular impulse on B beyond rb x P (stick only), N m s
     bool separating = false;
     bool sliding = false;   // coulomb: the sticking impulse left the friction cone
+    bool painleve = false;  // coulomb: no one-step answer with friction (see coulomb())
     Vec2 va = Vec2::Zero(), vb = Vec2::Zero();  // after, m/s
     double wa = 0.0, wb = 0.0;                  // after, rad/s
 };
@@ -45,6 +46,7 @@ struct Response3 {
     Vec3 couple = Vec3::Zero();  // angular impulse on B beyond rb x P (stick only), N m s
     bool separating = false;
     bool sliding = false;
+    bool painleve = false;
     Vec3 va = Vec3::Zero(), vb = Vec3::Zero();
     Vec3 wa = Vec3::Zero(), wb = Vec3::Zero();
 };
@@ -85,12 +87,19 @@ Response1 frictionless(const ImpactBody1& a, const ImpactBody1& b, double n, dou
 // slip stopped, normal velocity reversed by e). If it lies in the cone |Pt| <= mu Pn it is the
 // answer; otherwise the contact slides: P = j (n - mu t), t the unit direction of the initial
 // tangential slip, j = -(1 + e) un / (n . K (n - mu t)). mu = 0 gives the frictionless impulse.
+// Beyond the model: when n . K (n - mu t) <= 0 (large mu with a strongly coupled K, a
+// Painleve-like configuration the one-step model cannot resolve), the sticking impulse is kept
+// if it pushes (P.n >= 0), else the frictionless impulse is used and `painleve` is set; the
+// impulse never pulls.
 Response3 coulomb(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu);
 Response2 coulomb(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu);
 
 // Sticking impulse P = K^-1 (-e un n - u) (the first step of coulomb).
 Vec3 sticking_impulse(const Mat3& K, const Vec3& u, const Vec3& n, double e);
 Vec2 sticking_impulse(const Mat2& K, const Vec2& u, const Vec2& n, double e);
+// Denominator of the sliding impulse, n . K (n - mu t) (see coulomb()).
+double sliding_denominator(const Mat3& K, const Vec3& n, const Vec3& t, double mu);
+double sliding_denominator(const Mat2& K, const Vec2& n, const Vec2& t, double mu);
 // Direction of tangential slip t used by the sliding impulse (see coulomb()).
 Vec3 slip_direction(const Mat3& K, const Vec3& u, const Vec3& n);
 Vec2 slip_direction(const Mat2& K, const Vec2& u, const Vec2& n);

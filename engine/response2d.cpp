@@ -70,6 +70,10 @@ Vec2 slip_direction(const Mat2& K, const Vec2& u, const Vec2& n) {
     return len > 0.0 ? Vec2(ut / len) : Vec2::Zero();
 }
 
+double sliding_denominator(const Mat2& K, const Vec2& n, const Vec2& t, double mu) {
+    return n.dot(K * (n - mu * t));
+}
+
 Response2 coulomb(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu) {
     const Vec2 u = relative_velocity(a, b);
     const double un = u.dot(n);
@@ -81,12 +85,16 @@ Response2 coulomb(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, dou
     const double Pt = (r.P - Pn * n).norm();
     if (!(Pn >= 0.0 && Pt <= mu * Pn)) {
         const Vec2 t = slip_direction(K, u, n);
-        const Vec2 d = n - mu * t;
-        const double denominator = n.dot(K * d);
+        const double denominator = sliding_denominator(K, n, t, mu);
         if (denominator > 0.0) {
-            r.P = (-(1.0 + e) * un / denominator) * d;
+            r.P = (-(1.0 + e) * un / denominator) * (n - mu * t);
             r.sliding = true;
-        }
+        } else if (Pn < 0.0) {
+            // n . K (n - mu t) <= 0 (large mu, strongly coupled K: a Painleve-like case the
+            // one-step model cannot resolve) and the sticking impulse would pull: no friction.
+            r.P = (-(1.0 + e) * un / n.dot(K * n)) * n;
+            r.painleve = true;
+        }  // else keep the sticking impulse: it pushes, friction as large as needed.
     }
     apply_impulse(a, b, &r);
     return r;

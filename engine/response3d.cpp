@@ -71,6 +71,10 @@ Vec3 slip_direction(const Mat3& K, const Vec3& u, const Vec3& n) {
     return len > 0.0 ? Vec3(ut / len) : Vec3::Zero();
 }
 
+double sliding_denominator(const Mat3& K, const Vec3& n, const Vec3& t, double mu) {
+    return n.dot(K * (n - mu * t));
+}
+
 Response3 coulomb(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu) {
     const Vec3 u = relative_velocity(a, b);
     const double un = u.dot(n);
@@ -83,14 +87,16 @@ Response3 coulomb(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, dou
     if (!(Pn >= 0.0 && Pt <= mu * Pn)) {
         // Outside the friction cone: slide, friction mu Pn against the initial slip.
         const Vec3 t = slip_direction(K, u, n);
-        const Vec3 d = n - mu * t;
-        const double denominator = n.dot(K * d);
-        // denominator <= 0 (only for large mu with strongly coupled K, a Painleve-like case):
-        // no sliding impulse can reverse the approach; keep the sticking impulse.
+        const double denominator = sliding_denominator(K, n, t, mu);
         if (denominator > 0.0) {
-            r.P = (-(1.0 + e) * un / denominator) * d;
+            r.P = (-(1.0 + e) * un / denominator) * (n - mu * t);
             r.sliding = true;
-        }
+        } else if (Pn < 0.0) {
+            // n . K (n - mu t) <= 0 (large mu, strongly coupled K: a Painleve-like case the
+            // one-step model cannot resolve) and the sticking impulse would pull: no friction.
+            r.P = (-(1.0 + e) * un / n.dot(K * n)) * n;
+            r.painleve = true;
+        }  // else keep the sticking impulse: it pushes, friction as large as needed.
     }
     apply_impulse(a, b, &r);
     return r;

@@ -301,7 +301,15 @@ TEST(Coulomb, PropertiesOfEveryResult3D) {
         const double Pn = r.P.dot(s.n);
         const Vec3 Pt = r.P - Pn * s.n;
         const Vec3 ut = u - un * s.n;
-        if (r.sliding) {
+        if (r.painleve) {
+            // No sliding impulse can reverse the approach and sticking would pull: the
+            // frictionless impulse (pushes, no tangential part).
+            ++fallback;
+            const Mat3 K = collision_matrix(s.a, s.b);
+            EXPECT_LE(s.n.dot(K * (s.n - mu * slip_direction(K, u, s.n))), 0.0);
+            EXPECT_GT(Pn, 0.0);
+            EXPECT_LE(Pt.norm(), 1e-12 * r.P.norm());
+        } else if (r.sliding) {
             ++sliding;
             EXPECT_GT(Pn, 0.0);
             EXPECT_NEAR_ABS_REL(Pt.norm(), mu * Pn, 1e-13 * r.P.norm(), 1e-11);
@@ -313,6 +321,7 @@ TEST(Coulomb, PropertiesOfEveryResult3D) {
                 ++sticking;
             } else {
                 ++fallback;
+                EXPECT_GE(Pn, 0.0);  // kept only when it pushes
                 const Mat3 K = collision_matrix(s.a, s.b);
                 const Vec3 t = slip_direction(K, u, s.n);
                 EXPECT_LE(s.n.dot(K * (s.n - mu * t)), 0.0);
@@ -343,7 +352,13 @@ TEST(Coulomb, PropertiesOfEveryResult2D) {
         const double Pn = r.P.dot(s.n);
         const Vec2 Pt = r.P - Pn * s.n;
         const Vec2 ut = u - un * s.n;
-        if (r.sliding) {
+        if (r.painleve) {
+            ++fallback;
+            const Mat2 K = collision_matrix(s.a, s.b);
+            EXPECT_LE(s.n.dot(K * (s.n - mu * slip_direction(K, u, s.n))), 0.0);
+            EXPECT_GT(Pn, 0.0);
+            EXPECT_LE(Pt.norm(), 1e-12 * r.P.norm());
+        } else if (r.sliding) {
             ++sliding;
             EXPECT_GT(Pn, 0.0);
             EXPECT_NEAR_ABS_REL(Pt.norm(), mu * Pn, 1e-13 * r.P.norm(), 1e-11);
@@ -355,6 +370,7 @@ TEST(Coulomb, PropertiesOfEveryResult2D) {
                 ++sticking;
             } else {
                 ++fallback;
+                EXPECT_GE(Pn, 0.0);  // kept only when it pushes
                 const Mat2 K = collision_matrix(s.a, s.b);
                 const Vec2 t = slip_direction(K, u, s.n);
                 EXPECT_LE(s.n.dot(K * (s.n - mu * t)), 0.0);

@@ -1,6 +1,8 @@
 // The collision matrix K and the page's matrix model (P = -(1 + e) K^-1 u).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include <Eigen/Eigenvalues>
 
 #include "engine/mass.h"
@@ -193,6 +195,33 @@ TEST(MatrixModel, SuperballClosedForm) {
     EXPECT_NEAR_ABS_REL(0.5 * m * r.vb.squaredNorm() + 0.5 * I * r.wb.squaredNorm(),
                         0.5 * m * ball.v.squaredNorm() + 0.5 * I * ball.w.squaredNorm(), kAtol,
                         kRtol);
+}
+
+// The matrix model can pull: reversing the whole relative velocity may need a negative normal
+// impulse. Thin rod (m, L) leaning at 45 degrees on static ground, foot at rb = -(L/2)(c, s), no
+// spin, foot velocity u = (ux, -v). With m K = [[1 + 3 s^2, -3 s c], [-3 s c, 1 + 3 c^2]] (det 4):
+//   P = -(1 + e) K^-1 u = (1 + e)(m/4) [[1 + 3 c^2, 3 s c], [3 s c, 1 + 3 s^2]] (-ux, v),
+//   Pn = (1 + e)(m/4)(-3 s c ux + (1 + 3 s^2) v) < 0 once ux > (1 + 3 s^2) v/(3 s c) = 5v/3.
+// ux = 2, v = 1, m = 1, e = 0.5: P = 1.5/4 (-2.5*2 + 1.5, -1.5*2 + 2.5) = (-1.3125, -0.1875):
+// the ground pulls the foot down while the foot still ends separating, u' = -e u = (-1, 0.5).
+// (The frictionless and Coulomb models never pull here.)
+TEST(MatrixModel, CanPullTheBodiesTogether) {
+    const double m = 1.0, L = 1.0, e = 0.5, t = collide_test::kPi / 4;
+    Body2 ground;
+    ground.is_static = true;
+    Body2 rod;
+    rod.mass = m;
+    rod.inertia = rod_inertia_2d(m, L);
+    rod.angle = t;
+    rod.position = Vec2(0.0, 0.5 * L * std::sin(t));
+    rod.v = Vec2(2.0, -1.0);
+    const Vec2 p(-0.5 * L * std::cos(t), 0.0);
+    const ImpactBody2 a = at_contact(ground, p), b = at_contact(rod, p);
+    const Response2 r = matrix(a, b, Vec2(0, 1), e);
+    EXPECT_NEAR_ABS_REL(r.P, Vec2(-1.3125, -0.1875), kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(u_after(a, b, r), Vec2(-1.0, 0.5), kAtol, kRtol);
+    EXPECT_GT(frictionless(a, b, Vec2(0, 1), e).P.y(), 0.0);
+    EXPECT_GE(coulomb(a, b, Vec2(0, 1), e, 0.5).P.y(), 0.0);
 }
 
 // The matrix model differs from the frictionless one whenever u has a tangential part: for the
