@@ -90,21 +90,29 @@ std::pair<double, int> max_face_separation(const std::vector<Vec2>& va, const st
     return {best, face};
 }
 
-double point_segment_distance(const Vec2& p, const Vec2& a, const Vec2& b) {
+// Closest point to p on the segment a-b.
+Vec2 closest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
     const Vec2 e = b - a;
     const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-    return (p - (a + t * e)).norm();
+    return a + t * e;
 }
 
-// Exact distance between two separated convex polygons: the nearest vertex-edge pair.
-double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& vb) {
+// Exact distance between two separated convex polygons (the nearest vertex-edge pair) and the
+// unit direction from A's nearest point to B's.
+double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& vb, Vec2* dir) {
     double d = kInf;
     for (int pass = 0; pass < 2; ++pass) {
         const auto& p = pass == 0 ? va : vb;
         const auto& q = pass == 0 ? vb : va;
         for (const Vec2& x : p)
-            for (std::size_t j = 0; j < q.size(); ++j)
-                d = std::min(d, point_segment_distance(x, q[j], q[(j + 1) % q.size()]));
+            for (std::size_t j = 0; j < q.size(); ++j) {
+                const Vec2 y = closest_on_segment(x, q[j], q[(j + 1) % q.size()]);
+                const double dj = (x - y).norm();
+                if (dj < d && dj > 0) {
+                    d = dj;
+                    *dir = pass == 0 ? Vec2((y - x) / dj) : Vec2((x - y) / dj);
+                }
+            }
     }
     return d;
 }
@@ -129,7 +137,9 @@ Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, c
 
     Manifold2 m;
     m.normal = ref_is_a ? rn[rf] : Vec2(-rn[rf]);
-    m.separation = sat > 0 ? polygon_distance(va, vb) : sat;
+    m.separation = sat;
+    // Apart: the exact distance, along the line between the nearest points.
+    if (sat > 0) m.separation = polygon_distance(va, vb, &m.normal);
     if (sat >= margin) return m;
 
     // Incident edge: the edge of the other polygon most anti-parallel to the reference normal.

@@ -1,8 +1,9 @@
 // 2D shapes and contact detection. Geometry only: nothing here knows masses or velocities.
 //
 // Every query returns the contact normal pointing from shape A into shape B (docs/conventions.md)
-// and a signed separation: positive when apart (a lower bound of the distance, exact for discs,
-// half-planes and face contacts), negative when overlapping (minus the depth).
+// and a signed separation: positive when apart (the exact distance, the normal then along the
+// line between the nearest points), negative when overlapping (minus the depth along the
+// separating axis of least overlap).
 //
 // Polygons are convex, counter-clockwise, in body coordinates about the centre of mass:
 //

@@ -104,6 +104,7 @@ TEST(Shape2d, FaceOnFaceClipsToTheOverlap) {
 TEST(Shape2d, SeparatedCornersReportExactDistance) {
     const Manifold2 m = collide(rect(1, 1), at(0, 0), rect(1, 1), at(1.3, 1.4));
     EXPECT_NEAR(m.separation, std::hypot(0.3, 0.4), kTol);
+    EXPECT_LE((m.normal - Vec2(0.6, 0.8)).norm(), kTol);  // corner to corner, A into B
     EXPECT_EQ(m.count, 0);
 }
 
