@@ -1,0 +1,24 @@
+// Free rotation of a rigid body in 3D: Euler's equations with the gyroscopic term.
+//
+// With no torque the world angular momentum L = R Ib R^T w is constant, but w is not: in the
+// body frame, Lb = R^T L obeys
+//     dLb/dt = Lb x wb,   wb = Ib^-1 Lb          (the gyroscopic term -wb x Ib wb)
+// and the orientation follows dR/dt = R [wb]x. Both |Lb|^2 and Lb . Ib^-1 Lb (twice the kinetic
+// energy) are quadratic invariants, so the implicit midpoint rule keeps them to round-off
+// whatever the step; composed as Yoshida's triple jump it is fourth-order accurate in the motion
+// itself (how fast an asymmetric body tumbles, when a Dzhanibekov flip happens).
+#pragma once
+
+#include "engine/body.h"
+
+namespace collide {
+
+struct RotationSettings {
+    double max_angle_per_step = 0.005;  // rad turned per substep (sets the substep count)
+};
+
+// Turns the body for dt seconds with no torque: updates orientation and w (world frame).
+// Static bodies and bodies at rest are left alone.
+void rotate_free(Body3* body, double dt, const RotationSettings& settings = {});
+
+}  // namespace collide
