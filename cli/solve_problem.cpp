@@ -2,54 +2,12 @@
 
 #include <cmath>
 
-#include <Eigen/Eigenvalues>
-
 #include "cli/toml_reader.h"
 #include "engine/mass.h"
 
 namespace collide {
 
 namespace {
-
-constexpr double kMinSize = 1e-12;  // smallest mass or length accepted (kg, m)
-
-std::string dim_name(int d) { return std::to_string(d) + "D"; }
-
-// A vector of the problem's dimension, zero-padded to 3D: 1D a number, 2D [x, y], 3D [x, y, z].
-std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim,
-                             const std::string& unit) {
-    if (dim == 1) {
-        if (auto x = t.number(key, "a number (" + unit + ")")) return Vec3(*x, 0, 0);
-        return std::nullopt;
-    }
-    const std::string what = dim == 2 ? "[x, y] in " + unit : "[x, y, z] in " + unit;
-    auto v = t.numbers(key, static_cast<std::size_t>(dim), what);
-    if (!v) return std::nullopt;
-    return Vec3((*v)[0], (*v)[1], dim == 3 ? (*v)[2] : 0.0);
-}
-
-double positive(const TableReader& t, const std::string& key, const std::string& what) {
-    const double x = t.required_number(key, what);
-    if (!(x > 0)) t.fail(key, "expected " + what + " > 0, got " + show(x));
-    if (x < kMinSize) t.fail(key, "too small (below 1e-12); choose units that keep numbers moderate");
-    return x;
-}
-
-// Checks that a 3x3 inertia tensor is one a rigid body can have.
-void check_inertia(const TableReader& t, const std::string& key, const Mat3& I) {
-    const double scale = I.cwiseAbs().maxCoeff();
-    if ((I - I.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
-        t.fail(key, "the inertia tensor must be symmetric (I[i][j] == I[j][i])");
-    const Vec3 lambda = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();  // ascending
-    if (!(lambda[0] > 1e-12 * lambda[2]))
-        t.fail(key, "the inertia tensor must be positive definite; its principal moments are " +
-                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
-                        show(lambda[2]) + " kg m^2");
-    if (lambda[0] + lambda[1] < lambda[2] * (1 - 1e-9))
-        t.fail(key, "no rigid body has this inertia: the principal moments " +
-                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
-                        show(lambda[2]) + " break I1 + I2 >= I3");
-}
 
 struct Shape {
     std::string name;
@@ -60,18 +18,9 @@ struct Shape {
 
 Shape read_shape(const TableReader& t, int dim, double mass, bool is_static) {
     Shape s;
-    s.name = *t.string("shape", "a shape name");
     const std::vector<std::string> shapes2 = {"disc", "rectangle", "rod"};
     const std::vector<std::string> shapes3 = {"sphere", "box", "rod", "disc", "rectangle"};
-    const auto& known = dim == 2 ? shapes2 : shapes3;
-    if (std::find(known.begin(), known.end(), s.name) == known.end()) {
-        std::string list;
-        for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-        std::string msg = "unknown shape '" + s.name + "' in " + dim_name(dim) + "; expected " + list;
-        const std::string hint = closest_match(s.name, known);
-        if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
-        t.fail("shape", msg);
-    }
+    s.name = read_choice(t, "shape", dim == 2 ? shapes2 : shapes3, "shape", "");
     // Which size keys each shape takes.
     const bool round = s.name == "sphere" || s.name == "disc";
     const bool sized = s.name == "box" || s.name == "rectangle";
@@ -82,7 +31,7 @@ Shape read_shape(const TableReader& t, int dim, double mass, bool is_static) {
     if (!rod) t.forbid("length", "a " + s.name + " has no length");
     const double m = is_static ? 1.0 : mass;  // a static body's shape is geometry only
     if (round) {
-        const double R = positive(t, "radius", "the radius in m");
+        const double R = read_positive(t, "radius", "the radius in m");
         s.inertia2 = disc_inertia_2d(m, R);
         s.inertia3 = s.name == "sphere" ? sphere_inertia(m, R) : disc_inertia(m, R);
     } else if (sized) {
@@ -100,7 +49,7 @@ Shape read_shape(const TableReader& t, int dim, double mass, bool is_static) {
             s.inertia2 = rectangle_inertia_2d(m, (*size)[0], (*size)[1]);
         }
     } else {
-        const double L = positive(t, "length", "the length in m");
+        const double L = read_positive(t, "length", "the length in m");
         double R = 0.0;
         if (t.has("radius")) {
             R = *t.number("radius", "the rod's radius in m");
@@ -141,7 +90,7 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
     } else {
         if (!t.has("mass"))
             t.fail("", "missing key 'mass' (kg); or set static = true for an immovable body");
-        mass = positive(t, "mass", "a mass in kg");
+        mass = read_positive(t, "mass", "a mass in kg");
     }
     const Vec3 x = read_vec(t, "position", dim, "m").value_or(Vec3::Zero());
     const Vec3 v = read_vec(t, "v", dim, "m/s").value_or(Vec3::Zero());
@@ -182,7 +131,7 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
                                std::string(dim == 2 ? "a number in kg m^2" : "[[..],[..],[..]] or [Ixx, Iyy, Izz] in kg m^2") +
                                ") or 'shape'");
             if (dim == 2 && t.has("inertia")) {
-                I2 = positive(t, "inertia", "a moment of inertia in kg m^2");
+                I2 = read_positive(t, "inertia", "a moment of inertia in kg m^2");
             } else if (dim == 3 && t.has("inertia")) {
                 const toml::node* n = t.node("inertia");
                 const toml::array* arr = n->as_array();
@@ -272,14 +221,10 @@ SolveProblem parse_solve_text(const std::string& text, const std::string& name) 
     P.dimension = static_cast<int>(*dim);
     const int d = P.dimension;
 
-    const std::string model = root.string("model", "a model name").value_or("frictionless");
-    if (!parse_model(model, &P.model)) {
-        const std::vector<std::string> names = {"frictionless", "coulomb", "matrix", "stick", "page-listing"};
-        std::string msg = "unknown model '" + model + "'; expected frictionless, coulomb, matrix, stick or page-listing";
-        const std::string hint = closest_match(model, names);
-        if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
-        root.fail("model", msg);
-    }
+    const std::string model = read_choice(
+        root, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing"}, "model",
+        "frictionless");
+    parse_model(model, &P.model);
     P.restitution = root.required_number("restitution", "the coefficient of restitution e in [0, 1]");
     if (P.restitution < 0 || P.restitution > 1)
         root.fail("restitution", "e must lie in [0, 1] (0: perfectly inelastic, 1: elastic)");

@@ -7,6 +7,8 @@
 #include <iterator>
 #include <sstream>
 
+#include <Eigen/Eigenvalues>
+
 namespace collide {
 
 namespace {
@@ -66,7 +68,9 @@ std::string closest_match(const std::string& word, const std::vector<std::string
         {"e", "restitution"}, {"cor", "restitution"}, {"mu", "friction"}, {"n", "normal"},
         {"I", "inertia"}, {"quaternion", "orientation"}, {"rotation", "orientation"},
         {"q", "orientation"}, {"theta", "angle"}, {"dim", "dimension"}, {"contact", "point"},
-        {"fixed", "static"}, {"immovable", "static"}};
+        {"fixed", "static"}, {"immovable", "static"}, {"cube", "box"}, {"ball", "sphere"},
+        {"circle", "disc"}, {"disk", "disc"}, {"square", "rectangle"}, {"rect", "rectangle"},
+        {"stick", "rod"}, {"bar", "rod"}, {"ground", "plane"}, {"wall", "plane"}};
     for (const auto& [alias, key] : aliases)
         if (word == alias && std::find(candidates.begin(), candidates.end(), key) != candidates.end())
             return key;
@@ -250,6 +254,60 @@ std::optional<TableReader> TableReader::table(const std::string& key) const {
     const toml::table* t = n->as_table();
     if (!t) fail(key, std::string("expected a table [") + key + "], got " + type_name(*n));
     return TableReader(*t, file_, full_key(key));
+}
+
+// A vector of the problem's dimension, zero-padded to 3D: 1D a number, 2D [x, y], 3D [x, y, z].
+std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim,
+                             const std::string& unit) {
+    if (dim == 1) {
+        if (auto x = t.number(key, "a number (" + unit + ")")) return Vec3(*x, 0, 0);
+        return std::nullopt;
+    }
+    const std::string what = dim == 2 ? "[x, y] in " + unit : "[x, y, z] in " + unit;
+    auto v = t.numbers(key, static_cast<std::size_t>(dim), what);
+    if (!v) return std::nullopt;
+    return Vec3((*v)[0], (*v)[1], dim == 3 ? (*v)[2] : 0.0);
+}
+
+double read_positive(const TableReader& t, const std::string& key, const std::string& what) {
+    const double x = t.required_number(key, what);
+    if (!(x > 0)) t.fail(key, "expected " + what + " > 0, got " + show(x));
+    if (x < kMinSize) t.fail(key, "too small (below 1e-12); choose units that keep numbers moderate");
+    return x;
+}
+
+// Checks that a 3x3 inertia tensor is one a rigid body can have.
+void check_inertia(const TableReader& t, const std::string& key, const Mat3& I) {
+    const double scale = I.cwiseAbs().maxCoeff();
+    if ((I - I.transpose()).cwiseAbs().maxCoeff() > 1e-9 * scale)
+        t.fail(key, "the inertia tensor must be symmetric (I[i][j] == I[j][i])");
+    const Vec3 lambda = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();  // ascending
+    if (!(lambda[0] > 1e-12 * lambda[2]))
+        t.fail(key, "the inertia tensor must be positive definite; its principal moments are " +
+                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
+                        show(lambda[2]) + " kg m^2");
+    if (lambda[0] + lambda[1] < lambda[2] * (1 - 1e-9))
+        t.fail(key, "no rigid body has this inertia: the principal moments " +
+                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
+                        show(lambda[2]) + " break I1 + I2 >= I3");
+}
+
+std::string read_choice(const TableReader& t, const std::string& key,
+                        const std::vector<std::string>& options, const std::string& what,
+                        const std::string& fallback) {
+    const auto value = t.string(key, what);
+    if (!value) {
+        if (fallback.empty()) t.fail("", "missing key '" + key + "' (" + what + ")");
+        return fallback;
+    }
+    if (std::find(options.begin(), options.end(), *value) != options.end()) return *value;
+    std::string list;
+    for (std::size_t i = 0; i < options.size(); ++i)
+        list += (i == 0 ? "" : i + 1 == options.size() ? " or " : ", ") + options[i];
+    std::string msg = "unknown " + what + " '" + *value + "'; expected " + list;
+    const std::string hint = closest_match(*value, options);
+    if (!hint.empty()) msg += " (did you mean '" + hint + "'?)";
+    t.fail(key, msg);
 }
 
 }  // namespace collide

@@ -67,4 +67,18 @@ private:
     std::string prefix_;
 };
 
+// A vector of dimension dim, zero-padded to 3D: 1D a number, 2D [x, y], 3D [x, y, z].
+std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim,
+                             const std::string& unit);
+constexpr double kMinSize = 1e-12;  // smallest mass or length accepted (kg, m)
+
+// A required number > 0 and >= kMinSize (masses, lengths).
+double read_positive(const TableReader& t, const std::string& key, const std::string& what);
+// A 3x3 inertia tensor a rigid body can have: symmetric, positive definite, I1 + I2 >= I3.
+void check_inertia(const TableReader& t, const std::string& key, const Mat3& I);
+// One of `options` (with a "did you mean" hint); `fallback` when absent ("" = required).
+std::string read_choice(const TableReader& t, const std::string& key,
+                        const std::vector<std::string>& options, const std::string& what,
+                        const std::string& fallback);
+
 }  // namespace collide
