@@ -1,0 +1,19 @@
+#include "engine/scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace collide {
+
+const char* policy_name(Policy p) { return p == Policy::sequential ? "sequential" : "simultaneous"; }
+
+double Scene::pair_restitution(std::size_t i, std::size_t j) const {
+    return std::min(bodies[i].restitution.value_or(restitution),
+                    bodies[j].restitution.value_or(restitution));
+}
+
+double Scene::pair_friction(std::size_t i, std::size_t j) const {
+    return std::sqrt(bodies[i].friction.value_or(friction) * bodies[j].friction.value_or(friction));
+}
+
+}  // namespace collide

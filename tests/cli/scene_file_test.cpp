@@ -1,0 +1,188 @@
+// Scenario files: what a valid file yields (masses from density, a polygon's centre of mass,
+// pair rules) and that every kind of mistake is refused with its file, line and key.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cli/input_error.h"
+#include "cli/scene_file.h"
+
+namespace collide {
+namespace {
+
+const char* kGood = R"(
+[scene]
+dimension = 2
+gravity = [0.0, -9.81]
+duration = 2.0
+output_dt = 0.5
+model = "coulomb"
+policy = "simultaneous"
+restitution = 0.8
+friction = 0.4
+
+[[body]]
+name = "ground"
+shape = "plane"
+normal = [0.0, 2.0]
+offset = 0.0
+restitution = 0.5
+
+[[body]]
+name = "ball"
+shape = "disc"
+radius = 0.1
+density = 100.0
+position = [0.0, 1.0]
+v = [1.0, 0.0]
+w = 3.0
+
+[[body]]
+shape = "polygon"
+vertices = [[0.0, 0.0], [3.0, 0.0], [0.0, 3.0]]
+mass = 2.0
+position = [5.0, 1.0]
+friction = 0.0
+)";
+
+TEST(SceneFile, ValidSceneYieldsBodies) {
+    const Scene s = parse_scene_text(kGood, "good.toml");
+    EXPECT_EQ(s.dimension, 2);
+    EXPECT_EQ(s.model, Model::coulomb);
+    EXPECT_EQ(s.policy, Policy::simultaneous);
+    EXPECT_DOUBLE_EQ(s.gravity.y(), -9.81);
+    ASSERT_EQ(s.bodies.size(), 3u);
+    // The plane: static, unit normal.
+    EXPECT_TRUE(s.bodies[0].is_static());
+    EXPECT_NEAR(s.bodies[0].shape2.normal.y(), 1.0, 1e-15);
+    // Disc of density 100 kg/m^2 and radius 0.1: m = 100 pi 0.01, I = m r^2 / 2.
+    const Body2& ball = s.bodies[1].body2;
+    EXPECT_NEAR(ball.mass, M_PI, 1e-12);
+    EXPECT_NEAR(ball.inertia, 0.5 * M_PI * 0.01, 1e-12);
+    EXPECT_EQ(ball.w, 3.0);
+    // Polygon: default name, centre of mass at the centroid (1, 1) from its position;
+    // polar moment of the right triangle about it: m (a^2 + b^2) / 18.
+    const SceneBody& tri = s.bodies[2];
+    EXPECT_EQ(tri.name, "body3");
+    EXPECT_LE((tri.body2.position - Vec2(6.0, 2.0)).norm(), 1e-12);
+    EXPECT_NEAR(tri.body2.inertia, 2.0 * 18.0 / 18.0, 1e-12);
+    // Pair rules: e = min, mu = sqrt of the product.
+    EXPECT_DOUBLE_EQ(s.pair_restitution(0, 1), 0.5);
+    EXPECT_DOUBLE_EQ(s.pair_restitution(1, 2), 0.8);
+    EXPECT_DOUBLE_EQ(s.pair_friction(0, 1), 0.4);
+    EXPECT_DOUBLE_EQ(s.pair_friction(1, 2), 0.0);
+}
+
+TEST(SceneFile, OneAndThreeDimensions) {
+    const Scene s1 = parse_scene_text(R"(
+[scene]
+dimension = 1
+duration = 1.0
+[[body]]
+name = "a"
+shape = "block"
+length = 0.2
+mass = 1.0
+v = 2.0
+[[body]]
+name = "wall"
+shape = "block"
+length = 0.2
+static = true
+position = 1.0
+)", "one.toml");
+    EXPECT_EQ(s1.bodies[0].body1.v, 2.0);
+    EXPECT_TRUE(s1.bodies[1].body1.is_static);
+    const Scene s3 = parse_scene_text(R"(
+[scene]
+dimension = 3
+duration = 1.0
+[[body]]
+name = "box"
+shape = "box"
+size = [1.0, 2.0, 3.0]
+density = 10.0
+orientation = [2.0, 0.0, 0.0, 0.0]
+)", "three.toml");
+    EXPECT_NEAR(s3.bodies[0].body3.mass, 60.0, 1e-12);
+    EXPECT_NEAR(s3.bodies[0].body3.inertia(0, 0), 60.0 * (4.0 + 9.0) / 12.0, 1e-12);
+    EXPECT_NEAR(s3.bodies[0].body3.orientation.norm(), 1.0, 1e-15);
+}
+
+struct Bad {
+    const char* what;
+    const char* text;
+    const char* key;
+    int line;
+    const char* fragment;
+};
+
+void PrintTo(const Bad& b, std::ostream* os) { *os << b.what; }
+
+const char* kHead = "[scene]\ndimension = 2\nduration = 1.0\n";  // lines 1-3
+
+class SceneFileBad : public ::testing::TestWithParam<Bad> {};
+
+TEST_P(SceneFileBad, IsRefusedWithItsKeyAndLine) {
+    const Bad& b = GetParam();
+    try {
+        parse_scene_text(std::string(kHead) + b.text, "bad.toml");
+        FAIL() << b.what << ": accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "bad.toml") << b.what;
+        EXPECT_EQ(e.key(), b.key) << b.what << ": " << e.what();
+        EXPECT_EQ(e.pos().line, b.line) << b.what << ": " << e.what();
+        EXPECT_NE(std::string(e.what()).find(b.fragment), std::string::npos) << e.what();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Catalogue, SceneFileBad,
+    ::testing::Values(
+        Bad{"duplicate names",
+            "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n"
+            "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\nposition = [1.0, 0.0]\n",
+            "body[2].name", 10, "already used by body[1]"},
+        Bad{"overlap at the start",
+            "[[body]]\nname = \"a\"\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n"
+            "[[body]]\nname = \"b\"\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nmass = 1.0\n"
+            "position = [0.9, 0.0]\n",
+            "body[2].position", 14, "'b' overlaps 'a' by 0.1 m"},
+        Bad{"inside the ground",
+            "[[body]]\nname = \"ground\"\nshape = \"plane\"\nnormal = [0.0, 1.0]\n"
+            "[[body]]\nname = \"ball\"\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n"
+            "position = [0.0, 0.25]\n",
+            "body[2].position", 13, "overlaps 'ground' by 0.25 m"},
+        Bad{"static body with velocity",
+            "[[body]]\nname = \"w\"\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nstatic = true\n"
+            "v = [1.0, 0.0]\n",
+            "body[1].v", 9, "a static body stays where it is"},
+        Bad{"mass and density",
+            "[[body]]\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\ndensity = 2.0\n",
+            "body[1].mass", 7, "exactly one of mass, density"},
+        Bad{"clockwise polygon",
+            "[[body]]\nshape = \"polygon\"\nvertices = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]]\nmass = 1.0\n",
+            "body[1].vertices", 6, "counter-clockwise"},
+        Bad{"radius on a rectangle",
+            "[[body]]\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nradius = 0.5\nmass = 1.0\n",
+            "body[1].radius", 7, "a rectangle has no 'radius'"},
+        Bad{"3D shape in 2D",
+            "[[body]]\nshape = \"sphere\"\nradius = 0.5\nmass = 1.0\n",
+            "body[1].shape", 5, "unknown 2D shape 'sphere'; expected disc, rectangle, polygon or plane"},
+        Bad{"unknown key with a hint",
+            "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\nvelocity = [1.0, 0.0]\n",
+            "body[1].velocity", 8, "did you mean 'v'?"},
+        Bad{"plane that moves",
+            "[[body]]\nshape = \"plane\"\nnormal = [0.0, 1.0]\nv = [1.0, 0.0]\n",
+            "body[1].v", 7, "a plane is placed by normal and offset"},
+        Bad{"no bodies", "", "", 0, "expected one or more [[body]] tables"},
+        Bad{"unknown policy",
+            "policy = \"together\"\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+            "scene.policy", 4, "expected sequential or simultaneous"}));
+
+TEST(SceneFile, MissingSceneTable) {
+    EXPECT_THROW(parse_scene_text("[[body]]\nshape = \"disc\"\n", "x.toml"), InputError);
+}
+
+}  // namespace
+}  // namespace collide
