@@ -247,9 +247,10 @@ private:
     void stick_steps() {
         if (is_static(a_or_b_static())) {
             const char st = a_or_b_static();
+            const std::string k(1, st);
             step("Stick to a static body",
-                 {f("v′ = v_" + std::string(1, st) + " + ω_" + std::string(1, st) + " × (x − x_" +
-                    std::string(1, st) + "),  ω′ = ω_" + std::string(1, st))},
+                 {d == 1 ? f("v′ = v_" + k)
+                         : f("v′ = v_" + k + " + ω_" + k + " × (x − x_" + k + "),  ω′ = ω_" + k)},
                  {"The moving body welds to the immovable one and takes its motion."});
             final_values();
             return;
@@ -331,11 +332,12 @@ private:
             lines.push_back(f("ω_bf = ω_bi − angularVelChangeb = ") + W(s.wb) + unit("rad/s"));
         }
         std::vector<std::string> notes = {
-            "This is the page's code listing run as written: the errata lesson's example, not "
-            "physics. It uses the speed of the centres |v_ai − v_bi| instead of the normal "
-            "contact-point velocity (ignores spin and direction, and acts on separating bodies); "
-            "v_bf subtracts J, so momentum is not conserved; the angular changes are per unit "
-            "impulse (not times Jmod)."};
+            std::string("This is the page's code listing run as written: the errata lesson's "
+                        "example, not physics. It uses the speed of the centres |v_ai − v_bi| "
+                        "instead of the normal contact-point velocity (") +
+            (d >= 2 ? "it ignores spin and direction, and " : "it ignores direction and ") +
+            "acts on separating bodies); v_bf subtracts J, so momentum is not conserved" +
+            (d >= 2 ? "; the angular changes are per unit impulse (not times Jmod)." : ".")};
         if (d >= 2) {
             const double correct = denominator();
             notes.push_back("Its rotational terms are subtracted (n × r, then × r again): scalar = " +
