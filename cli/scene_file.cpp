@@ -50,9 +50,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         for (const char* k : {"radius", "size", "normal", "offset", "w"}) allowed.push_back(k);
     if (dim == 2) allowed.insert(allowed.end(), {"angle", "vertices"});
     if (dim == 3) allowed.push_back("orientation");
-    if (dim != 3) t.forbid("orientation", "orientation (a quaternion) is for 3D; in 2D use angle");
-    if (dim != 2) t.forbid("angle", "angle is for 2D; in 3D use orientation = [w, x, y, z]");
-    if (dim == 1) t.forbid("w", "'w' has no meaning in 1D (blocks slide on a line)");
+    forbid_other_dimension_keys(t, dim);
     t.allow_only(allowed);
 
     SceneBody b;
@@ -146,9 +144,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
 
     const Vec3 x = read_vec(t, "position", dim, "m").value_or(Vec3::Zero());
     const Vec3 v = read_vec(t, "v", dim, "m/s").value_or(Vec3::Zero());
-    Vec3 w = Vec3::Zero();
-    if (dim == 2) w.z() = t.number("w", "an angular velocity in rad/s (counter-clockwise +)").value_or(0.0);
-    if (dim == 3) w = read_vec(t, "w", 3, "rad/s").value_or(Vec3::Zero());
+    const Vec3 w = read_spin(t, dim);
     if (is_static && (v.norm() > 0 || w.norm() > 0))
         t.fail(v.norm() > 0 ? "v" : "w", "a static body stays where it is; remove its velocity "
                                         "or give it a mass");
@@ -167,12 +163,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         if (b.shape2.kind == Shape2::Kind::polygon)
             b.body2.inertia = mass * polygon_inertia_per_mass(b.shape2.polygon);
     } else {
-        Quat q = Quat::Identity();
-        if (auto o = t.numbers("orientation", 4, "a quaternion [w, x, y, z]")) {
-            q = Quat((*o)[0], (*o)[1], (*o)[2], (*o)[3]);
-            if (!(q.norm() > 1e-12)) t.fail("orientation", "a zero quaternion is no rotation");
-            q.normalize();
-        }
+        const Quat q = read_orientation(t);
         b.body3.mass = mass;
         b.body3.is_static = is_static;
         b.body3.orientation = q;
@@ -210,10 +201,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name) {
                     "restitution", "friction"});
     Scene s;
     s.title = sc->string("title", "a title").value_or("");
-    auto dim = sc->integer("dimension", "1, 2 or 3");
-    if (!dim) sc->fail("", "missing key 'dimension' (1, 2 or 3)");
-    if (*dim < 1 || *dim > 3) sc->fail("dimension", "expected 1, 2 or 3, got " + std::to_string(*dim));
-    s.dimension = static_cast<int>(*dim);
+    s.dimension = read_dimension(*sc);
     s.gravity = read_vec(*sc, "gravity", s.dimension, "m/s^2").value_or(Vec3::Zero());
     s.duration = read_positive(*sc, "duration", "the simulated time in s");
     if (sc->has("output_dt")) s.output_dt = read_positive(*sc, "output_dt", "the output interval in s");

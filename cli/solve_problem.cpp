@@ -66,9 +66,7 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
     auto tr = root.table(key);
     if (!tr) root.fail("", "missing table [" + key + "] (body " + (key == "a" ? "A" : "B") + ")");
     const TableReader& t = *tr;
-    // Keys of another dimension get a message that says so, not "unknown key".
-    if (dim != 3) t.forbid("orientation", "orientation (a quaternion) is for 3D; in 2D use angle");
-    if (dim != 2) t.forbid("angle", "angle is for 2D; in 3D use orientation = [w, x, y, z]");
+    forbid_other_dimension_keys(t, dim);
     if (dim == 1)
         for (const char* k : {"w", "r", "inertia", "shape", "radius", "size", "length"})
             t.forbid(k, std::string("'") + k + "' has no meaning in 1D (bodies are points on a line)");
@@ -94,23 +92,9 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
     }
     const Vec3 x = read_vec(t, "position", dim, "m").value_or(Vec3::Zero());
     const Vec3 v = read_vec(t, "v", dim, "m/s").value_or(Vec3::Zero());
-    Vec3 w = Vec3::Zero();
-    if (dim == 2) w.z() = t.number("w", "an angular velocity in rad/s (counter-clockwise +)").value_or(0.0);
-    if (dim == 3) w = read_vec(t, "w", 3, "rad/s").value_or(Vec3::Zero());
-
-    Quat q = Quat::Identity();
-    double angle = 0.0;
-    if (dim == 2) {
-        angle = t.number("angle", "an angle in rad").value_or(0.0);
-        q = Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
-    }
-    if (dim == 3) {
-        if (auto o = t.numbers("orientation", 4, "a quaternion [w, x, y, z]")) {
-            q = Quat((*o)[0], (*o)[1], (*o)[2], (*o)[3]);
-            if (!(q.norm() > 1e-12)) t.fail("orientation", "a zero quaternion is no rotation");
-            q.normalize();
-        }
-    }
+    const Vec3 w = read_spin(t, dim);
+    const double angle = t.number("angle", "an angle in rad").value_or(0.0);
+    const Quat q = dim == 3 ? read_orientation(t) : Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
 
     Mat3 I3 = Mat3::Identity();
     double I2 = 1.0;
@@ -215,10 +199,7 @@ SolveProblem parse_solve_text(const std::string& text, const std::string& name) 
     SolveProblem P;
     P.file = name;
     P.title = root.string("title", "a title").value_or("");
-    auto dim = root.integer("dimension", "1, 2 or 3");
-    if (!dim) root.fail("", "missing key 'dimension' (1, 2 or 3)");
-    if (*dim < 1 || *dim > 3) root.fail("dimension", "expected 1, 2 or 3, got " + std::to_string(*dim));
-    P.dimension = static_cast<int>(*dim);
+    P.dimension = read_dimension(root);
     const int d = P.dimension;
 
     const std::string model = read_choice(

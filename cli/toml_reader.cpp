@@ -292,6 +292,34 @@ void check_inertia(const TableReader& t, const std::string& key, const Mat3& I) 
                         show(lambda[2]) + " break I1 + I2 >= I3");
 }
 
+int read_dimension(const TableReader& t) {
+    auto dim = t.integer("dimension", "1, 2 or 3");
+    if (!dim) t.fail("", "missing key 'dimension' (1, 2 or 3)");
+    if (*dim < 1 || *dim > 3) t.fail("dimension", "expected 1, 2 or 3, got " + std::to_string(*dim));
+    return static_cast<int>(*dim);
+}
+
+Vec3 read_spin(const TableReader& t, int dim) {
+    if (dim == 2)
+        return Vec3(0, 0, t.number("w", "an angular velocity in rad/s (counter-clockwise +)").value_or(0.0));
+    if (dim == 3) return read_vec(t, "w", 3, "rad/s").value_or(Vec3::Zero());
+    return Vec3::Zero();
+}
+
+Quat read_orientation(const TableReader& t) {
+    auto o = t.numbers("orientation", 4, "a quaternion [w, x, y, z]");
+    if (!o) return Quat::Identity();
+    Quat q((*o)[0], (*o)[1], (*o)[2], (*o)[3]);
+    if (!(q.norm() > 1e-12)) t.fail("orientation", "a zero quaternion is no rotation");
+    return q.normalized();
+}
+
+void forbid_other_dimension_keys(const TableReader& t, int dim) {
+    if (dim != 3) t.forbid("orientation", "orientation (a quaternion) is for 3D; in 2D use angle");
+    if (dim != 2) t.forbid("angle", "angle is for 2D; in 3D use orientation = [w, x, y, z]");
+    if (dim == 1) t.forbid("w", "'w' has no meaning in 1D (bodies move on a line)");
+}
+
 std::string read_choice(const TableReader& t, const std::string& key,
                         const std::vector<std::string>& options, const std::string& what,
                         const std::string& fallback) {

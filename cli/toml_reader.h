@@ -76,6 +76,16 @@ constexpr double kMinSize = 1e-12;  // smallest mass or length accepted (kg, m)
 double read_positive(const TableReader& t, const std::string& key, const std::string& what);
 // A 3x3 inertia tensor a rigid body can have: symmetric, positive definite, I1 + I2 >= I3.
 void check_inertia(const TableReader& t, const std::string& key, const Mat3& I);
+// The required `dimension` key: 1, 2 or 3.
+int read_dimension(const TableReader& t);
+// A body's angular velocity: 2D a number (counter-clockwise +) as the z component, 3D [x, y, z];
+// zero when absent or in 1D.
+Vec3 read_spin(const TableReader& t, int dim);
+// A 3D orientation quaternion [w, x, y, z], normalised (identity when absent).
+Quat read_orientation(const TableReader& t);
+// Refuses keys of another dimension with a message that says so (angle in 3D, orientation in
+// 2D, w in 1D), not "unknown key".
+void forbid_other_dimension_keys(const TableReader& t, int dim);
 // One of `options` (with a "did you mean" hint); `fallback` when absent ("" = required).
 std::string read_choice(const TableReader& t, const std::string& key,
                         const std::vector<std::string>& options, const std::string& what,
