@@ -1,0 +1,206 @@
+#include "engine/world1d.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+namespace collide {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+constexpr std::size_t kMaxEventsPerAdvance = 1000000;
+
+// Smallest t > 0 with c + b t + a t^2 = 0 (c > 0 is the gap now), or kNever.
+double first_root(double a, double b, double c) {
+    if (a == 0.0) return b < 0.0 ? -c / b : kNever;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return kNever;
+    // Stable roots: q = -(b + sgn(b) sqrt(disc)) / 2, t1 = q / a, t2 = c / q.
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double best = kNever;
+    for (double t : {q / a, q != 0.0 ? c / q : kNever})
+        if (t > 0.0 && t < best) best = t;
+    return best;
+}
+
+}  // namespace
+
+World1::World1(const Scene& scene) : scene_(scene) {
+    if (scene.dimension != 1) throw std::invalid_argument("World1 needs a 1D scene");
+    for (const SceneBody& b : scene.bodies) bodies_.push_back(b.body1);
+}
+
+double World1::gap(std::size_t i, std::size_t j) const {
+    const double li = scene_.bodies[i].length, lj = scene_.bodies[j].length;
+    return (bodies_[j].position - 0.5 * lj) - (bodies_[i].position + 0.5 * li);
+}
+
+double World1::first_contact(std::size_t i, std::size_t j, double horizon) const {
+    // Order the pair left (L) to right (R); the gap closes at dv = vR - vL, accelerates at dg.
+    const bool i_left = bodies_[i].position <= bodies_[j].position;
+    const std::size_t L = i_left ? i : j, R = i_left ? j : i;
+    const double g = scene_.gravity.x();
+    const double dv = bodies_[R].v - bodies_[L].v;
+    const double dg = (bodies_[R].is_static ? 0.0 : g) - (bodies_[L].is_static ? 0.0 : g);
+    const double g0 = gap(L, R);
+    double t;
+    if (g0 <= kTouch) {
+        // Touching (and not approaching: resolve_contacts saw to that). Pushed together with
+        // no speed to part: resting contact, which this world cannot hold yet.
+        if (dg < 0.0 && dv <= 0.0)
+            throw std::runtime_error("'" + scene_.bodies[L].name + "' and '" + scene_.bodies[R].name +
+                                     "' come to rest against each other under gravity: resting "
+                                     "contact is not supported yet in 1D scenes");
+        t = dg < 0.0 ? -2.0 * dv / dg : kNever;  // they part and gravity brings them back
+    } else {
+        t = first_root(0.5 * dg, dv, g0);
+    }
+    return t <= horizon ? t : kNever;
+}
+
+void World1::drift(double dt) {
+    const double g = scene_.gravity.x();
+    for (Body1& b : bodies_) {
+        if (b.is_static) continue;
+        b.position += b.v * dt + 0.5 * g * dt * dt;
+        b.v += g * dt;
+    }
+}
+
+void World1::advance_to(double target, std::vector<Event1>* events) {
+    const std::size_t start = events->size();
+    const std::size_t n = bodies_.size();
+    while (true) {
+        resolve_contacts(events);
+        if (events->size() - start > kMaxEventsPerAdvance)
+            throw std::runtime_error("more than 10^6 impacts in one output step (a bounce series "
+                                     "accumulating: resting contact is not supported yet)");
+        const double horizon = target - time_;
+        if (horizon <= 0.0) return;
+        double earliest = kNever;
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = i + 1; j < n; ++j)
+                if (!(bodies_[i].is_static && bodies_[j].is_static))
+                    earliest = std::min(earliest, first_contact(i, j, horizon));
+        if (earliest == kNever) {
+            drift(horizon);
+            time_ = target;
+            return;
+        }
+        drift(earliest);
+        time_ += earliest;
+    }
+}
+
+void World1::resolve_contacts(std::vector<Event1>* events) {
+    const bool sequential = scene_.policy == Policy::sequential;
+    for (std::size_t guard = 0; guard < 100 * bodies_.size() * bodies_.size() + 100; ++guard)
+        if (!(sequential ? resolve_sequential(events) : resolve_simultaneous(events))) return;
+    throw std::runtime_error("contacts did not settle at t = " + std::to_string(time_) + " s");
+}
+
+std::vector<std::size_t> World1::left_to_right() const {
+    std::vector<std::size_t> order(bodies_.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return bodies_[a].position < bodies_[b].position;
+    });
+    return order;
+}
+
+bool World1::resolve_sequential(std::vector<Event1>* events) {
+    const std::vector<std::size_t> order = left_to_right();
+    // The leftmost touching pair that approaches, one impulse, then look again.
+    for (std::size_t k = 0; k + 1 < order.size(); ++k) {
+        const std::size_t L = order[k], R = order[k + 1];
+        if (gap(L, R) > kTouch || bodies_[R].v - bodies_[L].v >= 0.0) continue;
+        if (bodies_[L].is_static && bodies_[R].is_static) continue;
+        const Response1 r = frictionless(at_contact(bodies_[L]), at_contact(bodies_[R]), 1.0,
+                                         scene_.pair_restitution(L, R));
+        Event1 e{time_, L, R, bodies_[L].position + 0.5 * scene_.bodies[L].length, r.P,
+                 bodies_[L].v, bodies_[R].v, r.va, r.vb};
+        bodies_[L].v = r.va;
+        bodies_[R].v = r.vb;
+        events->push_back(e);
+        return true;
+    }
+    return false;
+}
+
+bool World1::resolve_simultaneous(std::vector<Event1>* events) {
+    const std::vector<std::size_t> order = left_to_right();
+    // Touching neighbours (left, right); the instant has an impact if one of them approaches.
+    std::vector<std::pair<std::size_t, std::size_t>> contacts;
+    bool approaching = false;
+    for (std::size_t k = 0; k + 1 < order.size(); ++k) {
+        const std::size_t L = order[k], R = order[k + 1];
+        if (gap(L, R) > kTouch || (bodies_[L].is_static && bodies_[R].is_static)) continue;
+        const double u = bodies_[R].v - bodies_[L].v;
+        if (u > 0.0) continue;  // parting: no impulse
+        contacts.emplace_back(L, R);
+        approaching = approaching || u < 0.0;
+    }
+    if (!approaching) return false;
+    // Contact k pushes R_k by +P_k and L_k by -P_k: u = J v with J_k = +1 at R_k, -1 at L_k,
+    // and K = J M^-1 J^T. Wanted: u' = -e u, i.e. K P = -(1 + e) u, with every P_k >= 0.
+    const std::size_t m = contacts.size();
+    std::vector<bool> active(m, true);
+    Eigen::VectorXd P = Eigen::VectorXd::Zero(static_cast<Eigen::Index>(m));
+    for (std::size_t pass = 0; pass <= m; ++pass) {
+        std::vector<std::size_t> idx;
+        for (std::size_t k = 0; k < m; ++k)
+            if (active[k]) idx.push_back(k);
+        const auto na = static_cast<Eigen::Index>(idx.size());
+        Eigen::MatrixXd K = Eigen::MatrixXd::Zero(na, na);
+        Eigen::VectorXd rhs(na);
+        for (Eigen::Index a = 0; a < na; ++a) {
+            const auto [La, Ra] = contacts[idx[a]];
+            rhs[a] = -(1.0 + scene_.pair_restitution(La, Ra)) * (bodies_[Ra].v - bodies_[La].v);
+            for (Eigen::Index b = 0; b < na; ++b) {
+                const auto [Lb, Rb] = contacts[idx[b]];
+                auto J = [](std::size_t body, std::size_t L, std::size_t R) {
+                    return body == R ? 1.0 : body == L ? -1.0 : 0.0;
+                };
+                for (std::size_t body : {La, Ra})
+                    K(a, b) += J(body, La, Ra) * J(body, Lb, Rb) * bodies_[body].inv_mass();
+            }
+        }
+        const Eigen::VectorXd Pa = K.ldlt().solve(rhs);
+        // Drop the most negative impulse (that contact parts) and solve again.
+        Eigen::Index worst = -1;
+        for (Eigen::Index a = 0; a < na; ++a)
+            if (Pa[a] < 0.0 && (worst < 0 || Pa[a] < Pa[worst])) worst = a;
+        if (worst < 0) {
+            P.setZero();
+            for (Eigen::Index a = 0; a < na; ++a) P[static_cast<Eigen::Index>(idx[a])] = Pa[a];
+            break;
+        }
+        active[idx[worst]] = false;
+    }
+    std::vector<double> v0(bodies_.size());
+    for (std::size_t i = 0; i < bodies_.size(); ++i) v0[i] = bodies_[i].v;
+    for (std::size_t k = 0; k < m; ++k) {
+        const auto [L, R] = contacts[k];
+        const double p = P[static_cast<Eigen::Index>(k)];
+        bodies_[L].v -= p * bodies_[L].inv_mass();
+        bodies_[R].v += p * bodies_[R].inv_mass();
+    }
+    bool any = false;
+    for (std::size_t k = 0; k < m; ++k) {
+        const auto [L, R] = contacts[k];
+        const double p = P[static_cast<Eigen::Index>(k)];
+        if (p <= 0.0) continue;
+        events->push_back(Event1{time_, L, R, bodies_[L].position + 0.5 * scene_.bodies[L].length,
+                                 p, v0[L], v0[R], bodies_[L].v, bodies_[R].v});
+        any = true;
+    }
+    return any;
+}
+
+}  // namespace collide

@@ -1,0 +1,59 @@
+// The 1D world: blocks on a line, advanced from event to event with exact impact times.
+//
+// Between impacts every block moves freely: x(t) = x + v t + g t^2/2 (g: the scene's gravity
+// along x for dynamic blocks). The gap between two blocks is then a quadratic in t, so the
+// first contact time is its smallest root, found in closed form (no step size, no overlap).
+// At an impact instant every touching pair that approaches is resolved by the scene's policy
+// (docs/conventions.md: n from A, the left block, into B, the right one):
+//   sequential:   one contact at a time, the leftmost approaching pair first, until no touching
+//                 pair approaches (Newton's cradle: (v, 0, 0) -> (0, 0, v));
+//   simultaneous: all touching pairs of the instant together: impulses P >= 0 with
+//                 K P = -(1 + e) u on the pairs that receive one (a small LCP solved by active
+//                 sets, as Box2D's block solver does for two points); the cradle gives
+//                 (-v/3, 2v/3, 2v/3).
+// Not yet: resting contact under gravity (a bounce series with e < 1 accumulates at a finite
+// time; see the simulation-world issue).
+#pragma once
+
+#include <vector>
+
+#include "engine/scene.h"
+
+namespace collide {
+
+struct Event1 {
+    double t = 0.0;               // s
+    std::size_t a = 0, b = 0;     // the left and the right block (indices into the scene)
+    double point = 0.0;           // m, where they touch
+    double impulse = 0.0;         // N s on b along +x (a receives the opposite)
+    double va_before = 0.0, vb_before = 0.0, va_after = 0.0, vb_after = 0.0;  // m/s
+};
+
+class World1 {
+public:
+    explicit World1(const Scene& scene);
+
+    double time() const { return time_; }
+    const std::vector<Body1>& bodies() const { return bodies_; }
+    const Scene& scene() const { return scene_; }
+
+    // Moves to time t (>= time()), resolving every impact on the way; appends the events.
+    void advance_to(double t, std::vector<Event1>* events);
+
+    static constexpr double kTouch = 1e-12;  // m: a gap this small is contact
+
+private:
+    double gap(std::size_t i, std::size_t j) const;          // right i's face to left j's face
+    double first_contact(std::size_t i, std::size_t j, double horizon) const;
+    void drift(double dt);
+    std::vector<std::size_t> left_to_right() const;  // block indices by position
+    void resolve_contacts(std::vector<Event1>* events);
+    bool resolve_sequential(std::vector<Event1>* events);
+    bool resolve_simultaneous(std::vector<Event1>* events);
+
+    Scene scene_;
+    std::vector<Body1> bodies_;
+    double time_ = 0.0;
+};
+
+}  // namespace collide
