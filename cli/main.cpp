@@ -5,7 +5,9 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/input_error.h"
+#include "cli/scene_file.h"
 #include "cli/solve.h"
+#include "cli/step.h"
 
 namespace {
 
@@ -20,6 +22,14 @@ int run_solve(const std::string& file, const std::string& format, const std::str
     if (format == "json") collide::write_json(problem, solution, out);
     else if (format == "markdown") collide::write_markdown(problem, solution, out);
     else collide::write_text(problem, solution, out);
+    std::cout << out.str() << std::flush;
+    return 0;
+}
+
+int run_step(const std::string& file, const collide::StepOptions& options) {
+    const collide::Scene scene = collide::parse_scene_file(file);
+    std::ostringstream out;
+    collide::write_steps(scene, options, out);
     std::cout << out.str() << std::flush;
     return 0;
 }
@@ -53,6 +63,18 @@ int main(int argc, char** argv) {
         std::cout << app.help();
         return 0;
     }
+    std::string scene_file;
+    collide::StepOptions step_options;
+    CLI::App* step = app.add_subcommand(
+        "step", "Run a scenario file and print its state at every output step (or its events)");
+    step->add_option("FILE", scene_file, "scenario (TOML); - reads stdin")->required();
+    step->add_flag("--json", step_options.json, "one JSON object per line");
+    step->add_flag("--events", step_options.events,
+                   "only the collision events: time, bodies, point, normal, impulse, velocities "
+                   "before and after");
+    step->footer("Today 1D scenes step (exact impact times; Newton's cradle under both policies).\n"
+                 "Scenario format: see README.md, section 'Scenario files'.");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -61,9 +83,13 @@ int main(int argc, char** argv) {
     }
     try {
         if (*solve) return run_solve(file, format, model);
+        if (*step) return run_step(scene_file, step_options);
     } catch (const collide::InputError& e) {
         std::cerr << "collide: error: " << e.what() << "\n";
         return kBadInput;
+    } catch (const std::runtime_error& e) {
+        std::cerr << "collide: " << e.what() << "\n";
+        return 1;
     } catch (const std::exception& e) {
         std::cerr << "collide: internal error: " << e.what() << "\n";
         return 1;
