@@ -264,6 +264,28 @@ Polygon make_rectangle(double width, double height) {
     return p;
 }
 
+Shape2 Shape2::disc(double radius) {
+    Shape2 s;
+    s.kind = Kind::disc;
+    s.radius = radius;
+    return s;
+}
+
+Shape2 Shape2::rectangle(double width, double height) {
+    Shape2 s;
+    s.kind = Kind::polygon;
+    s.polygon = make_rectangle(width, height);
+    return s;
+}
+
+Shape2 Shape2::half_plane(const Vec2& unit_normal, double offset) {
+    Shape2 s;
+    s.kind = Kind::half_plane;
+    s.normal = unit_normal;
+    s.offset = offset;
+    return s;
+}
+
 double polygon_area(const Polygon& p) {
     double a = 0.0;
     for (int i = 0; i < p.count; ++i) a += 0.5 * cross(p.vertices[i], p.vertices[(i + 1) % p.count]);

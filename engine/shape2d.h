@@ -58,6 +58,10 @@ struct Shape2 {
     // coordinates (the pose is ignored).
     Vec2 normal = Vec2(0.0, 1.0);
     double offset = 0.0;
+
+    static Shape2 disc(double radius);
+    static Shape2 rectangle(double width, double height);
+    static Shape2 half_plane(const Vec2& unit_normal, double offset);
 };
 
 struct Manifold2 {

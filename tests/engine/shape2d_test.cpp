@@ -11,25 +11,9 @@ namespace {
 
 constexpr double kTol = 1e-12;
 
-Shape2 disc(double r) {
-    Shape2 s;
-    s.kind = Shape2::Kind::disc;
-    s.radius = r;
-    return s;
-}
-Shape2 rect(double w, double h) {
-    Shape2 s;
-    s.kind = Shape2::Kind::polygon;
-    s.polygon = make_rectangle(w, h);
-    return s;
-}
-Shape2 ground(double height = 0.0) {
-    Shape2 s;
-    s.kind = Shape2::Kind::half_plane;
-    s.normal = Vec2(0, 1);
-    s.offset = height;
-    return s;
-}
+Shape2 disc(double r) { return Shape2::disc(r); }
+Shape2 rect(double w, double h) { return Shape2::rectangle(w, h); }
+Shape2 ground(double height = 0.0) { return Shape2::half_plane(Vec2(0, 1), height); }
 Pose2 at(double x, double y, double angle = 0.0) { return Pose2{Vec2(x, y), angle}; }
 
 // Two discs: separation |xb - xa| - ra - rb along the line of centres.

@@ -10,23 +10,9 @@
 namespace collide {
 namespace {
 
-Shape2 disc(double r) {
-    Shape2 s;
-    s.kind = Shape2::Kind::disc;
-    s.radius = r;
-    return s;
-}
-Shape2 rect(double w, double h) {
-    Shape2 s;
-    s.kind = Shape2::Kind::polygon;
-    s.polygon = make_rectangle(w, h);
-    return s;
-}
-Shape2 ground() {
-    Shape2 s;
-    s.kind = Shape2::Kind::half_plane;
-    return s;
-}
+Shape2 disc(double r) { return Shape2::disc(r); }
+Shape2 rect(double w, double h) { return Shape2::rectangle(w, h); }
+Shape2 ground() { return Shape2::half_plane(Vec2(0, 1), 0.0); }
 Motion2 moving(Vec2 x, Vec2 v, double angle = 0, double w = 0, Vec2 g = Vec2::Zero()) {
     return Motion2{x, v, g, angle, w};
 }
