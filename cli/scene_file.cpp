@@ -194,6 +194,9 @@ double overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
 Scene parse_scene_text(const std::string& text, const std::string& name) {
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
+    if (!root.has("scene") && (root.has("a") || root.has("dimension")))
+        root.fail("", "this is a collision file (dimension, [a], [b] at the top): run it with "
+                      "'collide solve'; scenario files have a [scene] table and [[body]] tables");
     root.allow_only({"scene", "body"});
     auto sc = root.table("scene");
     if (!sc) root.fail("", "missing table [scene]");

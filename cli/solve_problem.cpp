@@ -194,6 +194,9 @@ void resolve_geometry(const TableReader& root, SolveProblem* P) {
 SolveProblem parse_solve_text(const std::string& text, const std::string& name) {
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
+    if (root.has("scene") || root.has("body"))
+        root.fail("", "this is a scenario file ([scene], [[body]]): run it with 'collide step'; "
+                      "collision files give dimension, normal, [a] and [b] at the top");
     root.allow_only({"title", "dimension", "model", "restitution", "friction", "normal", "point",
                      "about", "a", "b"});
     SolveProblem P;

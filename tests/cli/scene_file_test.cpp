@@ -180,6 +180,15 @@ INSTANTIATE_TEST_SUITE_P(
             "policy = \"together\"\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
             "scene.policy", 4, "expected sequential or simultaneous"}));
 
+TEST(SceneFile, CollisionFileIsPointedToSolve) {
+    try {
+        parse_scene_text("dimension = 1\nrestitution = 1.0\n[a]\nmass = 1.0\n", "c.toml");
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("run it with 'collide solve'"), std::string::npos);
+    }
+}
+
 TEST(SceneFile, MissingSceneTable) {
     EXPECT_THROW(parse_scene_text("[[body]]\nshape = \"disc\"\n", "x.toml"), InputError);
 }
