@@ -40,7 +40,8 @@ void table_header(const Scene& s, std::ostream& out) {
     for (const SceneBody& b : s.bodies) {
         out << "  " << std::setw(12) << (b.name + ".x") << std::setw(12) << (b.name + ".v");
     }
-    out << std::setw(14) << "energy (J)" << std::setw(16) << "momentum (N s)" << "\n";
+    out << std::setw(14) << "kinetic (J)" << std::setw(14) << "total (J)" << std::setw(16)
+        << "momentum (N s)" << "\n";
 }
 
 }  // namespace
@@ -83,6 +84,10 @@ void write_steps(const Scene& s, const StepOptions& options, std::ostream& out) 
             continue;
         }
         const Totals1 totals_now = totals(world.bodies());
+        // Potential energy in uniform gravity, zero at x = 0: -m g . x (dynamic bodies).
+        double potential = 0.0;
+        for (const Body1& b : world.bodies())
+            if (!b.is_static) potential -= b.mass * s.gravity.x() * b.position;
         if (options.json) {
             ordered_json j;
             j["t"] = t;
@@ -91,12 +96,15 @@ void write_steps(const Scene& s, const StepOptions& options, std::ostream& out) 
                 bodies[s.bodies[i].name] = {{"x", world.bodies()[i].position}, {"v", world.bodies()[i].v}};
             j["bodies"] = bodies;
             j["kinetic_energy"] = totals_now.kinetic_energy;
+            j["potential_energy"] = potential;
             j["momentum"] = totals_now.momentum;
             out << j.dump() << "\n";
         } else {
             out << fixed(t, 10);
             for (const Body1& b : world.bodies()) out << "  " << fixed(b.position, 12) << fixed(b.v, 12);
-            out << fixed(totals_now.kinetic_energy, 14) << fixed(totals_now.momentum, 16) << "\n";
+            out << fixed(totals_now.kinetic_energy, 14)
+                << fixed(totals_now.kinetic_energy + potential, 14)
+                << fixed(totals_now.momentum, 16) << "\n";
         }
     }
 }

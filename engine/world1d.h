@@ -6,13 +6,19 @@
 // At an impact instant every touching pair that approaches is resolved by the scene's policy
 // (docs/conventions.md: n from A, the left block, into B, the right one):
 //   sequential:   one contact at a time, the leftmost approaching pair first, until no touching
-//                 pair approaches (Newton's cradle: (v, 0, 0) -> (0, 0, v));
+//                 pair approaches (Newton's cradle: (v, 0, 0) -> (0, 0, v)); a sequence that
+//                 would go on for ever is finished by one simultaneous step (resolve_contacts);
 //   simultaneous: all touching pairs of the instant together: impulses P >= 0 with
 //                 K P = -(1 + e) u on the pairs that receive one (a small LCP solved by active
 //                 sets, as Box2D's block solver does for two points); the cradle gives
 //                 (-v/3, 2v/3, 2v/3).
-// Not yet: resting contact under gravity (a bounce series with e < 1 accumulates at a finite
-// time; see the simulation-world issue).
+// Resting contact under gravity: a block touching a support (a static block, or a block that
+// itself rests) with no speed away from it rests: gravity is balanced and it stays put until
+// something hits it. A bouncing block whose remaining bounce series would last less than
+// kZenoTime (the series 2u/(g(1 - e)) sums the flights after a bounce at speed u) is set to
+// rest there: the infinitely many bounces of e < 1 accumulate at a finite time, and this
+// merges at most kZenoTime of them. It is a time tolerance, not a restitution threshold:
+// e = 1 bounces forever, and every bounce longer than kZenoTime is simulated exactly.
 #pragma once
 
 #include <vector>
@@ -40,12 +46,17 @@ public:
     // Moves to time t (>= time()), resolving every impact on the way; appends the events.
     void advance_to(double t, std::vector<Event1>* events);
 
-    static constexpr double kTouch = 1e-12;  // m: a gap this small is contact
+    static constexpr double kTouch = 1e-12;     // m: a gap this small is contact
+    static constexpr double kZenoTime = 1e-12;  // s: a bounce series this short is rest
+
+    bool resting(std::size_t i) const { return supported_[i]; }
 
 private:
     double gap(std::size_t i, std::size_t j) const;          // right i's face to left j's face
     double first_contact(std::size_t i, std::size_t j, double horizon) const;
     void drift(double dt);
+    void update_support();                                   // sets supported_ (see above)
+    double acceleration(std::size_t i) const;                // m/s^2 along x
     std::vector<std::size_t> left_to_right() const;  // block indices by position
     void resolve_contacts(std::vector<Event1>* events);
     bool resolve_sequential(std::vector<Event1>* events);
@@ -53,6 +64,7 @@ private:
 
     Scene scene_;
     std::vector<Body1> bodies_;
+    std::vector<bool> supported_;  // resting on a support under gravity
     double time_ = 0.0;
 };
 

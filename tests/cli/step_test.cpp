@@ -1,5 +1,6 @@
 // `collide step` output: the cradle lesson's states and events against the closed forms, in
 // every format.
+#include <cmath>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -78,6 +79,31 @@ TEST(Step, SameFileSameBytes) {
     write_steps(cradle("simultaneous"), {true, false}, a);
     write_steps(cradle("simultaneous"), {true, false}, b);
     EXPECT_EQ(a.str(), b.str());
+}
+
+// The bouncing-ball lesson: H = 1 m, e = 0.5, g = 9.81: the bounces end at
+// sqrt(2H/g)(1+e)/(1-e) = 1.3546 s and the ball then rests on the floor (x = 0.2 m); before the
+// first landing the total energy m g x stays m g 1.2 m.
+TEST(Step, BouncingBallLessonComesToRest) {
+    const Scene s = parse_scene_file(std::string(COLLIDE_SOURCE_DIR) +
+                                     "/lessons/scenes/bouncing-ball-1d.toml");
+    const auto events = lines(s, {true, true});
+    ASSERT_FALSE(events.empty());
+    EXPECT_LT(events.size(), 100u);
+    EXPECT_NEAR(events.back()["t"].get<double>(), std::sqrt(2.0 / 9.81) * 3.0, 1e-9);
+    const auto states = lines(s, {true, false});
+    for (const auto& st : states) {
+        const double t = st["t"].get<double>();
+        const auto& ball = st["bodies"]["ball"];
+        if (t < std::sqrt(2.0 / 9.81)) {
+            EXPECT_NEAR(st["kinetic_energy"].get<double>() + st["potential_energy"].get<double>(),
+                        0.1 * 9.81 * 1.2, 1e-12);
+        }
+        if (t > 1.36) {
+            EXPECT_EQ(ball["v"].get<double>(), 0.0);
+            EXPECT_NEAR(ball["x"].get<double>(), 0.2, 1e-12);
+        }
+    }
 }
 
 TEST(Step, OtherDimensionsSaySoClearly) {

@@ -100,15 +100,78 @@ TEST(World1d, BounceSeriesUnderGravity) {
     }
 }
 
-// The series accumulates at t1 (1 + 2e/(1 - e)) = 3 t1 for e = 1/2: resting contact follows,
-// which this world refuses with a clear message instead of looping or overlapping.
-TEST(World1d, RestingContactIsRefusedNotFaked) {
-    Scene s = line(Policy::sequential, 0.5);
-    s.gravity = Vec3(-9.81, 0, 0);
-    s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("ball", 1.2, 0.0)};
+// The series accumulates at t1 (1 + 2e/(1 - e)) = t1 (1 + e)/(1 - e) (= sqrt(2H/g)(1+e)/(1-e)):
+// the ball is at rest on the floor from then on, touching it, with a finite number of events.
+TEST(World1d, BouncingBallRestsAfterTheSeriesTime) {
+    const double g = 9.81, H = 1.0, e = 0.5;
+    Scene s = line(Policy::sequential, e);
+    s.gravity = Vec3(-g, 0, 0);
+    s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("ball", 0.2 + H, 0.0)};
     World1 w(s);
     std::vector<Event1> events;
-    EXPECT_THROW(w.advance_to(2.0, &events), std::runtime_error);
+    const double t_rest = std::sqrt(2 * H / g) * (1 + e) / (1 - e);
+    w.advance_to(t_rest + 0.5, &events);
+    ASSERT_FALSE(events.empty());
+    EXPECT_LT(events.size(), 100u);
+    EXPECT_NEAR(events.back().t, t_rest, 1e-9);
+    EXPECT_TRUE(w.resting(1));
+    EXPECT_EQ(w.bodies()[1].v, 0.0);
+    EXPECT_NEAR(w.bodies()[1].position, 0.2, 1e-12);  // on the floor: 0.1 + 0.1
+    const std::size_t n = events.size();
+    w.advance_to(t_rest + 10.0, &events);  // and stays
+    EXPECT_EQ(events.size(), n);
+    EXPECT_NEAR(w.bodies()[1].position, 0.2, 1e-12);
+}
+
+// A block placed on the floor under gravity stays exactly where it is: no jitter, no events.
+TEST(World1d, BlockOnTheFloorStays) {
+    Scene s = line(Policy::sequential, 0.5);
+    s.gravity = Vec3(-9.81, 0, 0);
+    s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("box", 0.2, 0.0)};
+    World1 w(s);
+    std::vector<Event1> events;
+    for (int k = 1; k <= 100; ++k) w.advance_to(0.05 * k, &events);
+    EXPECT_TRUE(events.empty());
+    EXPECT_EQ(w.bodies()[1].position, 0.2);
+    EXPECT_EQ(w.bodies()[1].v, 0.0);
+}
+
+// A block dropped with e = 0 onto one resting on the floor: it lands at sqrt(2h/g) and both
+// rest (the impulse passes through the lower block into the floor).
+TEST(World1d, StackRestsAfterAPerfectlyInelasticLanding) {
+    const double g = 9.81, h = 0.5;
+    for (Policy policy : {Policy::sequential, Policy::simultaneous}) {
+        Scene s = line(policy, 0.0);
+        s.gravity = Vec3(-g, 0, 0);
+        s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("low", 0.2, 0.0),
+                    block("high", 0.4 + h, 0.0)};
+        World1 w(s);
+        std::vector<Event1> events;
+        w.advance_to(1.0, &events);
+        ASSERT_FALSE(events.empty());
+        EXPECT_NEAR(events.front().t, std::sqrt(2 * h / g), 1e-12);
+        EXPECT_TRUE(w.resting(1) && w.resting(2));
+        EXPECT_EQ(w.bodies()[2].v, 0.0);
+        EXPECT_NEAR(w.bodies()[2].position, 0.4, 1e-12);
+    }
+}
+
+// e = 1: no accumulation; every landing is at the same speed sqrt(2 g H), 2 sqrt(2H/g) apart.
+TEST(World1d, ElasticBallBouncesForever) {
+    const double g = 9.81, H = 1.0;
+    Scene s = line(Policy::sequential, 1.0);
+    s.gravity = Vec3(-g, 0, 0);
+    s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("ball", 0.2 + H, 0.0)};
+    World1 w(s);
+    std::vector<Event1> events;
+    w.advance_to(20.0, &events);
+    const double t1 = std::sqrt(2 * H / g), u = g * t1;
+    ASSERT_EQ(events.size(), static_cast<std::size_t>((20.0 - t1) / (2 * t1)) + 1);
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        EXPECT_NEAR(events[k].t, t1 + 2 * t1 * k, 1e-12 * (1 + k));
+        EXPECT_NEAR(events[k].vb_before, -u, 1e-12 * u * (1 + k));
+    }
+    EXPECT_FALSE(w.resting(1));
 }
 
 // Elastic blocks of random masses between two walls for 100 s: the energy stays to 1e-12, no
