@@ -84,8 +84,9 @@ private:
             const SolveBody& B = body(c);
             const bool show_shape = !B.shape.empty() && B.shape != B.name;
             const std::string who = B.name + (show_shape ? " (" + B.shape + ")" : "");
-            const Vec3 x = d == 1 ? Vec3(B.b1.position, 0, 0) : B.b3.position;
-            const Vec3 vi = d == 1 ? Vec3(B.b1.v, 0, 0) : B.b3.v;
+            // The parser fills b3 in every dimension (1D: along x), so it serves all three.
+            const Vec3& x = B.b3.position;
+            const Vec3& vi = B.b3.v;
             F line = words(who + ": ");
             if (B.b3.is_static)
                 line = line + words("static (immovable), ") + f("1/" + sym("m", c) + " = 0");
@@ -355,22 +356,22 @@ private:
             const Vec3& v0 = body(c).b3.v;
             const Vec3& v = c == 'a' ? s.va : s.vb;
             const Vec3& w = c == 'a' ? s.wa : s.wb;
-            const Vec3 v0_1d(body(c).b1.v, 0, 0);
             if (is_static(c)) {
                 lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + " = ") + V(v) + unit("m/s") +
                                 words("  (static)"));
                 continue;
             }
             lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + sign + "P/" + sym("m", c) + " = ") +
-                            V(d == 1 ? v0_1d : v0) + f(sign) + V(s.P) + f(" / ") + num(body(c).b3.mass) +
+                            V(v0) + f(sign) + V(s.P) + f(" / ") + num(body(c).b3.mass) +
                             f(" = ") + V(v) + unit("m/s"));
             if (d >= 2) {
                 const std::string torque = d == 2 ? "(" + sym("r", c) + " × P)/" + sym("I", c)
                                                   : sym("I", c) + "⁻¹(" + sym("r", c) + " × P)";
+                // The torque term is what the engine's update changed: |w' - w|, signed as shown.
+                const Vec3& w0 = body(c).b3.w;
+                const Vec3 term = c == 'a' ? Vec3(w0 - w) : Vec3(w - w0);
                 lines.push_back(f(sym("ω", c) + "′ = " + sym("ω", c) + sign + torque + " = ") +
-                                W(body(c).b3.w) + f(sign) + Wp((c == 'a' ? s.inv_Ia : s.inv_Ib) *
-                                                               (c == 'a' ? s.ra : s.rb).cross(s.P)) +
-                                f(" = ") + W(w) + unit("rad/s"));
+                                W(w0) + f(sign) + Wp(term) + f(" = ") + W(w) + unit("rad/s"));
             }
         }
         step("Final velocities", lines, {"The impulse −P acts on A and +P on B, at the contact point."});

@@ -66,9 +66,12 @@ void World1::update_support() {
     }
 }
 
+double World1::right_face(std::size_t i) const {
+    return bodies_[i].position + 0.5 * scene_.bodies[i].length;
+}
+
 double World1::gap(std::size_t i, std::size_t j) const {
-    const double li = scene_.bodies[i].length, lj = scene_.bodies[j].length;
-    return (bodies_[j].position - 0.5 * lj) - (bodies_[i].position + 0.5 * li);
+    return (bodies_[j].position - 0.5 * scene_.bodies[j].length) - right_face(i);
 }
 
 double World1::first_contact(std::size_t i, std::size_t j, double horizon) const {
@@ -158,7 +161,7 @@ bool World1::resolve_sequential(std::vector<Event1>* events) {
         if (bodies_[L].is_static && bodies_[R].is_static) continue;
         const Response1 r = frictionless(at_contact(bodies_[L]), at_contact(bodies_[R]), 1.0,
                                          scene_.pair_restitution(L, R));
-        Event1 e{time_, L, R, bodies_[L].position + 0.5 * scene_.bodies[L].length, r.P,
+        Event1 e{time_, L, R, right_face(L), r.P,
                  bodies_[L].v, bodies_[R].v, r.va, r.vb};
         bodies_[L].v = r.va;
         bodies_[R].v = r.vb;
@@ -231,7 +234,7 @@ bool World1::resolve_simultaneous(std::vector<Event1>* events) {
         const auto [L, R] = contacts[k];
         const double p = P[static_cast<Eigen::Index>(k)];
         if (p <= 0.0) continue;
-        events->push_back(Event1{time_, L, R, bodies_[L].position + 0.5 * scene_.bodies[L].length,
+        events->push_back(Event1{time_, L, R, right_face(L),
                                  p, v0[L], v0[R], bodies_[L].v, bodies_[R].v});
         any = true;
     }

@@ -52,6 +52,7 @@ public:
     bool resting(std::size_t i) const { return supported_[i]; }
 
 private:
+    double right_face(std::size_t i) const;                  // m: where a block meets its right neighbour
     double gap(std::size_t i, std::size_t j) const;          // right i's face to left j's face
     double first_contact(std::size_t i, std::size_t j, double horizon) const;
     void drift(double dt);
