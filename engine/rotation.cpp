@@ -34,7 +34,13 @@ void midpoint_step(const Mat3& inv_Ib, double h, Quat* q, Vec3* Lb) {
 
 void rotate_free(Body3* body, double dt, const RotationSettings& settings) {
     if (body->is_static || dt == 0.0) return;
-    const Mat3 inv_Ib = inertia_pseudo_inverse(body->inertia);
+    const Mat3& Ib = body->inertia;
+    if (Ib == Mat3::Identity() * Ib(0, 0)) {
+        // A sphere's inertia is isotropic: w stays constant and one exact turn does.
+        body->orientation = (exp_map(body->w * dt) * body->orientation).normalized();
+        return;
+    }
+    const Mat3 inv_Ib = inertia_pseudo_inverse(Ib);
     Quat q = body->orientation.normalized();
     Vec3 Lb = body->inertia * (q.conjugate() * body->w);
     const Vec3 wb = inv_Ib * Lb;

@@ -1,0 +1,889 @@
+#include "engine/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+#include <unordered_map>
+#include <unordered_set>
+
+#include <Eigen/Eigenvalues>
+
+#include "engine/rotation.h"
+
+namespace collide {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+// Projected Gauss-Seidel sweeps at most; a solve stops earlier when no impulse changes by more
+// than 1e-14 of the largest (redundant points, e.g. a box's four corners, converge slowest).
+constexpr int kMaxSweeps = 2000;
+
+// ---- What differs between 2D and 3D, as overloads ----
+
+template <class T> T zero();
+template <> double zero<double>() { return 0.0; }
+template <> Vec2 zero<Vec2>() { return Vec2::Zero(); }
+template <> Vec3 zero<Vec3>() { return Vec3::Zero(); }
+
+double magnitude(double w) { return std::abs(w); }
+double magnitude(const Vec3& w) { return w.norm(); }
+
+Vec2 spin_cross(double w, const Vec2& r) { return cross(w, r); }  // w x r
+Vec3 spin_cross(const Vec3& w, const Vec3& r) { return w.cross(r); }
+double lever(const Vec2& r, const Vec2& P) { return cross(r, P); }  // r x P
+Vec3 lever(const Vec3& r, const Vec3& P) { return r.cross(P); }
+
+const Body2& scene_body(const SceneBody& b, const Body2*) { return b.body2; }
+const Body3& scene_body(const SceneBody& b, const Body3*) { return b.body3; }
+const Shape2& scene_shape(const SceneBody& b, const Shape2*) { return b.shape2; }
+const Shape3& scene_shape(const SceneBody& b, const Shape3*) { return b.shape3; }
+
+bool is_round(const Shape2& s) { return s.kind == Shape2::Kind::disc; }
+bool is_round(const Shape3& s) { return s.kind == Shape3::Kind::sphere; }
+bool is_plane(const Shape2& s) { return s.kind == Shape2::Kind::half_plane; }
+bool is_plane(const Shape3& s) { return s.kind == Shape3::Kind::half_space; }
+
+Pose2 pose_of(const Body2& b) { return Pose2{b.position, b.angle}; }
+Pose3 pose_of(const Body3& b) { return Pose3{b.position, b.orientation}; }
+
+// Inverse inertia in the world frame, as the dimension needs it.
+double inv_inertia(const Body2& b) { return b.inv_inertia(); }
+Mat3 inv_inertia(const Body3& b) { return b.is_static ? Mat3::Zero() : b.inv_inertia_world(); }
+
+// Turning for dt seconds with a constant angular acceleration alpha (resting forces; 0 when free).
+void turn(Body2* b, double dt, double alpha) {
+    b->angle += b->w * dt + 0.5 * alpha * dt * dt;
+    b->w += alpha * dt;
+}
+void turn(Body3* b, double dt, const Vec3& alpha) {
+    if (alpha.isZero(0.0)) {
+        rotate_free(b, dt);  // torque-free: L kept, gyroscopic term included
+        return;
+    }
+    // Under the (small, constant) torque of resting forces: w(t) = w + alpha t, the orientation
+    // turned by the midpoint spin of short steps.
+    const double turned = (b->w.norm() + alpha.norm() * dt) * dt;
+    const int n = std::max(1, static_cast<int>(std::ceil(turned / 0.005)));
+    const double h = dt / n;
+    for (int k = 0; k < n; ++k) {
+        const Vec3 phi = (b->w + alpha * ((k + 0.5) * h)) * h;
+        const double angle = phi.norm();
+        if (angle > 0.0) b->orientation = (Quat(Eigen::AngleAxisd(angle, phi / angle)) * b->orientation).normalized();
+    }
+    b->w += alpha * dt;
+}
+
+// Largest spin the body can reach while free (rad/s): 2D w is constant; in 3D the rotational
+// energy E = w.I w/2 is, so |w| <= sqrt(2 E / I_min).
+double spin_bound(const Body2& b, double inv_min_moment) {
+    (void)inv_min_moment;
+    return std::abs(b.w);
+}
+double spin_bound(const Body3& b, double inv_min_moment) {
+    const double twice_energy = b.w.dot(b.inertia_world() * b.w);
+    return std::max(b.w.norm(), std::sqrt(std::max(0.0, twice_energy * inv_min_moment)));
+}
+double inverse_smallest_moment(const Body2& b) { return b.is_static ? 0.0 : 1.0 / b.inertia; }
+double inverse_smallest_moment(const Body3& b) {
+    if (b.is_static) return 0.0;
+    const double least = Eigen::SelfAdjointEigenSolver<Mat3>(b.inertia).eigenvalues().minCoeff();
+    return least > 0.0 ? 1.0 / least : 0.0;
+}
+
+// Unit tangents spanning the contact plane: 2D one, 3D two.
+int tangents(const Vec2& n, std::array<Vec2, 2>* t) {
+    (*t)[0] = perp(n);
+    return 1;
+}
+int tangents(const Vec3& n, std::array<Vec3, 2>* t) {
+    const Vec3 helper = std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY();
+    (*t)[0] = n.cross(helper).normalized();
+    (*t)[1] = n.cross((*t)[0]);
+    return 2;
+}
+
+// Smallest s > 0 with c + b s + a s^2 = 0 (c >= 0 the gap now), or kNever.
+double first_root(double a, double b, double c) {
+    if (a == 0.0) return b < 0.0 ? -c / b : kNever;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return kNever;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double best = kNever;
+    for (double s : {q / a, q != 0.0 ? c / q : kNever})
+        if (s > 0.0 && s < best) best = s;
+    return best;
+}
+
+double response_impulse_norm(const Vec2& P) { return P.norm(); }
+double response_impulse_norm(const Vec3& P) { return P.norm(); }
+
+}  // namespace
+
+// ---- Construction and motion ----
+
+template <int D>
+World<D>::World(const Scene& scene) : scene_(scene) {
+    if (scene.dimension != D)
+        throw std::invalid_argument("World<" + std::to_string(D) + "> needs a " +
+                                    std::to_string(D) + "D scene");
+    if (scene.model == Model::page_listing)
+        throw std::invalid_argument("the page's listing is a worked example, not a world model");
+    const std::size_t n = scene.bodies.size();
+    for (const SceneBody& sb : scene.bodies) {
+        bodies_.push_back(scene_body(sb, static_cast<const Body*>(nullptr)));
+        shapes_.push_back(scene_shape(sb, static_cast<const Shape*>(nullptr)));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        plane_.push_back(is_plane(shapes_[i]));
+        round_.push_back(is_round(shapes_[i]));
+        radius_.push_back(plane_[i] ? 0.0 : bounding_radius(shapes_[i]));
+        inv_min_moment_.push_back(inverse_smallest_moment(bodies_[i]));
+        if (plane_[i]) planes_.push_back(i);
+    }
+    track_.resize(n);
+    island_.assign(n, 0);
+    seen_.assign(n, 0);
+    for (std::size_t i = 0; i < n; ++i) set_free(i);
+}
+
+template <int D>
+typename World<D>::Vec World<D>::gravity() const {
+    return scene_.gravity.template head<D>();
+}
+
+template <int D>
+void World<D>::set_free(std::size_t i) {
+    Track& k = track_[i];
+    k.a = bodies_[i].is_static ? zero<Vec>() : gravity();
+    k.alpha = zero<Spin>();
+    ++k.version;
+    island_[i] = 0;
+}
+
+template <int D>
+void World<D>::move(Body* b, const Track& k, double dt) {
+    if (b->is_static || dt == 0.0) return;
+    b->position += b->v * dt + 0.5 * dt * dt * k.a;
+    b->v += k.a * dt;
+    turn(b, dt, k.alpha);
+}
+
+template <int D>
+void World<D>::drift(std::size_t i, double t) {
+    Track& k = track_[i];
+    if (t <= k.t) return;
+    move(&bodies_[i], k, t - k.t);
+    k.t = t;
+}
+
+template <int D>
+void World<D>::set_body(std::size_t i, const Body& body) {
+    for (std::size_t j = 0; j < bodies_.size(); ++j) drift(j, time_);
+    bodies_[i] = body;
+    track_[i].t = time_;
+    // Whatever rested on or under it is re-examined at the start of the next substep.
+    for (std::size_t j = 0; j < bodies_.size(); ++j)
+        if (island_[j] != 0 || j == i) set_free(j);
+    heap_.clear();
+}
+
+// ---- Broad phase: a uniform grid over swept boxes ----
+
+template <int D>
+void World<D>::swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const {
+    const Body& b = bodies_[i];
+    const Track& k = track_[i];
+    const double s0 = t0 - k.t, s1 = t1 - k.t;
+    // The centre follows x + v s + a s^2 / 2: the box of both ends and of the turning point.
+    Vec a0 = b.position + b.v * s0 + 0.5 * s0 * s0 * k.a;
+    Vec a1 = b.position + b.v * s1 + 0.5 * s1 * s1 * k.a;
+    *lo = a0.cwiseMin(a1);
+    *hi = a0.cwiseMax(a1);
+    for (int d = 0; d < D; ++d) {
+        if (k.a[d] == 0.0) continue;
+        const double s = -b.v[d] / k.a[d];
+        if (s > s0 && s < s1) {
+            const double x = b.position[d] + b.v[d] * s + 0.5 * s * s * k.a[d];
+            (*lo)[d] = std::min((*lo)[d], x);
+            (*hi)[d] = std::max((*hi)[d], x);
+        }
+    }
+    const double margin = radius_[i] + kTouch;
+    for (int d = 0; d < D; ++d) {
+        (*lo)[d] -= margin;
+        (*hi)[d] += margin;
+    }
+}
+
+template <int D>
+template <class F>
+void World<D>::for_each_cell(const Vec& lo, const Vec& hi, F&& f) const {
+    std::array<int, 3> a{0, 0, 0}, b{0, 0, 0};
+    for (int d = 0; d < D; ++d) {
+        a[d] = std::clamp(static_cast<int>(std::floor((lo[d] - grid_lo_[d]) / cell_)), 0, dims_[d] - 1);
+        b[d] = std::clamp(static_cast<int>(std::floor((hi[d] - grid_lo_[d]) / cell_)), 0, dims_[d] - 1);
+    }
+    for (int z = a[2]; z <= b[2]; ++z)
+        for (int y = a[1]; y <= b[1]; ++y)
+            for (int x = a[0]; x <= b[0]; ++x)
+                f((static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x);
+}
+
+template <int D>
+void World<D>::insert(std::size_t i, double t0, double t1) {
+    Vec lo, hi;
+    swept_box(i, t0, t1, &lo, &hi);
+    for_each_cell(lo, hi, [&](std::size_t c) {
+        if (cells_[c].empty()) used_cells_.push_back(c);
+        cells_[c].push_back(static_cast<std::uint32_t>(i));
+    });
+}
+
+template <int D>
+void World<D>::build_grid(double t0, double t1) {
+    for (std::size_t c : used_cells_) cells_[c].clear();
+    used_cells_.clear();
+    // Cell size: the median swept box of the moving bodies, so a typical body meets few cells.
+    Vec lo = Vec::Constant(kNever), hi = Vec::Constant(-kNever);
+    std::vector<double> extents;
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (bodies_[i].is_static) continue;
+        Vec a, b;
+        swept_box(i, t0, t1, &a, &b);
+        lo = lo.cwiseMin(a);
+        hi = hi.cwiseMax(b);
+        extents.push_back((b - a).maxCoeff());
+        ++moving;
+    }
+    if (moving == 0) {
+        lo = Vec::Zero();
+        hi = Vec::Ones();
+        extents.push_back(1.0);
+    }
+    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
+    cell_ = std::max(extents[extents.size() / 2], 1e-9);
+    const double budget = 4.0 * static_cast<double>(moving) + 64.0;
+    for (;;) {
+        double count = 1.0;
+        for (int d = 0; d < D; ++d) count *= std::floor((hi[d] - lo[d]) / cell_) + 1.0;
+        if (count <= budget) break;
+        cell_ *= 1.5;
+    }
+    grid_lo_ = lo;
+    std::size_t total = 1;
+    dims_ = {1, 1, 1};
+    for (int d = 0; d < D; ++d) {
+        dims_[d] = static_cast<int>(std::floor((hi[d] - lo[d]) / cell_)) + 1;
+        total *= static_cast<std::size_t>(dims_[d]);
+    }
+    if (cells_.size() < total) cells_.resize(total);
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!plane_[i]) insert(i, t0, t1);
+}
+
+template <int D>
+template <class F>
+void World<D>::for_each_neighbour(std::size_t i, double t, F&& f) {
+    if (++query_ == 0) {
+        std::fill(seen_.begin(), seen_.end(), 0);
+        query_ = 1;
+    }
+    seen_[i] = query_;
+    if (!plane_[i]) {
+        Vec lo, hi;
+        swept_box(i, t, substep_end_, &lo, &hi);
+        std::vector<std::uint32_t>& found = scratch_;  // f never asks for neighbours itself
+        found.clear();
+        for_each_cell(lo, hi, [&](std::size_t c) {
+            for (std::uint32_t j : cells_[c])
+                if (seen_[j] != query_) {
+                    seen_[j] = query_;
+                    found.push_back(j);
+                }
+        });
+        for (std::uint32_t j : found) f(static_cast<std::size_t>(j));
+    }
+    for (std::size_t p : planes_)
+        if (p != i) f(p);
+}
+
+// ---- Narrow phase ----
+
+template <int D>
+typename World<D>::Manifold World<D>::manifold(std::size_t a, std::size_t b) const {
+    return collide(shapes_[a], pose_of(bodies_[a]), shapes_[b], pose_of(bodies_[b]), kTouch);
+}
+
+template <int D>
+double World<D>::normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const {
+    const Body& A = bodies_[a];
+    const Body& B = bodies_[b];
+    const Vec u = (B.v + spin_cross(B.w, p - B.position)) - (A.v + spin_cross(A.w, p - A.position));
+    return u.dot(n);
+}
+
+template <int D>
+double World<D>::rest_speed(std::size_t i, std::size_t j) const {
+    const double g = gravity().norm();
+    double v = 0.5 * kZenoTime * g;
+    const bool smooth = (round_[i] || plane_[i]) && (round_[j] || plane_[j]);
+    if (!smooth) v = std::max(v, std::sqrt(4.0 * g * kTouch));
+    return v;
+}
+
+template <int D>
+bool World<D>::same_island(std::size_t i, std::size_t j) const {
+    const std::uint32_t a = bodies_[i].is_static ? 0 : island_[i];
+    const std::uint32_t b = bodies_[j].is_static ? 0 : island_[j];
+    if (bodies_[i].is_static) return b != 0;
+    if (bodies_[j].is_static) return a != 0;
+    return a != 0 && a == b;
+}
+
+template <int D>
+double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1) {
+    if (bodies_[i].is_static && bodies_[j].is_static) return kNever;
+    drift(i, t);
+    drift(j, t);
+    ++counters_.predictions;
+    const std::size_t a = std::min(i, j), b = std::max(i, j);
+    const Manifold m = manifold(a, b);
+    const double v_rest = rest_speed(a, b);
+    const Track& ka = track_[a];
+    const Track& kb = track_[b];
+    bool touching = m.separation <= kTouch && m.count > 0;
+    double u_min = kNever, u_max = -kNever;
+    if (touching) {
+        for (int k = 0; k < m.count; ++k) {
+            const double un = normal_speed(a, b, m.points[k], m.normal);
+            u_min = std::min(u_min, un);
+            u_max = std::max(u_max, un);
+        }
+        if (u_min < -v_rest) return t;  // approaching now: an impact at this instant
+        if (u_max <= v_rest) return same_island(a, b) ? kNever : t;  // resting: form the island
+    }
+    const Body& A = bodies_[a];
+    const Body& B = bodies_[b];
+    // Closed forms for round shapes.
+    if (round_[b] && (plane_[a] || round_[a]) && (plane_[a] || ka.a == kb.a)) {
+        double s = kNever;
+        if (plane_[a]) {
+            // gap(s) = n.x(s) - offset - r: a quadratic in s.
+            const Vec n = shapes_[a].normal;
+            const double c = n.dot(B.position) - shapes_[a].offset - shapes_[b].radius;
+            const double bb = n.dot(B.v), aa = 0.5 * n.dot(kb.a);
+            // Touching and parting: the gap returns to zero at the larger root (s = -b/a).
+            s = touching ? (aa < 0.0 && bb > 0.0 ? -bb / aa : kNever)
+                         : first_root(aa, bb, std::max(c, 0.0));
+        } else {
+            // |d + u s| = ra + rb with d, u the relative position and velocity.
+            const Vec d = B.position - A.position, u = B.v - A.v;
+            const double R = shapes_[a].radius + shapes_[b].radius;
+            const double uu = u.squaredNorm(), du = d.dot(u), c = d.squaredNorm() - R * R;
+            if (du < 0.0 && uu > 0.0 && !touching) {
+                const double disc = du * du - uu * c;
+                if (disc >= 0.0) s = std::max(0.0, c / (-du + std::sqrt(disc)));
+            }
+        }
+        return t + s <= t1 ? t + s : kNever;
+    }
+    // Conservative advancement (engine/toi2d.h): copies of both bodies moved forward.
+    Body ca = A, cb = B;
+    const double horizon = t1 - t;
+    double s = 0.0;
+    if (touching) {
+        // Parting: skip until the gap has grown past 2 kTouch along the normal.
+        const double un = std::max(u_min, 1e-300), an = m.normal.dot(kb.a - ka.a);
+        const double skip = first_root(-0.5 * an, -un, 2.0 * kTouch) ;
+        const double rise = an >= 0.0 ? 2.0 * kTouch / un : skip;
+        if (!(rise < horizon)) return kNever;
+        s = std::isfinite(rise) ? rise : horizon;
+        move(&ca, ka, s);
+        move(&cb, kb, s);
+    }
+    const double spin_a = spin_bound(A, inv_min_moment_[a]) + magnitude(ka.alpha) * horizon;
+    const double spin_b = spin_bound(B, inv_min_moment_[b]) + magnitude(kb.alpha) * horizon;
+    const double turn_rate = (round_[a] ? 0.0 : spin_a * radius_[a]) + (round_[b] ? 0.0 : spin_b * radius_[b]);
+    for (int it = 0; it < 100000; ++it) {
+        const Manifold mm = collide(shapes_[a], pose_of(ca), shapes_[b], pose_of(cb), kTouch);
+        if (mm.separation <= kTouch) return t + s;
+        const double rate = std::max(0.0, -mm.normal.dot(cb.v - ca.v)) +
+                            std::max(0.0, -mm.normal.dot(kb.a - ka.a)) * (horizon - s) + turn_rate;
+        if (!(rate > 0.0)) return kNever;
+        const double step = mm.separation / rate;
+        if (s + step > horizon) return kNever;
+        move(&ca, ka, step);
+        move(&cb, kb, step);
+        s += step;
+    }
+    return t + s;  // not converged: look again from there (never a silent miss)
+}
+
+template <int D>
+void World<D>::predict(std::size_t i, double t) {
+    if (bodies_[i].is_static) return;
+    double best = kNever;
+    std::size_t partner = i;
+    for_each_neighbour(i, t, [&](std::size_t j) {
+        const double tj = predict_pair(i, j, t, substep_end_);
+        if (tj < best) {
+            best = tj;
+            partner = j;
+        }
+    });
+    if (best <= substep_end_) {
+        heap_.push_back(Pending{best, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(partner),
+                                track_[i].version, track_[partner].version});
+        std::push_heap(heap_.begin(), heap_.end(), std::greater<Pending>());
+    }
+}
+
+// ---- Contacts at one instant ----
+
+template <int D>
+void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out,
+                           std::unordered_set<std::uint64_t>* known) {
+    drift(i, t);
+    for_each_neighbour(i, t, [&](std::size_t j) {
+        if (bodies_[i].is_static && bodies_[j].is_static) return;
+        const std::size_t a = std::min(i, j), b = std::max(i, j);
+        const std::uint64_t key = static_cast<std::uint64_t>(a) << 32 | b;
+        if (known->count(key)) return;
+        drift(j, t);
+        const Manifold m = manifold(a, b);
+        if (m.separation > kTouch || m.count == 0) return;
+        known->insert(key);
+        Contact c;
+        c.a = a;
+        c.b = b;
+        c.m = m;
+        out->push_back(c);
+    });
+}
+
+template <int D>
+bool World<D>::resolve_point(Contact* c, int k) {
+    const Vec& p = c->m.points[k];
+    const Vec& n = c->m.normal;
+    if (!(normal_speed(c->a, c->b, p, n) < -rest_speed(c->a, c->b))) return false;
+    Body& A = bodies_[c->a];
+    Body& B = bodies_[c->b];
+    const auto ia = at_contact(A, p), ib = at_contact(B, p);
+    const double e = scene_.pair_restitution(c->a, c->b);
+    auto r = frictionless(ia, ib, n, e);
+    switch (scene_.model) {
+        case Model::coulomb: r = coulomb(ia, ib, n, e, scene_.pair_friction(c->a, c->b)); break;
+        case Model::matrix: r = matrix(ia, ib, n, e); break;
+        case Model::stick: r = stick(ia, ib, n); break;
+        default: break;
+    }
+    if (r.separating) return false;
+    if (!A.is_static) {
+        A.v = r.va;
+        A.w = r.wa;
+    }
+    if (!B.is_static) {
+        B.v = r.vb;
+        B.w = r.wb;
+    }
+    c->impulse += r.P;
+    c->weight += std::max(0.0, r.P.dot(n));
+    c->moment += std::max(0.0, r.P.dot(n)) * p;
+    return true;
+}
+
+// Projected Gauss-Seidel over the contact points of `contacts` (see the header): impulses with
+// P.n >= 0 such that each point leaves with un >= target (equality where P.n > 0), tangential
+// impulses held within mu P.n (mu < 0: no limit) aiming at the tangential target velocity.
+template <int D>
+void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
+                            std::vector<Body>* state) {
+    struct Row {
+        std::size_t c;
+        int k;
+        Vec ra = Vec::Zero(), rb = Vec::Zero(), n = Vec::Zero();
+        std::array<Vec, 2> t = {Vec::Zero(), Vec::Zero()};
+        int nt = 0;
+        double mn = 0.0;
+        std::array<double, 2> mt{};
+        double lam = 0.0;
+        std::array<double, 2> lam_t{};
+        PointGoal goal;
+    };
+    auto body_ref = [&](std::size_t i) -> Body& { return (*state)[i]; };
+    std::vector<Row> rows;
+    std::size_t g = 0;
+    for (std::size_t ci = 0; ci < contacts->size(); ++ci) {
+        Contact& c = (*contacts)[ci];
+        for (int k = 0; k < c.m.count; ++k, ++g) {
+            Row r;
+            r.c = ci;
+            r.k = k;
+            r.goal = goals[g];
+            r.n = c.m.normal;
+            const auto ia = at_contact(body_ref(c.a), c.m.points[k]);
+            const auto ib = at_contact(body_ref(c.b), c.m.points[k]);
+            r.ra = ia.r;
+            r.rb = ib.r;
+            const auto K = collision_matrix(ia, ib);
+            const double kn = r.n.dot(K * r.n);
+            r.mn = kn > 0.0 ? 1.0 / kn : 0.0;
+            if (r.goal.mu != 0.0) {
+                r.nt = tangents(r.n, &r.t);
+                for (int q = 0; q < r.nt; ++q) {
+                    const double kt = r.t[q].dot(K * r.t[q]);
+                    r.mt[q] = kt > 0.0 ? 1.0 / kt : 0.0;
+                }
+            }
+            rows.push_back(r);
+        }
+    }
+    auto apply = [&](const Row& r, const Vec& P) {
+        const Contact& c = (*contacts)[r.c];
+        Body& A = body_ref(c.a);
+        Body& B = body_ref(c.b);
+        if (!A.is_static) {
+            A.v -= P * A.inv_mass();
+            A.w -= inv_inertia(A) * lever(r.ra, P);
+        }
+        if (!B.is_static) {
+            B.v += P * B.inv_mass();
+            B.w += inv_inertia(B) * lever(r.rb, P);
+        }
+    };
+    auto rel = [&](const Row& r) {
+        const Contact& c = (*contacts)[r.c];
+        const Body& A = body_ref(c.a);
+        const Body& B = body_ref(c.b);
+        return Vec((B.v + spin_cross(B.w, r.rb)) - (A.v + spin_cross(A.w, r.ra)));
+    };
+    for (int it = 0; it < kMaxSweeps; ++it) {
+        double change = 0.0, scale = 1e-300;
+        for (Row& r : rows) {
+            Vec u = rel(r);
+            double lam = r.lam - r.mn * (u.dot(r.n) - r.goal.un);
+            if (r.goal.push_only) lam = std::max(0.0, lam);
+            change = std::max(change, std::abs(lam - r.lam));
+            apply(r, (lam - r.lam) * r.n);
+            r.lam = lam;
+            scale = std::max(scale, std::abs(lam));
+            if (r.nt == 0) continue;
+            u = rel(r);
+            std::array<double, 2> lt = r.lam_t;
+            for (int q = 0; q < r.nt; ++q) lt[q] -= r.mt[q] * (u.dot(r.t[q]) - r.goal.ut.dot(r.t[q]));
+            if (r.goal.mu > 0.0) {
+                double norm = 0.0;
+                for (int q = 0; q < r.nt; ++q) norm += lt[q] * lt[q];
+                norm = std::sqrt(norm);
+                const double limit = r.goal.mu * std::max(0.0, r.lam);
+                if (norm > limit)
+                    for (int q = 0; q < r.nt; ++q) lt[q] *= limit / norm;
+            }
+            Vec P = zero<Vec>();
+            for (int q = 0; q < r.nt; ++q) {
+                change = std::max(change, std::abs(lt[q] - r.lam_t[q]));
+                P += (lt[q] - r.lam_t[q]) * r.t[q];
+            }
+            apply(r, P);
+            r.lam_t = lt;
+        }
+        if (change <= 1e-14 * scale) break;
+    }
+    for (const Row& r : rows) {
+        Contact& c = (*contacts)[r.c];
+        Vec P = r.lam * r.n;
+        for (int q = 0; q < r.nt; ++q) P += r.lam_t[q] * r.t[q];
+        c.impulse += P;
+        c.weight += std::max(0.0, r.lam);
+        c.moment += std::max(0.0, r.lam) * c.m.points[r.k];
+    }
+}
+
+template <int D>
+void World<D>::resolve_simultaneous(std::vector<Contact>* contacts) {
+    int points = 0;
+    for (const Contact& c : *contacts) points += c.m.count;
+    if (points == 1) {  // one point: the model's own formula
+        for (Contact& c : *contacts)
+            if (c.m.count == 1) resolve_point(&c, 0);
+        return;
+    }
+    std::vector<PointGoal> goals;
+    for (const Contact& c : *contacts) {
+        const double e = scene_.model == Model::stick ? 0.0 : scene_.pair_restitution(c.a, c.b);
+        const double v_rest = rest_speed(c.a, c.b);
+        for (int k = 0; k < c.m.count; ++k) {
+            const Body& A = bodies_[c.a];
+            const Body& B = bodies_[c.b];
+            const Vec& p = c.m.points[k];
+            const Vec u = (B.v + spin_cross(B.w, p - B.position)) - (A.v + spin_cross(A.w, p - A.position));
+            const double un = u.dot(c.m.normal);
+            PointGoal goal;
+            goal.un = un < -v_rest ? -e * un : 0.0;
+            switch (scene_.model) {
+                case Model::coulomb: goal.mu = scene_.pair_friction(c.a, c.b); break;
+                case Model::matrix: goal.mu = -1.0; goal.ut = -e * (u - un * c.m.normal); break;
+                case Model::stick: goal.mu = -1.0; break;
+                default: goal.mu = 0.0; break;
+            }
+            goals.push_back(goal);
+        }
+    }
+    solve_points(contacts, goals, &bodies_);
+}
+
+template <int D>
+void World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events) {
+    std::vector<Contact> contacts;
+    std::unordered_set<std::uint64_t> known;
+    std::vector<std::size_t> group;  // dynamic bodies reached, in discovery order
+    std::unordered_map<std::size_t, typename Event<D>::Velocity> before;
+    auto reach = [&](std::size_t k) {
+        if (bodies_[k].is_static || before.count(k)) return false;
+        drift(k, t);
+        before[k] = {bodies_[k].v, bodies_[k].w};
+        group.push_back(k);
+        return true;
+    };
+    for (std::size_t k : {i, j}) reach(k);
+    for (std::size_t k : {i, j}) contacts_of(k, t, &contacts, &known);
+    auto by_pair = [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
+
+    if (scene_.policy == Policy::simultaneous) {
+        // The whole touching group: follow contacts through every dynamic body reached.
+        for (std::size_t q = 0; q < contacts.size(); ++q)
+            for (std::size_t k : {contacts[q].a, contacts[q].b})
+                if (reach(k)) contacts_of(k, t, &contacts, &known);
+        std::sort(contacts.begin(), contacts.end(), by_pair);
+        resolve_simultaneous(&contacts);
+    } else {
+        const std::size_t max_passes = 64 * std::max<std::size_t>(1, bodies_.size());
+        bool settled = false;
+        for (std::size_t pass = 0; pass < max_passes && !settled; ++pass) {
+            std::sort(contacts.begin(), contacts.end(), by_pair);
+            settled = true;
+            const std::size_t count = contacts.size();
+            for (std::size_t q = 0; q < count; ++q)
+                for (int k = 0; k < contacts[q].m.count; ++k) {
+                    if (!resolve_point(&contacts[q], k)) continue;
+                    settled = false;
+                    for (std::size_t body : {contacts[q].a, contacts[q].b})
+                        if (reach(body)) contacts_of(body, t, &contacts, &known);
+                }
+        }
+        if (!settled) {
+            std::sort(contacts.begin(), contacts.end(), by_pair);
+            resolve_simultaneous(&contacts);
+        }
+    }
+
+    for (const Contact& c : contacts) {
+        if (!(c.weight > 0.0) && response_impulse_norm(c.impulse) == 0.0) continue;
+        Event<D> ev;
+        ev.t = t;
+        ev.a = c.a;
+        ev.b = c.b;
+        ev.normal = c.m.normal;
+        ev.impulse = c.impulse;
+        ev.point = c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0];
+        auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
+        ev.before_a = before.count(c.a) ? before[c.a] : vel(c.a);
+        ev.before_b = before.count(c.b) ? before[c.b] : vel(c.b);
+        ev.after_a = vel(c.a);
+        ev.after_b = vel(c.b);
+        events->push_back(ev);
+        ++counters_.events;
+    }
+    settle(group, t);
+}
+
+// After an instant: the bodies reached (and the islands they belonged to) get new motions:
+// those held by resting contacts form islands with constant contact forces, the rest are free.
+template <int D>
+void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
+    std::vector<std::size_t> bodies;
+    std::unordered_set<std::size_t> in;
+    // A body brings the other members of the island it was in: their forces change too.
+    std::function<void(std::size_t)> add = [&](std::size_t k) {
+        if (bodies_[k].is_static || in.count(k)) return;
+        in.insert(k);
+        bodies.push_back(k);
+        auto it = members_.find(island_[k]);
+        if (island_[k] == 0 || it == members_.end()) return;
+        const std::vector<std::size_t> others = std::move(it->second);
+        members_.erase(it);
+        for (std::size_t m : others) add(m);
+    };
+    for (std::size_t k : reached) add(k);
+    // Islands: connected through resting contacts (touching, |un| <= v_rest at every point).
+    std::vector<Contact> contacts;
+    std::unordered_set<std::uint64_t> known;
+    std::unordered_map<std::size_t, std::size_t> parent;
+    std::function<std::size_t(std::size_t)> root = [&](std::size_t k) {
+        auto it = parent.find(k);
+        if (it == parent.end() || it->second == k) return k;
+        return it->second = root(it->second);
+    };
+    std::vector<Contact> resting;
+    for (std::size_t q = 0; q < bodies.size(); ++q) {
+        const std::size_t start = contacts.size();
+        contacts_of(bodies[q], t, &contacts, &known);
+        for (std::size_t c = start; c < contacts.size(); ++c) {
+            const Contact& ct = contacts[c];
+            const double v_rest = rest_speed(ct.a, ct.b);
+            bool rests = true;
+            for (int k = 0; k < ct.m.count; ++k)
+                rests = rests && std::abs(normal_speed(ct.a, ct.b, ct.m.points[k], ct.m.normal)) <= v_rest;
+            if (!rests) continue;
+            resting.push_back(ct);
+            for (std::size_t k : {ct.a, ct.b}) add(k);
+            if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent[root(ct.a)] = root(ct.b);
+        }
+    }
+    std::unordered_map<std::size_t, std::vector<Contact>> by_root;
+    for (const Contact& c : resting) by_root[root(bodies_[c.a].is_static ? c.b : c.a)].push_back(c);
+    for (std::size_t k : bodies) set_free(k);
+    std::vector<std::size_t> roots;
+    for (const auto& entry : by_root) roots.push_back(entry.first);
+    std::sort(roots.begin(), roots.end());
+    for (std::size_t r : roots) {
+        std::vector<Contact>& island = by_root[r];
+        std::sort(island.begin(), island.end(),
+                  [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+        std::vector<std::size_t> members;
+        for (const Contact& c : island)
+            for (std::size_t k : {c.a, c.b})
+                if (!bodies_[k].is_static && std::find(members.begin(), members.end(), k) == members.end())
+                    members.push_back(k);
+        solve_island(&island, members, t);
+    }
+    for (std::size_t k : bodies) {
+        insert(k, t, substep_end_);
+        predict(k, t);
+    }
+}
+
+// Constant contact forces for the rest of the substep (see "Resting contact" in the header):
+// first the normal speeds of the resting points are set to zero (the last, shorter than
+// kZenoTime, bounces merged), then forces F >= 0 keep the normal relative acceleration >= 0.
+template <int D>
+void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
+                            double t) {
+    ++counters_.island_solves;
+    const std::uint32_t id = next_island_++;
+    if (next_island_ == 0) next_island_ = 1;
+    members_[id] = members;
+    for (std::size_t k : members) island_[k] = id;
+    std::vector<PointGoal> goals;
+    for (const Contact& c : *contacts)
+        for (int k = 0; k < c.m.count; ++k) {
+            PointGoal g;
+            g.push_only = false;
+            g.mu = 0.0;
+            goals.push_back(g);
+        }
+    std::vector<Contact> merged = *contacts;
+    solve_points(&merged, goals, &bodies_);
+    const double h = substep_end_ - t;
+    if (!(h > 0.0)) return;
+    // Velocities a step h later with gravity, then the impulses that keep every point from
+    // approaching; their average over h is the force.
+    std::vector<Body> later = bodies_;
+    for (std::size_t k : members) later[k].v += gravity() * h;
+    const double mu_model = scene_.model == Model::frictionless ? 0.0 : 1.0;
+    goals.clear();
+    for (const Contact& c : *contacts) {
+        const double mu = scene_.model == Model::coulomb ? scene_.pair_friction(c.a, c.b)
+                          : mu_model > 0.0               ? -1.0
+                                                         : 0.0;
+        for (int k = 0; k < c.m.count; ++k) {
+            PointGoal g;
+            g.mu = mu;
+            goals.push_back(g);
+        }
+    }
+    std::vector<Contact> forces = *contacts;
+    solve_points(&forces, goals, &later);
+    for (std::size_t k : members) {
+        track_[k].a = (later[k].v - bodies_[k].v) / h;
+        track_[k].alpha = (later[k].w - bodies_[k].w) / h;
+    }
+}
+
+// ---- Stepping ----
+
+template <int D>
+void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
+    if (!(t_end >= time_)) throw std::invalid_argument("advance_to: time runs forward only");
+    std::vector<Event<D>> scratch;
+    if (!events) events = &scratch;
+    std::uint64_t handled = 0;
+    while (time_ < t_end) {
+        const double t0 = time_;
+        // Substep: bodies move about four radii each (the grid stays tight: longer substeps
+        // mean larger swept boxes, shorter ones more rebuilds), and at most kRestStep while
+        // anything rests or falls.
+        double h = t_end - t0;
+        bool any_rest = false;
+        double speed = 0.0, size = 0.0;
+        std::size_t moving = 0;
+        for (std::size_t i = 0; i < bodies_.size(); ++i) {
+            if (bodies_[i].is_static) continue;
+            any_rest = any_rest || island_[i] != 0;
+            speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
+            size += radius_[i];
+            ++moving;
+        }
+        if (moving > 0 && speed > 0.0) h = std::min(h, std::max(1e-6, 4.0 * size / speed));
+        if (any_rest || gravity().norm() > 0.0) h = std::min(h, kRestStep);
+        const double t1 = (t_end - t0 <= h) ? t_end : t0 + h;
+        substep_end_ = t1;
+        ++counters_.substeps;
+
+        build_grid(t0, t1);
+        heap_.clear();
+        // Resting contacts are found afresh each substep; then every body predicts its next impact.
+        std::vector<std::size_t> all;
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+            if (!bodies_[i].is_static && (island_[i] != 0 || gravity().norm() > 0.0)) all.push_back(i);
+        members_.clear();
+        for (std::size_t i : all) set_free(i);
+        if (!all.empty()) settle(all, t0);
+        std::unordered_set<std::size_t> predicted(all.begin(), all.end());
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+            if (!predicted.count(i)) predict(i, t0);
+
+        double now = t0;
+        while (!heap_.empty()) {
+            std::pop_heap(heap_.begin(), heap_.end(), std::greater<Pending>());
+            const Pending p = heap_.back();
+            heap_.pop_back();
+            if (p.t > t1) break;
+            now = std::max(now, p.t);
+            const bool valid_i = track_[p.i].version == p.vi;
+            const bool valid_j = track_[p.j].version == p.vj;
+            if (!valid_i) continue;  // i predicted again when it changed
+            if (!valid_j) {
+                predict(p.i, now);
+                continue;
+            }
+            if (++handled > kMaxEventsPerAdvance)
+                throw std::runtime_error("more than " + std::to_string(kMaxEventsPerAdvance) +
+                                         " collisions before t = " + std::to_string(t_end) +
+                                         " s: the scene does not settle");
+            resolve(p.i, p.j, now, events);
+        }
+        for (std::size_t i = 0; i < bodies_.size(); ++i) drift(i, t1);
+        time_ = t1;
+    }
+}
+
+template class World<2>;
+template class World<3>;
+
+}  // namespace collide

@@ -1,0 +1,230 @@
+// The 2D and 3D worlds: bodies advanced from impact to impact at the exact instant of contact.
+//
+// One algorithm serves both dimensions (World<2>, World<3>); what differs (vectors, spin, shapes,
+// how a body turns) comes from Space<D> and a few overloads in world.cpp.
+//
+// Motion between events. A free body moves ballistically, x(t) = x + v t + g t^2/2, and turns
+// torque-free (2D: w constant; 3D: engine/rotation.h, with the gyroscopic term). A body in
+// resting contact moves with constant contact forces added (see "Resting contact").
+//
+// Time of impact. For each pair of bodies that may meet (a uniform grid over the bodies' swept
+// bounding boxes: about N log N per second simulated, not N^2), the first instant of contact is
+// found to kTouch (1e-10 m):
+//   disc/sphere against disc/sphere (same acceleration) or a plane: the smallest root of a
+//     quadratic, in closed form;
+//   any other pair: conservative advancement (engine/toi2d.h explains the bound).
+// Each body keeps its own clock; an event moves only the bodies it touches (event-driven
+// simulation), and predictions invalidated by an event are discarded.
+//
+// At an impact every touching contact reachable from the pair is resolved by the scene's
+// policy (docs/conventions.md: n from A into B, +P on B, -P on A):
+//   sequential:   one contact point at a time with the scene's model (the foundation formulas),
+//                 pairs in the order of their body indices, points in manifold order, repeated
+//                 until no touching point approaches (Newton's cradle: (v, 0, 0) -> (0, 0, v));
+//                 a sequence still going after 64 passes per body is finished simultaneously;
+//   simultaneous: all touching points of the group together: impulses P_k >= 0 such that each
+//                 point leaves with un+ >= -e un- (equality where P_k > 0), solved by projected
+//                 Gauss-Seidel to round-off (for two points this is Box2D's block solver's LCP;
+//                 the cradle gives (-v/3, 2v/3, 2v/3)). Friction: coulomb clamps each point's
+//                 tangential impulse to mu P_n; matrix and stick hold the tangential velocity at
+//                 -e ut- and 0. A group of a single point uses the model's own formula.
+//
+// Resting contact. A touching contact with |un| <= v_rest is resting. Its bodies form an island
+// whose contact forces for the rest of the substep (at most kRestStep) are found like the
+// simultaneous impulses with e = 0: normal relative acceleration >= 0, forces >= 0 (and the
+// friction cone). A box on the ground gets exactly m g and does not move at all.
+// v_rest = kZenoTime |g| / 2: a bounce that slow would land within kZenoTime (1e-12 s); the
+// infinitely many bounces of e < 1 accumulate at a finite time and this merges the last ones
+// (at most kZenoTime / (1 - e) of them). It is a time tolerance, not a restitution threshold.
+// Shapes with corners (polygons, boxes) also rest when their bounce would not rise above
+// kTouch (v <= sqrt(4 |g| kTouch)).
+// Known limit: a body resting on one contact that rocks or rolls onto another point of the
+// same pair is caught at the next substep (<= kRestStep), not at the exact instant.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <unordered_set>
+#include <vector>
+
+#include "engine/scene.h"
+
+namespace collide {
+
+template <int D> struct Space;
+
+template <> struct Space<2> {
+    using Vec = Vec2;
+    using Spin = double;  // rad/s about +z
+    using Body = Body2;
+    using Shape = Shape2;
+    using Pose = Pose2;
+    using Manifold = Manifold2;
+    static constexpr int kMaxPoints = 2;
+};
+
+template <> struct Space<3> {
+    using Vec = Vec3;
+    using Spin = Vec3;    // rad/s, world frame
+    using Body = Body3;
+    using Shape = Shape3;
+    using Pose = Pose3;
+    using Manifold = Manifold3;
+    static constexpr int kMaxPoints = 4;
+};
+
+// One collision of one pair of bodies at one instant (all its contact points together).
+template <int D>
+struct Event {
+    using Vec = typename Space<D>::Vec;
+    using Spin = typename Space<D>::Spin;
+    struct Velocity {
+        Vec v;   // m/s
+        Spin w;  // rad/s
+    };
+    double t = 0.0;              // s
+    std::size_t a = 0, b = 0;    // body indices (a < b, or b the dynamic one against a static a)
+    Vec point;                   // m: where the resultant impulse acts (impulse-weighted points)
+    Vec normal;                  // unit, from a into b
+    Vec impulse;                 // N s on b (a receives -impulse)
+    Velocity before_a, before_b, after_a, after_b;
+};
+
+template <int D>
+class World {
+public:
+    using Vec = typename Space<D>::Vec;
+    using Spin = typename Space<D>::Spin;
+    using Body = typename Space<D>::Body;
+    using Shape = typename Space<D>::Shape;
+    using Manifold = typename Space<D>::Manifold;
+
+    explicit World(const Scene& scene);  // throws std::invalid_argument for a wrong dimension
+
+    double time() const { return time_; }
+    const Scene& scene() const { return scene_; }
+    // Every body's state at time().
+    const std::vector<Body>& bodies() const { return bodies_; }
+
+    // Moves to time t (>= time()), resolving every impact on the way; appends the events in
+    // time order. Throws std::runtime_error if more than kMaxEventsPerAdvance happen.
+    void advance_to(double t, std::vector<Event<D>>* events);
+
+    // Replaces a body's state (position, orientation, velocities) at time(); e.g. the
+    // interactive `set` command. Contacts and predictions are recomputed.
+    void set_body(std::size_t i, const Body& body);
+
+    // True while body i is held by a resting contact (an island).
+    bool resting(std::size_t i) const { return island_[i] != 0; }
+
+    struct Counters {
+        std::uint64_t events = 0;       // pair collisions recorded
+        std::uint64_t predictions = 0;  // time-of-impact computations
+        std::uint64_t substeps = 0;
+        std::uint64_t island_solves = 0;
+    };
+    const Counters& counters() const { return counters_; }
+
+    static constexpr double kTouch = 1e-10;     // m: a gap this small is contact
+    static constexpr double kZenoTime = 1e-12;  // s: see "Resting contact"
+    static constexpr double kRestStep = 1e-3;   // s: longest substep while anything rests
+    static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
+
+private:
+    struct Track {                  // per body: its own clock and current free motion
+        double t = 0.0;             // s: the time bodies_[i] is at
+        Vec a;                      // m/s^2 (gravity plus resting forces)
+        Spin alpha;                 // rad/s^2 (resting forces)
+        std::uint32_t version = 0;  // bumped whenever the motion changes
+    };
+    struct Pending {                // a predicted impact of bodies i and j
+        double t;
+        std::uint32_t i, j, vi, vj;  // vi, vj: the versions it was predicted from
+        bool operator>(const Pending& o) const {
+            return t != o.t ? t > o.t : (i != o.i ? i > o.i : j > o.j);
+        }
+    };
+    struct Contact {                // one touching pair at the current instant (a < b)
+        std::size_t a = 0, b = 0;
+        Manifold m;
+        Vec impulse = Vec::Zero();  // summed over its points, on b
+        double weight = 0.0;        // summed normal impulse
+        Vec moment = Vec::Zero();   // summed normal impulse times point
+    };
+    struct PointGoal {              // what solve_points aims at for one contact point
+        double un = 0.0;            // normal velocity to reach (at least, if push_only)
+        bool push_only = true;
+        double mu = 0.0;            // 0: no friction; < 0: unlimited
+        Vec ut = Vec::Zero();       // tangential velocity to reach
+    };
+
+    // Motion.
+    static void move(Body* b, const Track& k, double dt);
+    void drift(std::size_t i, double t);  // bodies_[i] to time t along its motion
+    void set_free(std::size_t i);         // gravity only
+    Vec gravity() const;
+
+    // Broad phase (a uniform grid rebuilt each substep; bodies re-inserted after events).
+    void build_grid(double t0, double t1);
+    void insert(std::size_t i, double t0, double t1);
+    void swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const;
+    template <class F> void for_each_cell(const Vec& lo, const Vec& hi, F&& f) const;
+    template <class F> void for_each_neighbour(std::size_t i, double t, F&& f);
+
+    // Narrow phase.
+    Manifold manifold(std::size_t a, std::size_t b) const;  // both at the same time
+    double normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const;
+    double rest_speed(std::size_t i, std::size_t j) const;
+    bool same_island(std::size_t i, std::size_t j) const;
+    double predict_pair(std::size_t i, std::size_t j, double t, double t1);
+    void predict(std::size_t i, double t);
+
+    // Contacts at one instant.
+    void contacts_of(std::size_t i, double t, std::vector<Contact>* out,
+                     std::unordered_set<std::uint64_t>* known);
+    void resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events);
+    bool resolve_point(Contact* c, int k);
+    void resolve_simultaneous(std::vector<Contact>* contacts);
+    void solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
+                      std::vector<Body>* state);
+    void settle(const std::vector<std::size_t>& reached, double t);
+    void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
+                      double t);
+
+    Scene scene_;
+    std::vector<Body> bodies_;
+    std::vector<Shape> shapes_;
+    std::vector<double> radius_;          // bounding radius (m); 0 for planes
+    std::vector<double> inv_min_moment_;  // 1 / the smallest principal moment (spin bound)
+    std::vector<bool> round_;             // disc or sphere: turning does not move the surface
+    std::vector<bool> plane_;
+    std::vector<std::size_t> planes_;     // indices of the plane bodies
+    std::vector<Track> track_;
+    std::vector<std::uint32_t> island_;   // 0: free; else the id of its island solve
+    std::unordered_map<std::uint32_t, std::vector<std::size_t>> members_;
+    std::uint32_t next_island_ = 1;
+    double time_ = 0.0;
+    double substep_end_ = 0.0;
+    Counters counters_;
+
+    // Grid.
+    Vec grid_lo_;
+    double cell_ = 1.0;
+    std::array<int, 3> dims_{1, 1, 1};
+    std::vector<std::vector<std::uint32_t>> cells_;
+    std::vector<std::size_t> used_cells_;
+    std::vector<std::uint32_t> seen_;
+    std::vector<std::uint32_t> scratch_;
+    std::uint32_t query_ = 0;
+
+    std::vector<Pending> heap_;
+};
+
+using World2 = World<2>;
+using World3 = World<3>;
+using Event2 = Event<2>;
+using Event3 = Event<3>;
+
+}  // namespace collide
