@@ -365,7 +365,11 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
             u_max = std::max(u_max, un);
         }
         if (u_min < -v_rest) return t;  // approaching now: an impact at this instant
-        if (u_max <= v_rest) return same_island(a, b) ? kNever : t;  // resting: form the island
+        // A slow point rests: the pair belongs in an island (its forces), formed now if not yet.
+        bool slow = false;
+        for (int k = 0; k < m.count; ++k)
+            slow = slow || std::abs(normal_speed(a, b, m.points[k], m.normal)) <= v_rest;
+        if (slow && !same_island(a, b)) return t;
     }
     const Body& A = bodies_[a];
     const Body& B = bodies_[b];
@@ -395,27 +399,43 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     // Conservative advancement (engine/toi2d.h): copies of both bodies moved forward.
     Body ca = A, cb = B;
     const double horizon = t1 - t;
-    double s = 0.0;
-    if (touching) {
-        // Parting: skip until the gap has grown past 2 kTouch along the normal.
-        const double un = std::max(u_min, 1e-300), an = m.normal.dot(kb.a - ka.a);
-        const double skip = first_root(-0.5 * an, -un, 2.0 * kTouch) ;
-        const double rise = an >= 0.0 ? 2.0 * kTouch / un : skip;
-        if (!(rise < horizon)) return kNever;
-        s = std::isfinite(rise) ? rise : horizon;
-        move(&ca, ka, s);
-        move(&cb, kb, s);
-    }
     const double spin_a = spin_bound(A, inv_min_moment_[a]) + magnitude(ka.alpha) * horizon;
     const double spin_b = spin_bound(B, inv_min_moment_[b]) + magnitude(kb.alpha) * horizon;
     const double turn_rate = (round_[a] ? 0.0 : spin_a * radius_[a]) + (round_[b] ? 0.0 : spin_b * radius_[b]);
+    // Touching already (resting on a corner, or parting): watch every point of the pair, not
+    // only the nearest, so that a box rocking onto its other corner is caught when it lands.
+    const double margin = touching ? 2.0 * std::max(radius_[a], radius_[b]) + kTouch : kTouch;
+    double s = 0.0;
     for (int it = 0; it < 100000; ++it) {
-        const Manifold mm = collide(shapes_[a], pose_of(ca), shapes_[b], pose_of(cb), kTouch);
-        if (mm.separation <= kTouch) return t + s;
+        const Manifold mm = collide(shapes_[a], pose_of(ca), shapes_[b], pose_of(cb), margin);
+        double gap = mm.count > 0 ? kNever : mm.separation, leave = kNever;
+        for (int k = 0; k < mm.count; ++k) {
+            const double depth = mm.depths[k];
+            if (depth > kTouch) {
+                gap = std::min(gap, depth);
+                continue;
+            }
+            const Vec& p = mm.points[k];
+            const double un = ((cb.v + spin_cross(cb.w, p - cb.position)) -
+                               (ca.v + spin_cross(ca.w, p - ca.position))).dot(mm.normal);
+            if (un < -v_rest) return t + s;                          // lands
+            if (un > v_rest) {
+                // Lifts off: look again when it has left the contact band, or, pulled back,
+                // when it is back where it started (a ballistic arc, 2 un / |an| later).
+                const double an = mm.normal.dot(kb.a - ka.a);
+                leave = std::min(leave, (2.0 * kTouch - depth) / un);
+                if (an < 0.0) leave = std::min(leave, 2.0 * un / -an);
+            }
+        }
+        if (!touching && mm.separation <= kTouch) return t + s;
+        if (!std::isfinite(gap) && !std::isfinite(leave)) return kNever;  // resting, nothing to come
         const double rate = std::max(0.0, -mm.normal.dot(cb.v - ca.v)) +
                             std::max(0.0, -mm.normal.dot(kb.a - ka.a)) * (horizon - s) + turn_rate;
-        if (!(rate > 0.0)) return kNever;
-        const double step = mm.separation / rate;
+        double step = leave;
+        if (std::isfinite(gap)) {
+            if (!(rate > 0.0) && !std::isfinite(leave)) return kNever;
+            if (rate > 0.0) step = std::min(step, gap / rate);
+        }
         if (s + step > horizon) return kNever;
         move(&ca, ka, step);
         move(&cb, kb, step);
@@ -565,6 +585,7 @@ void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<Po
     for (int it = 0; it < kMaxSweeps; ++it) {
         double change = 0.0, scale = 1e-300;
         for (Row& r : rows) {
+            if (!std::isfinite(r.goal.un)) continue;  // a point left out of this solve
             Vec u = rel(r);
             double lam = r.lam - r.mn * (u.dot(r.n) - r.goal.un);
             if (r.goal.push_only) lam = std::max(0.0, lam);
@@ -736,9 +757,9 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         for (std::size_t c = start; c < contacts.size(); ++c) {
             const Contact& ct = contacts[c];
             const double v_rest = rest_speed(ct.a, ct.b);
-            bool rests = true;
+            bool rests = false;  // some point slow (none approaches: impacts came first)
             for (int k = 0; k < ct.m.count; ++k)
-                rests = rests && std::abs(normal_speed(ct.a, ct.b, ct.m.points[k], ct.m.normal)) <= v_rest;
+                rests = rests || std::abs(normal_speed(ct.a, ct.b, ct.m.points[k], ct.m.normal)) <= v_rest;
             if (!rests) continue;
             resting.push_back(ct);
             for (std::size_t k : {ct.a, ct.b}) add(k);
@@ -779,14 +800,20 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
     if (next_island_ == 0) next_island_ = 1;
     members_[id] = members;
     for (std::size_t k : members) island_[k] = id;
+    // The slow points' normal speeds to zero; the others (parting) are left alone.
     std::vector<PointGoal> goals;
-    for (const Contact& c : *contacts)
+    for (const Contact& c : *contacts) {
+        const double v_rest = rest_speed(c.a, c.b);
         for (int k = 0; k < c.m.count; ++k) {
             PointGoal g;
-            g.push_only = false;
             g.mu = 0.0;
+            if (std::abs(normal_speed(c.a, c.b, c.m.points[k], c.m.normal)) <= v_rest)
+                g.push_only = false;
+            else
+                g.un = -kNever;
             goals.push_back(g);
         }
+    }
     std::vector<Contact> merged = *contacts;
     solve_points(&merged, goals, &bodies_);
     const double h = substep_end_ - t;
