@@ -352,42 +352,49 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     drift(j, t);
     ++counters_.predictions;
     const std::size_t a = std::min(i, j), b = std::max(i, j);
-    const Manifold m = manifold(a, b);
     const double v_rest = rest_speed(a, b);
     const Track& ka = track_[a];
     const Track& kb = track_[b];
-    bool touching = m.separation <= kTouch && m.count > 0;
-    double u_min = kNever, u_max = -kNever;
-    if (touching) {
-        for (int k = 0; k < m.count; ++k) {
-            const double un = normal_speed(a, b, m.points[k], m.normal);
-            u_min = std::min(u_min, un);
-            u_max = std::max(u_max, un);
-        }
-        if (u_min < -v_rest) return t;  // approaching now: an impact at this instant
-        // A slow point rests: the pair belongs in an island (its forces), formed now if not yet.
-        bool slow = false;
-        for (int k = 0; k < m.count; ++k)
-            slow = slow || std::abs(normal_speed(a, b, m.points[k], m.normal)) <= v_rest;
-        if (slow && !same_island(a, b)) return t;
-    }
     const Body& A = bodies_[a];
     const Body& B = bodies_[b];
-    // Closed forms for round shapes.
-    if (round_[b] && (plane_[a] || round_[a]) && (plane_[a] || ka.a == kb.a)) {
+    // A round body q against a plane or a round body p moving alike: closed forms.
+    std::size_t p = a, q = b;
+    if (!round_[q]) std::swap(p, q);
+    const bool closed = round_[q] && (plane_[p] || (round_[p] && track_[p].a == track_[q].a));
+    const Body& P = bodies_[p];
+    const Body& Q = bodies_[q];
+    const double gap = !closed      ? 0.0
+                       : plane_[p] ? shapes_[p].normal.dot(Q.position) - shapes_[p].offset - shapes_[q].radius
+                                   : (Q.position - P.position).norm() - shapes_[p].radius - shapes_[q].radius;
+    Manifold m;
+    bool touching = false;
+    if (!closed || gap <= kTouch) {
+        m = manifold(a, b);
+        touching = m.separation <= kTouch && m.count > 0;
+    }
+    if (touching) {
+        bool slow = false;
+        for (int k = 0; k < m.count; ++k) {
+            const double un = normal_speed(a, b, m.points[k], m.normal);
+            if (un < -v_rest) return t;  // approaching now: an impact at this instant
+            slow = slow || std::abs(un) <= v_rest;
+        }
+        // A slow point rests: the pair belongs in an island (its forces), formed now if not yet.
+        if (slow && !same_island(a, b)) return t;
+    }
+    if (closed) {
         double s = kNever;
-        if (plane_[a]) {
+        if (plane_[p]) {
             // gap(s) = n.x(s) - offset - r: a quadratic in s.
-            const Vec n = shapes_[a].normal;
-            const double c = n.dot(B.position) - shapes_[a].offset - shapes_[b].radius;
-            const double bb = n.dot(B.v), aa = 0.5 * n.dot(kb.a);
+            const Vec n = shapes_[p].normal;
+            const double bb = n.dot(Q.v), aa = 0.5 * n.dot(track_[q].a);
             // Touching and parting: the gap returns to zero at the larger root (s = -b/a).
             s = touching ? (aa < 0.0 && bb > 0.0 ? -bb / aa : kNever)
-                         : first_root(aa, bb, std::max(c, 0.0));
+                         : first_root(aa, bb, std::max(gap, 0.0));
         } else {
-            // |d + u s| = ra + rb with d, u the relative position and velocity.
-            const Vec d = B.position - A.position, u = B.v - A.v;
-            const double R = shapes_[a].radius + shapes_[b].radius;
+            // |d + u s| = rp + rq with d, u the relative position and velocity.
+            const Vec d = Q.position - P.position, u = Q.v - P.v;
+            const double R = shapes_[p].radius + shapes_[q].radius;
             const double uu = u.squaredNorm(), du = d.dot(u), c = d.squaredNorm() - R * R;
             if (du < 0.0 && uu > 0.0 && !touching) {
                 const double disc = du * du - uu * c;
