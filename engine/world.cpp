@@ -835,9 +835,21 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         const double mu = scene_.model == Model::coulomb ? scene_.pair_friction(c.a, c.b)
                           : mu_model > 0.0               ? -1.0
                                                          : 0.0;
+        // Two round bodies keep their centres ra + rb apart: d^2|d|/dt^2 = 0 asks for the
+        // normal relative acceleration -|ut|^2 / |d| (ut: the centres' relative velocity across
+        // n), the centripetal part of sliding over a curved partner. Constant forces then
+        // follow the curve to third order in the substep instead of drifting into it.
+        double curve = 0.0;
+        if (round_[c.a] && round_[c.b]) {
+            const Vec d = bodies_[c.b].position - bodies_[c.a].position;
+            const Vec u = bodies_[c.b].v - bodies_[c.a].v;
+            const Vec ut = u - u.dot(c.m.normal) * c.m.normal;
+            curve = ut.squaredNorm() / d.norm();
+        }
         for (int k = 0; k < c.m.count; ++k) {
             PointGoal g;
             g.mu = mu;
+            g.un = -curve * h;
             goals.push_back(g);
         }
     }
