@@ -1,10 +1,13 @@
 // The `collide` command.
+#include <unistd.h>
+
 #include <iostream>
 #include <sstream>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/input_error.h"
+#include "cli/interactive.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
 #include "cli/step.h"
@@ -26,8 +29,13 @@ int run_solve(const std::string& file, const std::string& format, const std::str
     return 0;
 }
 
-int run_step(const std::string& file, const collide::StepOptions& options) {
+int run_step(const std::string& file, const collide::StepOptions& options, bool interactive) {
     const collide::Scene scene = collide::parse_scene_file(file);
+    if (interactive) {
+        collide::run_interactive(scene, {options.json, isatty(0) != 0}, std::cin, std::cout,
+                                 std::cerr);
+        return 0;
+    }
     std::ostringstream out;
     collide::write_steps(scene, options, out);
     std::cout << out.str() << std::flush;
@@ -69,11 +77,20 @@ int main(int argc, char** argv) {
         "step", "Run a scenario file and print its state at every output step (or its events)");
     step->add_option("FILE", scene_file, "scenario (TOML); - reads stdin")->required();
     step->add_flag("--json", step_options.json, "one JSON object per line");
-    step->add_flag("--events", step_options.events,
-                   "only the collision events: time, bodies, point, normal, impulse, velocities "
-                   "before and after");
-    step->footer("Today 1D scenes step (exact impact times; Newton's cradle under both policies).\n"
-                 "Scenario format: see README.md, section 'Scenario files'.");
+    CLI::Option* events = step->add_flag(
+        "--events", step_options.events,
+        "only the collision events: time, bodies, point, normal, impulse, velocities before and "
+        "after");
+    bool interactive = false, no_interactive = false;
+    CLI::Option* interactive_flag = step->add_flag(
+        "--interactive", interactive,
+        "read commands from stdin (step, next, back, show, set, events, help, quit); the default "
+        "when stdin and stdout are terminals and neither --json nor --events is given");
+    step->add_flag("--no-interactive", no_interactive, "print the table even in a terminal")
+        ->excludes(interactive_flag);
+    interactive_flag->excludes(events);
+    step->footer("Steps 1D, 2D and 3D scenes from impact to impact at the exact instants.\n"
+                 "Scenario format and commands: see README.md, section 'Scenario files'.");
 
     try {
         app.parse(argc, argv);
@@ -83,7 +100,20 @@ int main(int argc, char** argv) {
     }
     try {
         if (*solve) return run_solve(file, format, model);
-        if (*step) return run_step(scene_file, step_options);
+        if (*step) {
+            if (interactive && scene_file == "-") {
+                std::cerr << "collide: error: --interactive reads its commands from stdin; give "
+                             "the scenario as a file\n";
+                return kBadInput;
+            }
+            // In a terminal `collide step FILE` starts the command loop; a run that asks for a
+            // format, or writes into a pipe or a file, stays plain, so scripts never wait for
+            // input.
+            const bool loop = interactive ||
+                              (!no_interactive && !step_options.json && !step_options.events &&
+                               scene_file != "-" && isatty(0) && isatty(1));
+            return run_step(scene_file, step_options, loop);
+        }
     } catch (const collide::InputError& e) {
         std::cerr << "collide: error: " << e.what() << "\n";
         return kBadInput;

@@ -1,16 +1,17 @@
 #include "cli/step.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <ostream>
 #include <sstream>
 #include <stdexcept>
+#include <type_traits>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/notation.h"
 #include "engine/diagnostics.h"
-#include "engine/world1d.h"
 
 namespace collide {
 
@@ -18,16 +19,143 @@ namespace {
 
 using nlohmann::ordered_json;
 
-// The output instants t = k output_dt, k = 0 .. K, with the last one at the duration exactly
-// (K = the duration / output_dt rounded, when that is within 1e-9 of an integer, else rounded up).
-std::vector<double> output_times(const Scene& s) {
-    const double steps = s.duration / s.output_dt;
-    const auto K = static_cast<long>(std::abs(steps - std::round(steps)) < 1e-9 ? std::round(steps)
-                                                                               : std::ceil(steps));
-    std::vector<double> t;
-    for (long k = 0; k <= K; ++k) t.push_back(std::min(s.duration, k * s.output_dt));
-    return t;
+// ---- Numbers and vectors ----
+
+ordered_json arr(double x) { return x; }
+ordered_json arr(const Vec2& v) { return ordered_json::array({v.x(), v.y()}); }
+ordered_json arr(const Vec3& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+ordered_json arr(const Quat& q) { return ordered_json::array({q.w(), q.x(), q.y(), q.z()}); }
+
+std::string txt(double x) { return notation::num_text(x); }
+std::string txt(const Vec2& v) { return "(" + txt(v.x()) + ", " + txt(v.y()) + ")"; }
+std::string txt(const Vec3& v) {
+    return "(" + txt(v.x()) + ", " + txt(v.y()) + ", " + txt(v.z()) + ")";
 }
+std::string txt(const Quat& q) {
+    return "(" + txt(q.w()) + ", " + txt(q.x()) + ", " + txt(q.y()) + ", " + txt(q.z()) + ")";
+}
+
+// ---- One body ----
+
+ordered_json body_json(const Body1& b) { return {{"x", b.position}, {"v", b.v}}; }
+ordered_json body_json(const Body2& b) {
+    return {{"x", arr(b.position)}, {"v", arr(b.v)}, {"w", b.w}, {"angle", b.angle}};
+}
+ordered_json body_json(const Body3& b) {
+    return {{"x", arr(b.position)}, {"v", arr(b.v)}, {"w", arr(b.w)},
+            {"orientation", arr(b.orientation)}};
+}
+
+std::string body_text(const Body1& b) {
+    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s";
+}
+std::string body_text(const Body2& b) {
+    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s   angle " + txt(b.angle) +
+           " rad   w " + txt(b.w) + " rad/s";
+}
+std::string body_text(const Body3& b) {
+    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s   orientation " +
+           txt(b.orientation) + "   w " + txt(b.w) + " rad/s";
+}
+
+// Potential energy in uniform gravity, zero at the origin: -m g . x (dynamic bodies).
+double potential_energy(const Scene& s, const Body1& b) {
+    return -b.mass * s.gravity.x() * b.position;
+}
+double potential_energy(const Scene& s, const Body2& b) {
+    return -b.mass * s.gravity.head<2>().dot(b.position);
+}
+double potential_energy(const Scene& s, const Body3& b) {
+    return -b.mass * s.gravity.dot(b.position);
+}
+
+template <class Body>
+double potential_energy(const Scene& s, const std::vector<Body>& bodies) {
+    double potential = 0.0;
+    for (const Body& b : bodies)
+        if (!b.is_static) potential += potential_energy(s, b);
+    return potential;
+}
+
+// ---- One state, one event ----
+
+template <class Body>
+std::string state_json_of(const Scene& s, double t, const std::vector<Body>& bodies,
+                          std::size_t only) {
+    ordered_json j;
+    j["t"] = t;
+    ordered_json named = ordered_json::object();
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (only == kAllBodies || only == i) named[s.bodies[i].name] = body_json(bodies[i]);
+    j["bodies"] = named;
+    const auto sums = totals(bodies);
+    j["kinetic_energy"] = sums.kinetic_energy;
+    j["potential_energy"] = potential_energy(s, bodies);
+    j["momentum"] = arr(sums.momentum);
+    if constexpr (!std::is_same_v<Body, Body1>) j["angular_momentum"] = arr(sums.angular_momentum);
+    return j.dump();
+}
+
+template <class Body>
+std::string state_text_of(const Scene& s, double t, const std::vector<Body>& bodies,
+                          std::size_t only) {
+    std::size_t width = 0;
+    for (const SceneBody& b : s.bodies) width = std::max(width, b.name.size());
+    std::ostringstream out;
+    out << "t = " << txt(t) << " s\n";
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        if (only != kAllBodies && only != i) continue;
+        out << "  " << std::left << std::setw(static_cast<int>(width)) << s.bodies[i].name
+            << std::right << "  " << (bodies[i].is_static ? "static" : body_text(bodies[i])) << "\n";
+    }
+    if (only == kAllBodies) {
+        const auto sums = totals(bodies);
+        out << "  kinetic " << txt(sums.kinetic_energy) << " J   total "
+            << txt(sums.kinetic_energy + potential_energy(s, bodies)) << " J   momentum "
+            << txt(sums.momentum) << " N s";
+        if constexpr (!std::is_same_v<Body, Body1>)
+            out << "   angular momentum " << txt(sums.angular_momentum) << " kg m^2/s";
+        out << "\n";
+    }
+    return out.str();
+}
+
+template <int D>
+ordered_json velocity_json(const typename Event<D>::Velocity& u) {
+    return {{"v", arr(u.v)}, {"w", arr(u.w)}};
+}
+
+template <int D>
+std::string event_json_of(const Scene& s, const Event<D>& e) {
+    const std::string& a = s.bodies[e.a].name;
+    const std::string& b = s.bodies[e.b].name;
+    ordered_json j;
+    j["t"] = e.t;
+    j["a"] = a;
+    j["b"] = b;
+    j["point"] = arr(e.point);
+    j["normal"] = arr(e.normal);
+    j["impulse"] = arr(e.impulse);
+    j["before"] = {{a, velocity_json<D>(e.before_a)}, {b, velocity_json<D>(e.before_b)}};
+    j["after"] = {{a, velocity_json<D>(e.after_a)}, {b, velocity_json<D>(e.after_b)}};
+    return j.dump();
+}
+
+template <int D>
+std::string event_text_of(const Scene& s, const Event<D>& e) {
+    const std::string& a = s.bodies[e.a].name;
+    const std::string& b = s.bodies[e.b].name;
+    const auto change = [](const std::string& name, const typename Event<D>::Velocity& before,
+                           const typename Event<D>::Velocity& after) {
+        return name + " v " + txt(before.v) + " -> " + txt(after.v) + " m/s, w " + txt(before.w) +
+               " -> " + txt(after.w) + " rad/s";
+    };
+    return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at " + txt(e.point) + " m, normal " +
+           txt(e.normal) + ", impulse on " + b + " " + txt(e.impulse) + " N s; " +
+           change(a, e.before_a, e.after_a) + "; " + change(b, e.before_b, e.after_b);
+}
+
+// ---- The table ----
 
 std::string fixed(double x, int width) {
     std::ostringstream o;
@@ -35,7 +163,7 @@ std::string fixed(double x, int width) {
     return o.str();
 }
 
-void table_header(const Scene& s, std::ostream& out) {
+void table_header_1d(const Scene& s, std::ostream& out) {
     out << std::setw(10) << "t (s)";
     for (const SceneBody& b : s.bodies) {
         out << "  " << std::setw(12) << (b.name + ".x") << std::setw(12) << (b.name + ".v");
@@ -44,69 +172,220 @@ void table_header(const Scene& s, std::ostream& out) {
         << "momentum (N s)" << "\n";
 }
 
-}  // namespace
+void table_row_1d(const Scene& s, double t, const std::vector<Body1>& bodies, std::ostream& out) {
+    const Totals1 sums = totals(bodies);
+    out << fixed(t, 10);
+    for (const Body1& b : bodies) out << "  " << fixed(b.position, 12) << fixed(b.v, 12);
+    out << fixed(sums.kinetic_energy, 14)
+        << fixed(sums.kinetic_energy + potential_energy(s, bodies), 14)
+        << fixed(sums.momentum, 16) << "\n";
+}
 
-void write_steps(const Scene& s, const StepOptions& options, std::ostream& out) {
-    if (s.dimension != 1)
-        throw std::runtime_error("stepping " + std::to_string(s.dimension) +
-                                 "D scenes is not available yet (1D scenes step today)");
-    World1 world(s);
-    std::vector<Event1> events;
-    if (!options.events && !options.json) table_header(s, out);
-    for (double t : output_times(s)) {
-        const std::size_t first = events.size();
-        world.advance_to(t, &events);
-        if (options.events) {
-            for (std::size_t k = first; k < events.size(); ++k) {
-                const Event1& e = events[k];
-                const std::string& a = s.bodies[e.a].name;
-                const std::string& b = s.bodies[e.b].name;
-                if (options.json) {
-                    ordered_json j;
-                    j["t"] = e.t;
-                    j["a"] = a;
-                    j["b"] = b;
-                    j["point"] = e.point;
-                    j["normal"] = 1.0;
-                    j["impulse"] = e.impulse;
-                    j["before"] = {{a, {{"v", e.va_before}}}, {b, {{"v", e.vb_before}}}};
-                    j["after"] = {{a, {{"v", e.va_after}}}, {b, {{"v", e.vb_after}}}};
-                    out << j.dump() << "\n";
-                } else {
-                    out << "t = " << notation::num_text(e.t) << " s: " << a << " hits " << b
-                        << " at x = " << notation::num_text(e.point) << " m, impulse on " << b
-                        << " " << notation::num_text(e.impulse) << " N s; " << a << " v "
-                        << notation::num_text(e.va_before) << " -> " << notation::num_text(e.va_after)
-                        << " m/s, " << b << " v " << notation::num_text(e.vb_before) << " -> "
-                        << notation::num_text(e.vb_after) << " m/s\n";
-                }
+// A table whose columns fit their widest entry, the components of vectors aligned too; a wider
+// gap opens each body's group of columns. 2D and 3D rows are too varied for fixed widths.
+class Table {
+public:
+    using Cell = std::vector<std::string>;  // one number, or a vector's components
+
+    void column(const std::string& header, bool group) { columns_.push_back({header, group}); }
+    void row(std::vector<Cell> cells) { rows_.push_back(std::move(cells)); }
+
+    void write(std::ostream& out) const {
+        std::vector<std::vector<std::size_t>> part(columns_.size());  // component widths
+        std::vector<std::size_t> width(columns_.size());
+        for (std::size_t c = 0; c < columns_.size(); ++c) {
+            for (const auto& r : rows_) {
+                part[c].resize(r[c].size());
+                for (std::size_t k = 0; k < r[c].size(); ++k)
+                    part[c][k] = std::max(part[c][k], r[c][k].size());
             }
-            continue;
+            width[c] = std::max(content_width(part[c]), columns_[c].header.size());
         }
-        const Totals1 totals_now = totals(world.bodies());
-        // Potential energy in uniform gravity, zero at x = 0: -m g . x (dynamic bodies).
-        double potential = 0.0;
-        for (const Body1& b : world.bodies())
-            if (!b.is_static) potential -= b.mass * s.gravity.x() * b.position;
-        if (options.json) {
-            ordered_json j;
-            j["t"] = t;
-            ordered_json bodies = ordered_json::object();
-            for (std::size_t i = 0; i < s.bodies.size(); ++i)
-                bodies[s.bodies[i].name] = {{"x", world.bodies()[i].position}, {"v", world.bodies()[i].v}};
-            j["bodies"] = bodies;
-            j["kinetic_energy"] = totals_now.kinetic_energy;
-            j["potential_energy"] = potential;
-            j["momentum"] = totals_now.momentum;
-            out << j.dump() << "\n";
-        } else {
-            out << fixed(t, 10);
-            for (const Body1& b : world.bodies()) out << "  " << fixed(b.position, 12) << fixed(b.v, 12);
-            out << fixed(totals_now.kinetic_energy, 14)
-                << fixed(totals_now.kinetic_energy + potential, 14)
-                << fixed(totals_now.momentum, 16) << "\n";
+        for (std::size_t c = 0; c < columns_.size(); ++c)
+            out << gap(c) << std::setw(static_cast<int>(width[c])) << columns_[c].header;
+        out << "\n";
+        for (const auto& r : rows_) {
+            for (std::size_t c = 0; c < columns_.size(); ++c) {
+                out << gap(c) << std::string(width[c] - content_width(part[c]), ' ');
+                if (r[c].size() == 1) {
+                    out << std::setw(static_cast<int>(part[c][0])) << r[c][0];
+                    continue;
+                }
+                for (std::size_t k = 0; k < r[c].size(); ++k)
+                    out << (k ? ", " : "(") << std::setw(static_cast<int>(part[c][k])) << r[c][k];
+                out << ")";
+            }
+            out << "\n";
         }
     }
+
+private:
+    struct Column {
+        std::string header;
+        bool group;
+    };
+    static std::size_t content_width(const std::vector<std::size_t>& parts) {
+        std::size_t w = 0;
+        for (std::size_t p : parts) w += p;
+        return parts.size() == 1 ? w : w + 2 * parts.size();  // "(", ", " between, ")"
+    }
+    std::string gap(std::size_t c) const { return c == 0 ? "" : columns_[c].group ? "    " : "  "; }
+
+    std::vector<Column> columns_;
+    std::vector<std::vector<Cell>> rows_;
+};
+
+Table::Cell cell(double x) { return {txt(x)}; }
+template <class V>
+Table::Cell cell(const V& v) {
+    Table::Cell c;
+    for (int k = 0; k < v.size(); ++k) c.push_back(txt(v[k]));
+    return c;
+}
+
+// Per moving body: x, v, (2D) angle, w; static bodies never move and are left out.
+std::vector<Table::Cell> body_cells(const Body2& b) {
+    return {cell(b.position), cell(b.v), cell(b.angle), cell(b.w)};
+}
+std::vector<Table::Cell> body_cells(const Body3& b) {
+    return {cell(b.position), cell(b.v), cell(b.w)};
+}
+
+template <int D>
+Table table_columns(const Scene& s) {
+    Table table;
+    table.column("t (s)", false);
+    for (const SceneBody& b : s.bodies) {
+        if (b.is_static()) continue;
+        table.column(b.name + ".x", true);
+        table.column(b.name + ".v", false);
+        if (D == 2) table.column(b.name + ".angle", false);
+        table.column(b.name + ".w", false);
+    }
+    table.column("kinetic (J)", true);
+    table.column("total (J)", false);
+    table.column("momentum (N s)", false);
+    return table;
+}
+
+template <class Body>
+std::vector<Table::Cell> table_row(const Scene& s, double t, const std::vector<Body>& bodies) {
+    std::vector<Table::Cell> row{cell(t)};
+    for (const Body& b : bodies) {
+        if (b.is_static) continue;
+        for (Table::Cell& c : body_cells(b)) row.push_back(std::move(c));
+    }
+    const auto sums = totals(bodies);
+    row.push_back(cell(sums.kinetic_energy));
+    row.push_back(cell(sums.kinetic_energy + potential_energy(s, bodies)));
+    row.push_back(cell(sums.momentum));
+    return row;
+}
+
+// ---- The run ----
+
+template <int D>
+void write_run(const Scene& s, const StepOptions& options, std::ostream& out) {
+    typename Stepping<D>::World world(s);
+    std::vector<typename Stepping<D>::Event> events;
+    const bool table = !options.events && !options.json;
+    Table rows;  // 2D and 3D: written at the end, when the column widths are known
+    if (table && D == 1) table_header_1d(s, out);
+    if (table && D > 1) rows = table_columns<D>(s);
+    for (double t : output_times(s)) {
+        events.clear();
+        world.advance_to(t, &events);
+        if (options.events) {
+            for (const auto& e : events)
+                out << (options.json ? event_json(s, e) : event_text(s, e)) << "\n";
+        } else if (options.json) {
+            out << state_json(s, t, world.bodies()) << "\n";
+        } else if constexpr (D == 1) {
+            table_row_1d(s, t, world.bodies(), out);
+        } else {
+            rows.row(table_row(s, t, world.bodies()));
+        }
+    }
+    if (table && D > 1) rows.write(out);
+}
+
+}  // namespace
+
+std::vector<double> output_times(const Scene& s) {
+    // K = the duration / output_dt rounded, when that is within 1e-9 of an integer, else rounded up.
+    const double steps = s.duration / s.output_dt;
+    const auto K = static_cast<long>(std::abs(steps - std::round(steps)) < 1e-9 ? std::round(steps)
+                                                                               : std::ceil(steps));
+    std::vector<double> t;
+    for (long k = 0; k <= K; ++k) t.push_back(std::min(s.duration, k * s.output_dt));
+    return t;
+}
+
+void SettableWorld1::advance_to(double t, std::vector<Event1>* events) {
+    const std::size_t first = events->size();
+    world_.advance_to(t - start_, events);
+    for (std::size_t k = first; k < events->size(); ++k) (*events)[k].t += start_;
+}
+
+void SettableWorld1::set_body(std::size_t i, const Body1& body) {
+    Scene now = world_.scene();
+    for (std::size_t j = 0; j < now.bodies.size(); ++j) now.bodies[j].body1 = world_.bodies()[j];
+    now.bodies[i].body1 = body;
+    start_ = time();
+    world_ = World1(now);
+}
+
+std::string state_json(const Scene& s, double t, const std::vector<Body1>& b, std::size_t only) {
+    return state_json_of(s, t, b, only);
+}
+std::string state_json(const Scene& s, double t, const std::vector<Body2>& b, std::size_t only) {
+    return state_json_of(s, t, b, only);
+}
+std::string state_json(const Scene& s, double t, const std::vector<Body3>& b, std::size_t only) {
+    return state_json_of(s, t, b, only);
+}
+std::string state_text(const Scene& s, double t, const std::vector<Body1>& b, std::size_t only) {
+    return state_text_of(s, t, b, only);
+}
+std::string state_text(const Scene& s, double t, const std::vector<Body2>& b, std::size_t only) {
+    return state_text_of(s, t, b, only);
+}
+std::string state_text(const Scene& s, double t, const std::vector<Body3>& b, std::size_t only) {
+    return state_text_of(s, t, b, only);
+}
+
+std::string event_json(const Scene& s, const Event1& e) {
+    const std::string& a = s.bodies[e.a].name;
+    const std::string& b = s.bodies[e.b].name;
+    ordered_json j;
+    j["t"] = e.t;
+    j["a"] = a;
+    j["b"] = b;
+    j["point"] = e.point;
+    j["normal"] = 1.0;
+    j["impulse"] = e.impulse;
+    j["before"] = {{a, {{"v", e.va_before}}}, {b, {{"v", e.vb_before}}}};
+    j["after"] = {{a, {{"v", e.va_after}}}, {b, {{"v", e.vb_after}}}};
+    return j.dump();
+}
+std::string event_json(const Scene& s, const Event2& e) { return event_json_of<2>(s, e); }
+std::string event_json(const Scene& s, const Event3& e) { return event_json_of<3>(s, e); }
+
+std::string event_text(const Scene& s, const Event1& e) {
+    const std::string& a = s.bodies[e.a].name;
+    const std::string& b = s.bodies[e.b].name;
+    return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at x = " + txt(e.point) +
+           " m, impulse on " + b + " " + txt(e.impulse) + " N s; " + a + " v " + txt(e.va_before) +
+           " -> " + txt(e.va_after) + " m/s, " + b + " v " + txt(e.vb_before) + " -> " +
+           txt(e.vb_after) + " m/s";
+}
+std::string event_text(const Scene& s, const Event2& e) { return event_text_of<2>(s, e); }
+std::string event_text(const Scene& s, const Event3& e) { return event_text_of<3>(s, e); }
+
+void write_steps(const Scene& s, const StepOptions& options, std::ostream& out) {
+    if (s.dimension == 1) write_run<1>(s, options, out);
+    else if (s.dimension == 2) write_run<2>(s, options, out);
+    else write_run<3>(s, options, out);
 }
 
 }  // namespace collide

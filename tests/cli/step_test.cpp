@@ -1,5 +1,5 @@
-// `collide step` output: the cradle lesson's states and events against the closed forms, in
-// every format.
+// `collide step` output: the cradle lesson's states and events, and 2D and 3D flights and
+// impacts, against the closed forms, in every format.
 #include <cmath>
 #include <sstream>
 
@@ -106,12 +106,202 @@ TEST(Step, BouncingBallLessonComesToRest) {
     }
 }
 
-TEST(Step, OtherDimensionsSaySoClearly) {
-    Scene s;
-    s.dimension = 2;
+// ---- 2D and 3D ----
+
+// A disc thrown in 2D gravity with nothing to hit, m = 2 kg, r = 0.1 m (I = m r^2 / 2 = 0.01).
+const char* kThrow2d = R"(
+[scene]
+dimension = 2
+gravity = [0.0, -9.81]
+duration = 1.0
+output_dt = 0.125
+
+[[body]]
+name = "ball"
+shape = "disc"
+radius = 0.1
+mass = 2.0
+position = [0.5, 3.0]
+angle = 0.25
+v = [1.5, 4.0]
+w = -2.0
+)";
+
+// Two discs head on along x (r = 0.1 m, 1 kg at 2 m/s and 2 kg at -1 m/s, centres 1 m apart):
+// the 0.8 m gap closes at 3 m/s.
+std::string head_on(double e) {
+    return R"(
+[scene]
+dimension = 2
+duration = 0.5
+output_dt = 0.1
+restitution = )" + std::to_string(e) + R"(
+
+[[body]]
+name = "left"
+shape = "disc"
+radius = 0.1
+mass = 1.0
+position = [0.0, 0.0]
+v = [2.0, 0.0]
+
+[[body]]
+name = "right"
+shape = "disc"
+radius = 0.1
+mass = 2.0
+position = [1.0, 0.0]
+v = [-1.0, 0.0]
+)";
+}
+
+// A sphere (2 kg, r = 0.1 m) spinning about y, its bottom 1 m above the ground, e = 0.5.
+const char* kDrop3d = R"(
+[scene]
+dimension = 3
+gravity = [0.0, -9.81, 0.0]
+duration = 1.0
+output_dt = 0.05
+restitution = 0.5
+
+[[body]]
+name = "ground"
+shape = "plane"
+normal = [0.0, 1.0, 0.0]
+offset = 0.0
+
+[[body]]
+name = "ball"
+shape = "sphere"
+radius = 0.1
+mass = 2.0
+position = [0.0, 1.1, 0.0]
+w = [0.0, 3.0, 0.0]
+)";
+
+std::vector<double> vec(const nlohmann::json& j) { return j.get<std::vector<double>>(); }
+
+TEST(Step, FreeFlight2dFollowsTheClosedForm) {
+    const auto states = lines(parse_scene_text(kThrow2d, "throw.toml"), {true, false});
+    ASSERT_EQ(states.size(), 9u);
+    for (std::size_t k = 0; k < states.size(); ++k) {
+        const auto& st = states[k];
+        const double t = st["t"].get<double>();
+        EXPECT_DOUBLE_EQ(t, 0.125 * static_cast<double>(k));
+        const auto& ball = st["bodies"]["ball"];
+        const auto x = vec(ball["x"]), v = vec(ball["v"]);
+        ASSERT_EQ(x.size(), 2u);
+        ASSERT_EQ(v.size(), 2u);
+        EXPECT_NEAR(x[0], 0.5 + 1.5 * t, 1e-12);
+        EXPECT_NEAR(x[1], 3.0 + 4.0 * t - 9.81 * t * t / 2, 1e-12);
+        EXPECT_NEAR(v[0], 1.5, 1e-12);
+        EXPECT_NEAR(v[1], 4.0 - 9.81 * t, 1e-12);
+        EXPECT_DOUBLE_EQ(ball["w"].get<double>(), -2.0);
+        EXPECT_NEAR(ball["angle"].get<double>(), 0.25 - 2.0 * t, 1e-12);
+        const double ke = 0.5 * 2.0 * (v[0] * v[0] + v[1] * v[1]) + 0.5 * 0.01 * 4.0;
+        EXPECT_NEAR(st["kinetic_energy"].get<double>(), ke, 1e-12);
+        EXPECT_NEAR(st["potential_energy"].get<double>(), 2.0 * 9.81 * x[1], 1e-12);
+        EXPECT_NEAR(vec(st["momentum"])[1], 2.0 * v[1], 1e-12);
+        // About the origin: I w + m (x vy - y vx).
+        EXPECT_NEAR(st["angular_momentum"].get<double>(),
+                    0.01 * -2.0 + 2.0 * (x[0] * v[1] - x[1] * v[0]), 1e-12);
+    }
+}
+
+// Impact at t = 0.8 / 3; the impulse on the right disc is (1 + e) mu u along +x with the reduced
+// mass mu = 2/3 kg and u = 3 m/s; afterwards v_left = 2 - J, v_right = -1 + J / 2.
+TEST(Step, HeadOnDiscsEventsJson) {
+    for (double e : {1.0, 0.5}) {
+        const Scene s = parse_scene_text(head_on(e), "head-on.toml");
+        const auto events = lines(s, {true, true});
+        ASSERT_EQ(events.size(), 1u);
+        const auto& ev = events[0];
+        const double t = 0.8 / 3.0, J = (1.0 + e) * 2.0 / 3.0 * 3.0;
+        EXPECT_NEAR(ev["t"].get<double>(), t, 1e-9);
+        EXPECT_EQ(ev["a"], "left");
+        EXPECT_EQ(ev["b"], "right");
+        EXPECT_NEAR(vec(ev["point"])[0], 0.1 + 2.0 * t, 1e-9);
+        EXPECT_NEAR(vec(ev["point"])[1], 0.0, 1e-12);
+        EXPECT_NEAR(vec(ev["normal"])[0], 1.0, 1e-12);
+        EXPECT_NEAR(vec(ev["impulse"])[0], J, 1e-9);
+        EXPECT_NEAR(vec(ev["impulse"])[1], 0.0, 1e-12);
+        EXPECT_NEAR(vec(ev["before"]["left"]["v"])[0], 2.0, 1e-12);
+        EXPECT_NEAR(vec(ev["before"]["right"]["v"])[0], -1.0, 1e-12);
+        EXPECT_NEAR(vec(ev["after"]["left"]["v"])[0], 2.0 - J, 1e-9);
+        EXPECT_NEAR(vec(ev["after"]["right"]["v"])[0], -1.0 + J / 2.0, 1e-9);
+        EXPECT_EQ(ev["after"]["right"]["w"].get<double>(), 0.0);
+
+        // The states: momentum 0 throughout; kinetic energy 3 J before, e^2 of the relative
+        // part (mu u^2 / 2 = 3 J here, as the total momentum is 0) after.
+        for (const auto& st : lines(s, {true, false})) {
+            EXPECT_NEAR(vec(st["momentum"])[0], 0.0, 1e-9);
+            const double ke = st["t"].get<double>() < t ? 3.0 : 3.0 * e * e;
+            EXPECT_NEAR(st["kinetic_energy"].get<double>(), ke, 1e-9);
+        }
+    }
+}
+
+TEST(Step, EventText2dNamesBodiesAndVectors) {
     std::ostringstream out;
-    EXPECT_THROW(write_steps(s, {}, out), std::runtime_error);
-    EXPECT_TRUE(out.str().empty());
+    write_steps(parse_scene_text(head_on(1.0), "head-on.toml"), {false, true}, out);
+    const std::string text = out.str();
+    for (const char* part : {"t = 0.266667 s: left hits right at (0.633333, ", "normal (1, 0)",
+                             "impulse on right (4, 0) N s", "left v (2, 0) -> (-2, 0) m/s, w 0 -> 0",
+                             "right v (-1, 0) -> (1, 0) m/s"})
+        EXPECT_NE(text.find(part), std::string::npos) << part << " in " << text;
+}
+
+// First impact after a 1 m fall: t = sqrt(2 / g) at v = sqrt(2 g); the ground gives the ball
+// m (1 + e) v upwards. The spin about y is untouched: orientation (cos 1.5t, 0, sin 1.5t, 0).
+TEST(Step, DroppedSphere3d) {
+    const Scene s = parse_scene_text(kDrop3d, "drop.toml");
+    const double t1 = std::sqrt(2.0 / 9.81), v1 = std::sqrt(2.0 * 9.81);
+    const auto events = lines(s, {true, true});
+    ASSERT_FALSE(events.empty());
+    const auto& ev = events[0];
+    EXPECT_NEAR(ev["t"].get<double>(), t1, 1e-9);
+    EXPECT_EQ(ev["a"], "ground");
+    EXPECT_EQ(ev["b"], "ball");
+    ASSERT_EQ(vec(ev["impulse"]).size(), 3u);
+    EXPECT_NEAR(vec(ev["impulse"])[1], 2.0 * 1.5 * v1, 1e-8);
+    EXPECT_NEAR(vec(ev["after"]["ball"]["v"])[1], 0.5 * v1, 1e-8);
+    EXPECT_EQ(vec(ev["after"]["ball"]["w"]), (std::vector<double>{0.0, 3.0, 0.0}));
+
+    for (const auto& st : lines(s, {true, false})) {
+        const auto& ball = st["bodies"]["ball"];
+        EXPECT_FALSE(ball.contains("angle"));
+        const auto q = vec(ball["orientation"]);
+        ASSERT_EQ(q.size(), 4u);
+        ASSERT_EQ(vec(ball["w"]).size(), 3u);
+        ASSERT_EQ(vec(st["angular_momentum"]).size(), 3u);
+        const double t = st["t"].get<double>();
+        EXPECT_NEAR(q[0], std::cos(1.5 * t), 1e-9);
+        EXPECT_NEAR(q[2], std::sin(1.5 * t), 1e-9);
+        if (t < t1) {
+            EXPECT_NEAR(vec(ball["x"])[1], 1.1 - 9.81 * t * t / 2, 1e-12);
+        }
+    }
+}
+
+// One row per output step under one header; the moving bodies have a column group each, the
+// static ground none, and the columns line up (every line equally long).
+TEST(Step, Table2dAnd3d) {
+    using Columns = std::vector<std::string>;
+    for (const auto& [text, columns] :
+         {std::pair<std::string, Columns>{kThrow2d, {"ball.x", "ball.v", "ball.angle", "ball.w"}},
+          {kDrop3d, {"ball.x", "ball.v", "ball.w"}}}) {
+        const Scene s = parse_scene_text(text, "scene.toml");
+        std::ostringstream out;
+        write_steps(s, {}, out);
+        std::istringstream in(out.str());
+        std::vector<std::string> rows;
+        for (std::string line; std::getline(in, line);) rows.push_back(line);
+        ASSERT_EQ(rows.size(), output_times(s).size() + 1);
+        for (const std::string& c : columns) EXPECT_NE(rows[0].find(c), std::string::npos) << c;
+        EXPECT_EQ(rows[0].find("ground"), std::string::npos);
+        EXPECT_EQ(rows[0].find("angle") != std::string::npos, s.dimension == 2);
+        for (const std::string& r : rows) EXPECT_EQ(r.size(), rows[0].size()) << r;
+    }
 }
 
 }  // namespace
