@@ -5,6 +5,13 @@
 namespace collide {
 
 Mat3 inertia_pseudo_inverse(const Mat3& inertia) {
+    if (inertia.isDiagonal(0.0)) {  // principal axes (boxes, spheres, rods): no eigen-solve
+        const double tiny = 1e-14 * inertia.diagonal().cwiseAbs().maxCoeff();
+        Mat3 inv = Mat3::Zero();
+        for (int i = 0; i < 3; ++i)
+            if (inertia(i, i) > tiny) inv(i, i) = 1.0 / inertia(i, i);
+        return inv;
+    }
     Eigen::SelfAdjointEigenSolver<Mat3> eig(inertia);
     const Vec3& lambda = eig.eigenvalues();
     const double tiny = 1e-14 * lambda.cwiseAbs().maxCoeff();
