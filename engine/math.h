@@ -5,6 +5,9 @@
 //   angles and angular velocities positive counter-clockwise (about +z).
 #pragma once
 
+#include <cmath>
+#include <limits>
+
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
@@ -36,5 +39,20 @@ inline Vec2 cross(double w, const Vec2& r) { return Vec2(-w * r.y(), w * r.x());
 // perp(r) = (-ry, rx): the direction in which a counter-clockwise spin moves the point r.
 // r x P = perp(r) . P, so perp(r) is the 2D lever of an impulse P applied at r.
 inline Vec2 perp(const Vec2& r) { return Vec2(-r.y(), r.x()); }
+
+// Smallest t > 0 with c + b t + a t^2 = 0 (c >= 0: a gap now; b, 2a: its rate and acceleration),
+// or +infinity: when a gap closing at constant acceleration first reaches zero. Stable roots:
+// q = -(b + sgn(b) sqrt(b^2 - 4ac)) / 2, t1 = q / a, t2 = c / q.
+inline double first_root(double a, double b, double c) {
+    constexpr double never = std::numeric_limits<double>::infinity();
+    if (a == 0.0) return b < 0.0 ? -c / b : never;
+    const double disc = b * b - 4.0 * a * c;
+    if (disc < 0.0) return never;
+    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
+    double best = never;
+    for (double t : {q / a, q != 0.0 ? c / q : never})
+        if (t > 0.0 && t < best) best = t;
+    return best;
+}
 
 }  // namespace collide

@@ -107,18 +107,6 @@ int tangents(const Vec3& n, std::array<Vec3, 2>* t) {
     return 2;
 }
 
-// Smallest s > 0 with c + b s + a s^2 = 0 (c >= 0 the gap now), or kNever.
-double first_root(double a, double b, double c) {
-    if (a == 0.0) return b < 0.0 ? -c / b : kNever;
-    const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) return kNever;
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    double best = kNever;
-    for (double s : {q / a, q != 0.0 ? c / q : kNever})
-        if (s > 0.0 && s < best) best = s;
-    return best;
-}
-
 double response_impulse_norm(const Vec2& P) { return P.norm(); }
 double response_impulse_norm(const Vec3& P) { return P.norm(); }
 

@@ -16,19 +16,6 @@ namespace {
 constexpr double kNever = std::numeric_limits<double>::infinity();
 constexpr std::size_t kMaxEventsPerAdvance = 1000000;
 
-// Smallest t > 0 with c + b t + a t^2 = 0 (c > 0 is the gap now), or kNever.
-double first_root(double a, double b, double c) {
-    if (a == 0.0) return b < 0.0 ? -c / b : kNever;
-    const double disc = b * b - 4.0 * a * c;
-    if (disc < 0.0) return kNever;
-    // Stable roots: q = -(b + sgn(b) sqrt(disc)) / 2, t1 = q / a, t2 = c / q.
-    const double q = -0.5 * (b + std::copysign(std::sqrt(disc), b));
-    double best = kNever;
-    for (double t : {q / a, q != 0.0 ? c / q : kNever})
-        if (t > 0.0 && t < best) best = t;
-    return best;
-}
-
 }  // namespace
 
 World1::World1(const Scene& scene) : scene_(scene) {
