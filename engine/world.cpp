@@ -107,8 +107,6 @@ int tangents(const Vec3& n, std::array<Vec3, 2>* t) {
     return 2;
 }
 
-double response_impulse_norm(const Vec2& P) { return P.norm(); }
-double response_impulse_norm(const Vec3& P) { return P.norm(); }
 
 }  // namespace
 
@@ -773,7 +771,7 @@ void World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     }
 
     for (const Contact& c : contacts) {
-        if (!(c.weight > 0.0) && response_impulse_norm(c.impulse) == 0.0) continue;
+        if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;
         Event<D> ev;
         ev.t = t;
         ev.a = c.a;

@@ -12,7 +12,9 @@
 // found to kTouch (1e-10 m):
 //   disc/sphere against disc/sphere (same acceleration) or a plane: the smallest root of a
 //     quadratic, in closed form;
-//   any other pair: conservative advancement (engine/toi2d.h explains the bound).
+//   any other pair: conservative advancement (engine/toi2d.h explains the bound), which also
+//     tries longer steps from the gap's observed closing rate and keeps one only when the gap
+//     at its end is still open (a corner turning slowly near the ground would crawl).
 // Each body keeps its own clock; an event moves only the bodies it touches (event-driven
 // simulation), and predictions invalidated by an event are discarded.
 //
@@ -24,8 +26,9 @@
 //                 a sequence still going after 64 passes per body is finished simultaneously;
 //   simultaneous: all touching points of the group together: impulses P_k >= 0 such that each
 //                 point leaves with un+ >= -e un- (equality where P_k > 0), solved by projected
-//                 Gauss-Seidel to round-off (for two points this is Box2D's block solver's LCP;
-//                 the cradle gives (-v/3, 2v/3, 2v/3)). Friction: coulomb clamps each point's
+//                 Gauss-Seidel to 1e-13 of the largest impulse (for two points this is the LCP
+//                 of Box2D's block solver; the cradle gives (-v/3, 2v/3, 2v/3)). Friction:
+//                 coulomb clamps each point's
 //                 tangential impulse to mu P_n; matrix and stick hold the tangential velocity at
 //                 -e ut- and 0. A group of a single point uses the model's own formula.
 //
