@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <numeric>
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
@@ -344,6 +343,18 @@ double World<D>::rest_speed(std::size_t i, std::size_t j) const {
     const bool smooth = (round_[i] || plane_[i]) && (round_[j] || plane_[j]);
     if (!smooth) v = std::max(v, std::sqrt(4.0 * g * kTouch));
     return v;
+}
+
+// The tangential limit of the points of a group or an island, as PointGoal::mu: coulomb the
+// pair's mu, matrix and stick unlimited (they hold the tangential velocity), frictionless 0.
+template <int D>
+double World<D>::friction_limit(std::size_t a, std::size_t b) const {
+    switch (scene_.model) {
+        case Model::coulomb: return scene_.pair_friction(a, b);
+        case Model::matrix:
+        case Model::stick: return -1.0;
+        default: return 0.0;
+    }
 }
 
 template <int D>
@@ -713,12 +724,8 @@ void World<D>::resolve_simultaneous(std::vector<Contact>* contacts) {
             const double un = u.dot(c.m.normal);
             PointGoal goal;
             goal.un = un < -v_rest ? -e * un : 0.0;
-            switch (scene_.model) {
-                case Model::coulomb: goal.mu = scene_.pair_friction(c.a, c.b); break;
-                case Model::matrix: goal.mu = -1.0; goal.ut = -e * (u - un * c.m.normal); break;
-                case Model::stick: goal.mu = -1.0; break;
-                default: goal.mu = 0.0; break;
-            }
+            goal.mu = friction_limit(c.a, c.b);
+            if (scene_.model == Model::matrix) goal.ut = -e * (u - un * c.m.normal);
             goals.push_back(goal);
         }
     }
@@ -889,12 +896,9 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
     // approaching; their average over h is the force.
     std::vector<Body> later = bodies_;
     for (std::size_t k : members) later[k].v += gravity() * h;
-    const double mu_model = scene_.model == Model::frictionless ? 0.0 : 1.0;
     goals.clear();
     for (const Contact& c : *contacts) {
-        const double mu = scene_.model == Model::coulomb ? scene_.pair_friction(c.a, c.b)
-                          : mu_model > 0.0               ? -1.0
-                                                         : 0.0;
+        const double mu = friction_limit(c.a, c.b);
         // Two round bodies keep their centres ra + rb apart: d^2|d|/dt^2 = 0 asks for the
         // normal relative acceleration -|ut|^2 / |d| (ut: the centres' relative velocity across
         // n), the centripetal part of sliding over a curved partner. Constant forces then

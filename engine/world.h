@@ -189,6 +189,7 @@ private:
     double normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const;
     double rest_speed(std::size_t i, std::size_t j) const;
     bool same_island(std::size_t i, std::size_t j) const;
+    double friction_limit(std::size_t a, std::size_t b) const;
     double predict_pair(std::size_t i, std::size_t j, double t, double t1);
     void predict(std::size_t i, double t);
 
