@@ -8,6 +8,7 @@
 
 #include "cli/input_error.h"
 #include "cli/interactive.h"
+#include "cli/render_cmd.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
 #include "cli/step.h"
@@ -92,6 +93,38 @@ int main(int argc, char** argv) {
     step->footer("Steps 1D, 2D and 3D scenes from impact to impact at the exact instants.\n"
                  "Scenario format and commands: see README.md, section 'Scenario files'.");
 
+    collide::RenderOptions render_options;
+    CLI::App* render = app.add_subcommand(
+        "render", "Render a scenario headless: PNG frames, the before / at / after figure, data");
+    render->add_option("SCENARIO", render_options.scenario, "scenario file (TOML)")->required();
+    render->add_option("-o,--output", render_options.out_dir, "output directory (created)")
+        ->required();
+    render->add_option("--size", render_options.size, "WxH, or 480p, 720p, 1080p, 1440p")
+        ->capture_default_str();
+    render->add_option("--fps", render_options.fps, "frames per simulated second")
+        ->capture_default_str();
+    render->add_option("--quality", render_options.quality,
+                       "low (no anti-aliasing), medium (anti-aliased, fast PNGs) or high "
+                       "(anti-aliased, smaller PNGs)")
+        ->check(CLI::IsMember({"low", "medium", "high"}))
+        ->capture_default_str();
+    render->add_option("--view", render_options.view,
+                       "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, "
+                       "3d for 3D")
+        ->check(CLI::IsMember({"2d", "3d"}));
+    render->add_option("--backend", render_options.backend,
+                       "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)")
+        ->check(CLI::IsMember({"osmesa", "egl"}))
+        ->capture_default_str();
+    render->add_flag("--quiet", render_options.quiet, "no progress bar and no summary");
+    render->add_flag("--force", render_options.force,
+                     "write into a directory that is not empty (replacing our files)");
+    render->footer(
+        "Writes DIR/frames/frame_00000.png ..., DIR/before.png, DIR/at.png, DIR/after.png,\n"
+        "DIR/figure.png (the three side by side), DIR/data.csv, DIR/data.json, DIR/events.csv.\n"
+        "Every file is written under a temporary name and renamed when complete.\n"
+        "Example: collide render lessons/scenes/billiards-2d.toml -o out/billiards");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -114,6 +147,7 @@ int main(int argc, char** argv) {
                                scene_file != "-" && isatty(0) && isatty(1));
             return run_step(scene_file, step_options, loop);
         }
+        if (*render) return collide::run_render(render_options, std::cout, std::cerr);
     } catch (const collide::InputError& e) {
         std::cerr << "collide: error: " << e.what() << "\n";
         return kBadInput;

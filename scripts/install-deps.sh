@@ -11,7 +11,14 @@ packages=(
   libcli11-dev                      # command line
   libgtest-dev                      # tests
   libbenchmark-dev                  # collide-bench
+  libosmesa6-dev                    # renderer: offscreen OpenGL (render/context)
+  libegl-dev                        # renderer: the second context, EGL surfaceless (--backend egl)
+  libpng-dev                        # renderer: PNG frames
+  libimgui-dev                      # renderer: overlays and labels (Dear ImGui 1.86)
+  libfreetype-dev                   # renderer: font rasterisation beside ImGui
+  fonts-dejavu-core                 # renderer: the label font (DejaVu Sans, Greek, sub/superscripts)
 )
+# Optional, not installed here: ffmpeg (collide render --format mp4|gif).
 
 missing=()
 for p in "${packages[@]}"; do

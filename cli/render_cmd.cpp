@@ -1,0 +1,442 @@
+#include "cli/render_cmd.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/input_error.h"
+#include "cli/scene_file.h"
+#include "cli/step.h"
+#include "render/context.h"
+#include "render/frame_sink.h"
+#include "render/frame_state.h"
+#include "render/png.h"
+#include "render/renderer.h"
+
+namespace collide {
+
+namespace fs = std::filesystem;
+using render::FrameState;
+using render::ImpactMark;
+
+namespace {
+
+constexpr int kBadInput = 2;
+const char* const kCommand = "";  // option errors name the option, not a file
+
+struct Quality {
+    // MSAA samples. The 2D diagram is anti-aliased by Dear ImGui itself (feathered edges):
+    // multisampling adds nothing visible there and made frames several times slower on
+    // llvmpipe, so the 2D view never uses it. The 3D view's shaded bodies need it.
+    int samples_2d;
+    int samples_3d;
+    bool smooth;          // ImGui edge anti-aliasing
+    render::PngOptions png;
+    int encoders;         // PNG threads
+};
+
+Quality quality_of(const std::string& name) {
+    if (name == "low") return {0, 0, false, {1, true, false}, 1};
+    if (name == "medium") return {0, 4, true, {1, true, false}, 1};
+    if (name == "high") return {0, 4, true, {6, false, false}, 2};  // smaller files, slower
+    throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");
+}
+
+// ---- The run: states at every frame, the events ----
+
+struct Run {
+    std::vector<FrameState> frames;
+    std::vector<ImpactMark> impacts;  // every collision, in time order
+    std::string csv;                  // data.csv
+    std::string json_frames;          // state_json lines joined by ",\n"
+    std::string json_events;
+    std::string events_csv;
+};
+
+std::string num(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", x);
+    return buf;
+}
+
+// data.csv: t, then per moving body its position, velocity, orientation and spin, then the
+// kinetic energy and momentum of the moving bodies.
+std::string csv_header(const Scene& s) {
+    const int d = s.dimension;
+    const char* axes[3] = {"x", "y", "z"};
+    std::string h = "t";
+    for (const SceneBody& b : s.bodies) {
+        if (b.is_static()) continue;
+        for (int k = 0; k < d; ++k) h += "," + b.name + ".x" + (d > 1 ? std::string(".") + axes[k] : "");
+        for (int k = 0; k < d; ++k) h += "," + b.name + ".v" + (d > 1 ? std::string(".") + axes[k] : "");
+        if (d == 2) h += "," + b.name + ".angle," + b.name + ".w";
+        if (d == 3) {
+            h += "," + b.name + ".q.w," + b.name + ".q.x," + b.name + ".q.y," + b.name + ".q.z";
+            for (int k = 0; k < 3; ++k) h += "," + b.name + ".w." + axes[k];
+        }
+    }
+    h += ",kinetic_energy";
+    for (int k = 0; k < d; ++k) h += std::string(",momentum") + (d > 1 ? std::string(".") + axes[k] : "");
+    return h + "\n";
+}
+
+std::string csv_row(const Scene& s, const FrameState& f) {
+    const int d = s.dimension;
+    std::string r = num(f.t);
+    double ke = 0;
+    Vec3 p = Vec3::Zero();
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+        const SceneBody& b = s.bodies[i];
+        if (b.is_static()) continue;
+        const render::BodyState& x = f.bodies[i];
+        const Vec3 pos = d == 1 ? Vec3(x.x.x(), 0, 0) : x.x;  // 1D: the drawn height is not data
+        for (int k = 0; k < d; ++k) r += "," + num(pos[k]);
+        for (int k = 0; k < d; ++k) r += "," + num(x.v[k]);
+        if (d == 2) r += "," + num(x.angle) + "," + num(x.w.z());
+        if (d == 3) {
+            r += "," + num(x.q.w()) + "," + num(x.q.x()) + "," + num(x.q.y()) + "," + num(x.q.z());
+            for (int k = 0; k < 3; ++k) r += "," + num(x.w[k]);
+        }
+        const double m = d == 1 ? b.body1.mass : d == 2 ? b.body2.mass : b.body3.mass;
+        p += m * x.v;
+        ke += render::kinetic_energy(s, i, x);
+    }
+    r += "," + num(ke);
+    for (int k = 0; k < d; ++k) r += "," + num(p[k]);
+    return r + "\n";
+}
+
+std::string events_csv_header(int d) {
+    if (d == 1) return "t,a,b,point,impulse,a.v.before,b.v.before,a.v.after,b.v.after\n";
+    std::string h = "t,a,b";
+    const char* axes[3] = {"x", "y", "z"};
+    for (const char* what : {"point", "normal", "impulse"})
+        for (int k = 0; k < d; ++k) h += std::string(",") + what + "." + axes[k];
+    return h + "\n";
+}
+
+std::string events_csv_row(const Scene& s, const Event1& e) {
+    return num(e.t) + "," + s.bodies[e.a].name + "," + s.bodies[e.b].name + "," + num(e.point) +
+           "," + num(e.impulse) + "," + num(e.va_before) + "," + num(e.vb_before) + "," +
+           num(e.va_after) + "," + num(e.vb_after) + "\n";
+}
+template <int D>
+std::string events_csv_row(const Scene& s, const Event<D>& e) {
+    std::string r = num(e.t) + "," + s.bodies[e.a].name + "," + s.bodies[e.b].name;
+    for (const auto* v : {&e.point, &e.normal, &e.impulse})
+        for (int k = 0; k < D; ++k) r += "," + num((*v)[k]);
+    return r + "\n";
+}
+
+template <int D>
+Run simulate(const Scene& scene, const std::vector<double>& times) {
+    typename Stepping<D>::World world(scene);
+    std::vector<typename Stepping<D>::Event> events;
+    Run run;
+    run.csv = csv_header(scene);
+    run.events_csv = events_csv_header(D);
+    for (double t : times) {
+        const std::size_t first = events.size();
+        world.advance_to(t, &events);
+        for (std::size_t k = first; k < events.size(); ++k) {
+            run.impacts.push_back(render::impact_mark(scene, events[k]));
+            if (!run.json_events.empty()) run.json_events += ",\n";
+            run.json_events += event_json(scene, events[k]);
+            run.events_csv += events_csv_row(scene, events[k]);
+        }
+        FrameState f = render::frame_state(scene, t, world.bodies());
+        run.csv += csv_row(scene, f);
+        if (!run.json_frames.empty()) run.json_frames += ",\n";
+        run.json_frames += state_json(scene, t, world.bodies());
+        run.frames.push_back(std::move(f));
+    }
+    return run;
+}
+
+// The three moments of the first collision: before, at, after.
+struct Moments {
+    double before = 0, at = 0, after = 0;
+    FrameState states[3];
+};
+
+template <int D>
+FrameState state_at(typename Stepping<D>::World* world, const Scene& scene, double t) {
+    std::vector<typename Stepping<D>::Event> ignored;
+    world->advance_to(t, &ignored);
+    return render::frame_state(scene, t, world->bodies());
+}
+
+template <int D>
+Moments moments_of(const Scene& scene, const Run& run) {
+    const ImpactMark& first = run.impacts.front();
+    const double te = first.t;
+    // A moment long enough for the bodies to move visibly: half the smaller body's size at
+    // their approach speed (estimated from the nearest frames), and short of other collisions
+    // of the same bodies.
+    double speed = 0;
+    for (const FrameState& f : run.frames)
+        if (f.t <= te) speed = (f.bodies[first.b].v - f.bodies[first.a].v).norm();
+    double size = 0;
+    const auto size_of = [&](std::size_t i) {
+        const SceneBody& b = scene.bodies[i];
+        if (scene.dimension == 1) return b.length;
+        if (scene.dimension == 2)
+            return b.shape2.kind == Shape2::Kind::half_plane ? 0.0 : 2.0 * bounding_radius(b.shape2);
+        return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
+    };
+    for (std::size_t i : {first.a, first.b}) {
+        const double s = size_of(i);
+        if (s > 0) size = size == 0 ? s : std::min(size, s);
+    }
+    double dt = speed > 0 && size > 0 ? 0.5 * size / speed : 0.1 * scene.duration;
+    dt = std::min(dt, 0.25 * scene.duration);
+    double next = scene.duration;
+    for (const ImpactMark& im : run.impacts)
+        if (im.t > te + 1e-9 && (im.a == first.a || im.b == first.b || im.a == first.b || im.b == first.a)) {
+            next = im.t;
+            break;
+        }
+    Moments m;
+    m.at = te;
+    m.before = std::max(0.0, te - dt);
+    m.after = std::min({scene.duration, te + dt, te + 0.5 * (next - te)});
+    typename Stepping<D>::World world(scene);
+    m.states[0] = state_at<D>(&world, scene, m.before);
+    typename Stepping<D>::World copy = world;  // the same run, continued to the instant
+    m.states[1] = state_at<D>(&copy, scene, m.at);
+    m.states[2] = state_at<D>(&copy, scene, m.after);
+    // Every collision at that instant (Newton's cradle passes the impulse along at once).
+    for (const ImpactMark& im : run.impacts)
+        if (std::abs(im.t - te) <= 1e-12 * std::max(1.0, te)) m.states[1].impacts.push_back(im);
+    return m;
+}
+
+// ---- Output directory ----
+
+void prepare_directory(const RenderOptions& o) {
+    std::error_code ec;
+    const fs::path dir(o.out_dir);
+    if (fs::exists(dir, ec)) {
+        if (!fs::is_directory(dir, ec))
+            throw InputError(o.out_dir, {}, "", "exists and is not a directory");
+        if (!fs::is_empty(dir, ec) && !o.force)
+            throw InputError(o.out_dir, {}, "",
+                             "directory is not empty (use --force to write into it)");
+    }
+    fs::create_directories(dir / "frames", ec);
+    if (ec) throw std::runtime_error(o.out_dir + ": cannot create directory: " + ec.message());
+    // --force: old frames would mix with the new ones; remove ours (and only ours).
+    for (const fs::directory_entry& e : fs::directory_iterator(dir / "frames", ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
+    }
+    for (const char* name : {"before.png", "at.png", "after.png", "figure.png"})
+        fs::remove(dir / name, ec);
+}
+
+std::string fixed_text(double x, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+    return buf;
+}
+
+// Returns the seconds spent on the frame sequence (rendering, encoding, writing).
+double write_outputs(const RenderOptions& o, const Scene& scene, const std::vector<double>& times,
+                     Run& run, const Moments* moments, std::ostream& err) {
+    const Quality q = quality_of(o.quality);
+    int width = 0, height = 0;
+    parse_render_size(o.size, &width, &height);
+    render::GlBackend backend;
+    if (!render::parse_gl_backend(o.backend, &backend))
+        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
+    const bool three_d = o.view.empty() ? scene.dimension == 3 : o.view == "3d";
+
+    std::unique_ptr<render::GlContext> context = render::create_gl_context(backend);
+    render::RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.samples = three_d ? q.samples_3d : q.samples_2d;
+    settings.smooth = q.smooth;
+    settings.view = three_d ? render::ViewKind::perspective : render::ViewKind::diagram;
+    // Time with enough decimals to change from frame to frame.
+    settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
+    render::Renderer renderer(*context, scene, settings);
+    renderer.prepare(run.frames, run.impacts);
+
+    // Frames: rendering here, PNG encoding beside it.
+    const double trail = std::min(1.0, 0.3 * scene.duration);
+    render::FrameSinkOptions sink_options;
+    sink_options.dir = o.out_dir + "/frames";
+    sink_options.png = q.png;
+    sink_options.threads = q.encoders;
+    sink_options.buffers = q.encoders + 2;
+    render::FrameSink sink(width, height, sink_options);
+    const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+    render::ProgressBar progress(err, static_cast<long>(times.size()), terminal, "rendering");
+    std::size_t next_impact = 0;
+    render::Decor decor;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k < run.frames.size(); ++k) {
+        FrameState f = run.frames[k];
+        render::add_trails(run.frames, trail, &f);
+        // A collision shows in the first frame at or after it.
+        while (next_impact < run.impacts.size() && run.impacts[next_impact].t <= f.t)
+            f.impacts.push_back(run.impacts[next_impact++]);
+        render::FrameSink::Buffer* buffer = sink.acquire();
+        renderer.render(f, decor, buffer->data());
+        sink.submit(static_cast<long>(k), buffer);
+        progress.update(sink.written());
+    }
+    sink.finish();
+    progress.finish();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+    if (moments) {
+        // The three moments at the frame size, as in the animation (with trails up to then).
+        const char* names[3] = {"before.png", "at.png", "after.png"};
+        std::vector<render::Image> panels;
+        for (int k = 0; k < 3; ++k) {
+            FrameState f = moments->states[k];
+            render::add_trails(run.frames, trail, &f);
+            render::Decor d;
+            d.velocities = k != 1;  // at the instant: the impulse, not the velocities
+            const render::Image image = renderer.render(f, d);
+            render::write_png_atomic(o.out_dir + "/" + names[k], image.width, image.height,
+                                     image.rgba.data(), q.png);
+        }
+        // The figure: three panels framed on these moments, without the table.
+        render::RenderSettings panel = settings;
+        panel.header = false;
+        panel.table = false;
+        panel.font_height = height;
+        std::vector<FrameState> three(moments->states, moments->states + 3);
+        // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
+        double aspect = 4.0 / 3.0;
+        if (!three_d) {
+            render::DiagramView probe(scene, render::Style::for_height(height));
+            probe.fit(three, moments->states[1].impacts, ImVec4(0, 0, 1000, 1000));
+            const Vec2 size = probe.box_hi() - probe.box_lo();
+            if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
+        }
+        const double area = 0.62 * 0.62 * 1.3 * height * height;
+        panel.height = static_cast<int>(std::lround(std::sqrt(area / aspect)));
+        panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
+        render::Renderer panels_renderer(*context, scene, panel);
+        panels_renderer.prepare(three, moments->states[1].impacts);
+        for (int k = 0; k < 3; ++k) {
+            render::Decor d;
+            d.velocities = k != 1;
+            d.trails = false;
+            panels.push_back(panels_renderer.render(moments->states[k], d));
+        }
+        const int decimals = settings.time_decimals + 1;
+        const render::Image figure = render::compose_figure(
+            *context, panels, {"before", "at collision", "after"},
+            {"t = " + fixed_text(moments->before, decimals) + " s",
+             "t = " + fixed_text(moments->at, decimals) + " s",
+             "t = " + fixed_text(moments->after, decimals) + " s"},
+            height);
+        render::write_png_atomic(o.out_dir + "/figure.png", figure.width, figure.height,
+                                 figure.rgba.data(), q.png);
+    }
+    return seconds;
+}
+
+}  // namespace
+
+bool parse_render_size(const std::string& text, int* width, int* height) {
+    static const std::pair<const char*, std::pair<int, int>> presets[] = {
+        {"480p", {854, 480}}, {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}}};
+    for (const auto& [name, size] : presets)
+        if (text == name) {
+            *width = size.first;
+            *height = size.second;
+            return true;
+        }
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
+        return false;
+    if (w < 16 || h < 16 || w > 8192 || h > 8192) return false;
+    *width = w;
+    *height = h;
+    return true;
+}
+
+int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
+    try {
+        // Options first: nothing is written when one is wrong.
+        int width = 0, height = 0;
+        if (!parse_render_size(o.size, &width, &height))
+            throw InputError(kCommand, {}, "--size",
+                             "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" +
+                                 o.size + "'");
+        if (!(o.fps > 0 && o.fps <= 100000))
+            throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
+        quality_of(o.quality);
+        if (!o.view.empty() && o.view != "2d" && o.view != "3d")
+            throw InputError(kCommand, {}, "--view", "expected 2d or 3d, got '" + o.view + "'");
+        if (o.out_dir.empty()) throw InputError(kCommand, {}, "-o", "the output directory is required");
+        render::GlBackend backend;
+        if (!render::parse_gl_backend(o.backend, &backend))
+            throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
+
+        const Scene scene = parse_scene_file(o.scenario);
+        Scene timing = scene;
+        timing.output_dt = 1.0 / o.fps;
+        const std::vector<double> times = output_times(timing);
+        if (times.size() > 1000000)
+            throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
+        prepare_directory(o);
+
+        Run run = scene.dimension == 1   ? simulate<1>(scene, times)
+                  : scene.dimension == 2 ? simulate<2>(scene, times)
+                                         : simulate<3>(scene, times);
+        std::unique_ptr<Moments> moments;
+        if (!run.impacts.empty()) {
+            moments = std::make_unique<Moments>(scene.dimension == 1   ? moments_of<1>(scene, run)
+                                                : scene.dimension == 2 ? moments_of<2>(scene, run)
+                                                                       : moments_of<3>(scene, run));
+        } else {
+            err << "collide render: no collision in " << scene.duration
+                << " s: before.png, at.png, after.png and figure.png are not written\n";
+        }
+        render::write_file_atomic(o.out_dir + "/data.csv", run.csv);
+        render::write_file_atomic(o.out_dir + "/events.csv", run.events_csv);
+        std::ostringstream json;
+        json << "{\"title\": " << nlohmann::json(scene.title).dump()
+             << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(o.fps)
+             << ",\n\"frames\": [\n" << run.json_frames << "\n],\n\"events\": [\n" << run.json_events
+             << "\n]}\n";
+        render::write_file_atomic(o.out_dir + "/data.json", json.str());
+        const double seconds = write_outputs(o, scene, times, run, moments.get(), err);
+        if (!o.quiet) {
+            char rate[64];
+            std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", seconds,
+                          static_cast<double>(times.size()) / std::max(seconds, 1e-9));
+            out << "wrote " << times.size() << " frames (" << width << "x" << height << ")" << rate
+                << " to " << o.out_dir << "/frames";
+            if (moments) out << ", before.png, at.png, after.png, figure.png";
+            out << ", data.csv, data.json, events.csv\n";
+        }
+        return 0;
+    } catch (const InputError& e) {
+        if (e.file().empty()) err << "collide: error: " << e.key() << ": " << e.message() << "\n";
+        else err << "collide: error: " << e.what() << "\n";
+        return kBadInput;
+    } catch (const std::exception& e) {
+        err << "collide: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace collide

@@ -1,0 +1,40 @@
+// `collide render SCENARIO -o DIR`: runs a scenario and writes its pictures (README.md,
+// "collide render"):
+//   DIR/frames/frame_00000.png ...   the animation, one PNG per frame (fps frames per simulated s)
+//   DIR/before.png, at.png, after.png  the first collision: a moment before, the exact instant
+//                                      (impulse, normal, r vectors), a moment after
+//   DIR/figure.png                   those three side by side with captions
+//   DIR/data.csv, DIR/data.json      the sampled states (as `collide step --json`) and events
+//   DIR/events.csv                   the collision events
+#pragma once
+
+#include <iosfwd>
+#include <string>
+
+namespace collide {
+
+struct RenderOptions {
+    std::string scenario;          // scenario file (TOML)
+    std::string out_dir;           // -o DIR
+    std::string size = "720p";     // --size: WxH, or 480p, 720p, 1080p, 1440p
+    double fps = 30.0;             // --fps: frames per simulated second
+    // --quality: low: no anti-aliasing; medium: anti-aliased (2D: Dear ImGui's edges; 3D: 4x
+    // MSAA), fast PNGs (zlib level 1, no filter); high: as medium, PNGs about 10-20% smaller
+    // (level 6, adaptive filters) and 4x slower to encode (two encoder threads).
+    std::string quality = "medium";
+    std::string view;              // --view: 2d or 3d; empty: 2d for 1D and 2D scenes, 3d for 3D
+    bool quiet = false;            // --quiet: no progress bar, no summary
+    bool force = false;            // --force: write into a non-empty DIR (replacing our files)
+    std::string backend = "osmesa";  // OpenGL context: osmesa or egl
+};
+
+// Runs the command. Returns the exit code: 0 done, 2 bad input (one "collide: error: ..."
+// line on err: the scenario file, an option, or an output directory that is not empty),
+// 1 any other failure. Progress goes to err when it is the process's stderr and a terminal.
+int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
+
+// "1280x720" or a preset (480p: 854x480, 720p: 1280x720, 1080p: 1920x1080, 1440p: 2560x1440);
+// false for anything else, or sizes outside 16..8192.
+bool parse_render_size(const std::string& text, int* width, int* height);
+
+}  // namespace collide

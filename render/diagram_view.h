@@ -1,0 +1,94 @@
+// The 2D diagram view, in the style of a textbook figure: light paper, flat filled bodies with
+// crisp dark outlines, anti-aliased lines, arrows with labels. Used for 1D scenes (blocks as
+// boxes standing on the x axis), 2D scenes, and as the front view (the xy plane) of 3D ones.
+//
+// What it draws, bottom to top:
+//   ground and walls (half-planes: a line with hatching on the solid side; 1D: the x axis),
+//   fading trails of the centres, the bodies (discs with a radius line so that spin shows,
+//   polygons; static bodies grey), centre-of-mass markers, the r vectors from each centre to
+//   the contact point (dashed), velocity arrows (one scale for all of them), angular velocity
+//   as a curved arrow whose sweep grows with |w|, and at a collision the normal n (unit length),
+//   the impulse +P on b and -P on a at the contact point (one scale for all impulses); then the
+//   labels with values and units, placed so that they do not overlap.
+//
+// fit() frames the camera once for a whole run (so that it does not jump between frames) from
+// sampled states, and fixes the arrow scales from the largest speed, spin and impulse.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "engine/scene.h"
+#include "render/draw2d.h"
+#include "render/frame_state.h"
+#include "render/style.h"
+
+namespace collide::render {
+
+// What a frame shows besides the bodies.
+struct Decor {
+    bool velocities = true;  // velocity arrows and spin arcs
+    bool impacts = true;     // the frame's impacts: impulse, normal, r vectors, contact point
+    bool trails = true;
+    bool labels = true;      // values and names
+    bool com = true;         // centre-of-mass markers
+};
+
+class DiagramView {
+public:
+    DiagramView(const Scene& scene, const Style& style);
+
+    // Frames everything the samples show, with their arrows, inside `viewport` (pixels:
+    // x0, y0, x1, y1). Impacts set the impulse scale. Call before draw().
+    void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
+             ImVec4 viewport);
+
+    void draw(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
+              LabelPlacer* labels) const;
+
+    // World (m) to pixels, and pixels per metre.
+    ImVec2 to_screen(const Vec3& world) const;
+    float pixels_per_metre() const { return static_cast<float>(scale_); }
+
+    // The legends: a round value and its arrow length in pixels (value 0: no such arrows).
+    struct Legend {
+        double value = 0.0;
+        float pixels = 0.0f;
+    };
+    Legend velocity_legend() const;
+    Legend impulse_legend() const;
+    double metres_per_speed() const { return k_velocity_; }  // arrow length per m/s
+    double metres_per_impulse() const { return k_impulse_; }
+    // The world box fit() framed (m): lower and upper corners.
+    Vec2 box_lo() const { return box_lo_; }
+    Vec2 box_hi() const { return box_hi_; }
+
+private:
+    enum class Kind { round, polygon, plane, none };
+    Kind kind(std::size_t i) const;
+    double radius(std::size_t i) const;                                // round bodies
+    double reach(std::size_t i) const;  // largest distance of the surface from the centre (m)
+    std::vector<Vec2> outline(std::size_t i, const BodyState& s) const;  // polygons, CCW
+    void plane_of(std::size_t i, Vec2* normal, double* offset) const;
+    void extent(std::size_t i, const BodyState& s, Vec2* lo, Vec2* hi) const;
+    Legend legend_for(double metres_per_unit) const;
+
+    void draw_planes(ImDrawList* dl) const;
+    void draw_axis_1d(ImDrawList* dl) const;
+    void label_axis_1d(ImDrawList* dl, const FontSet& fonts, LabelPlacer* labels) const;
+    void draw_body(ImDrawList* dl, std::size_t i, const BodyState& s, const Decor& decor) const;
+
+    const Scene& scene_;
+    Style style_;
+    ImVec4 viewport_{0, 0, 1, 1};
+    Vec2 centre_ = Vec2::Zero();  // world point at the viewport's centre
+    double scale_ = 100.0;        // pixels per metre
+    double k_velocity_ = 0.0;     // metres of arrow per m/s
+    double k_impulse_ = 0.0;      // metres of arrow per N s
+    double max_spin_ = 0.0;       // rad/s, the largest |w| of the run
+    Vec2 box_lo_ = Vec2::Zero(), box_hi_ = Vec2::Zero();
+};
+
+}  // namespace collide::render

@@ -1,0 +1,64 @@
+// What one frame shows, whatever the scene's dimension: every body's state lifted to 3D
+// (1D: x along the x axis; 2D: the xy plane, the angle about +z), the collisions to annotate,
+// and the recent path of each body for its trail.
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+#include "engine/body.h"
+#include "engine/scene.h"
+#include "engine/world.h"
+#include "engine/world1d.h"
+
+namespace collide::render {
+
+struct BodyState {
+    Vec3 x = Vec3::Zero();             // m, centre of mass
+    Quat q = Quat::Identity();         // orientation (2D: about +z by angle)
+    double angle = 0.0;                // rad, 2D only
+    Vec3 v = Vec3::Zero();             // m/s
+    Vec3 w = Vec3::Zero();             // rad/s (2D: (0, 0, w))
+};
+
+// One collision as the diagrams draw it (docs/conventions.md: n from a into b, +P on b).
+struct ImpactMark {
+    double t = 0.0;          // s
+    std::size_t a = 0, b = 0;
+    Vec3 point = Vec3::Zero();    // m
+    Vec3 normal = Vec3::UnitX();  // unit
+    Vec3 impulse = Vec3::Zero();  // N s, on b
+};
+
+struct TrailPoint {
+    double t;  // s
+    Vec3 x;    // m
+};
+
+struct FrameState {
+    double t = 0.0;                              // s
+    std::vector<BodyState> bodies;               // scene order
+    std::vector<ImpactMark> impacts;             // drawn as "at the collision" annotations
+    std::vector<std::vector<TrailPoint>> trails;  // per body, oldest first (may be empty)
+};
+
+// 1D blocks are drawn as boxes standing on the x axis: this is the height of block i (m) and
+// where its centre is drawn (y = height / 2).
+double block_height(const Scene& scene, std::size_t i);
+
+FrameState frame_state(const Scene& scene, double t, const std::vector<Body1>& bodies);
+FrameState frame_state(const Scene& scene, double t, const std::vector<Body2>& bodies);
+FrameState frame_state(const Scene& scene, double t, const std::vector<Body3>& bodies);
+
+ImpactMark impact_mark(const Scene& scene, const Event1& e);
+ImpactMark impact_mark(const Scene& scene, const Event2& e);
+ImpactMark impact_mark(const Scene& scene, const Event3& e);
+
+// Fills frame.trails from earlier frames: for each body the centres at the frames within
+// `span` seconds before frame.t (in `history`, time order), then its current centre.
+void add_trails(const std::vector<FrameState>& history, double span, FrameState* frame);
+
+// Kinetic energy of body i (J): 1/2 m v.v + 1/2 w.I w (world inertia). 0 for static bodies.
+double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s);
+
+}  // namespace collide::render

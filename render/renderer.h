@@ -1,0 +1,98 @@
+// The renderer: one frame of a scene, drawn offscreen and read back as RGBA.
+//
+//   Renderer r(context, scene, settings);
+//   r.prepare(samples, impacts);          // frames the camera and lays out the overlays
+//   r.render(frame, decor, rgba);         // as often as needed, any frame of the run
+//
+// A frame is drawn into a render target (4x MSAA unless anti-aliasing is off): the 3D view's
+// shaded bodies first (when the view is 3D), then everything 2D through Dear ImGui: the
+// diagram (2D view) or the 3D view's labels, the header (title, time, legends) and the data
+// table. Layout: header at the top left, table at the top right, and the view below them or
+// beside them, whichever leaves the scene larger.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/scene.h"
+#include "render/context.h"
+#include "render/diagram_view.h"
+#include "render/frame_state.h"
+#include "render/png.h"
+
+namespace collide::render {
+
+enum class ViewKind { diagram, perspective };  // 2D textbook diagram, 3D shaded
+
+struct RenderSettings {
+    int width = 1280, height = 720;  // pixels
+    int samples = 4;                 // MSAA samples; 0: off
+    bool smooth = true;              // Dear ImGui's edge anti-aliasing (lines, fills, text)
+    ViewKind view = ViewKind::diagram;
+    bool header = true;              // title, time, arrow legends
+    bool table = true;               // the data table
+    int time_decimals = 3;           // "t = 0.350 s"
+    // Font sizes: by default for the frame height; figure panels use the frame's.
+    int font_height = 0;             // 0: height
+    std::string font_dir = "/usr/share/fonts/truetype/dejavu";
+};
+
+class Scene3dView;  // render/scene3d_view.h
+class ImGuiLayer;
+class RenderTarget;
+class DataTable;
+class Header;
+
+class Renderer {
+public:
+    // Needs `context` current on the calling thread, now and for every call.
+    Renderer(GlContext& context, const Scene& scene, const RenderSettings& settings);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    // Frames the view over the run (`samples`: states spread over it) and sets the arrow
+    // scales (impulses from `impacts`).
+    void prepare(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts);
+
+    // Draws one frame into `rgba` (width * height * 4 bytes, top row first).
+    void render(const FrameState& frame, const Decor& decor, std::uint8_t* rgba);
+    Image render(const FrameState& frame, const Decor& decor);
+
+    int width() const { return settings_.width; }
+    int height() const { return settings_.height; }
+    const RenderSettings& settings() const { return settings_; }
+    // World to pixels, for tests and annotations.
+    ImVec2 to_screen(const Vec3& world) const;
+    // The 2D view (its arrow scales, its framing); null in the 3D view.
+    const DiagramView* diagram() const { return view3d_ ? nullptr : diagram_.get(); }
+    // Whether each glyph of `utf8` is in the label font.
+    bool has_glyphs(const std::string& utf8) const;
+
+private:
+    void draw(const FrameState& frame, const Decor& decor);
+
+    GlContext& context_;
+    const Scene& scene_;
+    RenderSettings settings_;
+    Style style_;
+    std::unique_ptr<RenderTarget> target_;
+    std::unique_ptr<ImGuiLayer> imgui_;
+    std::unique_ptr<DiagramView> diagram_;
+    std::unique_ptr<Scene3dView> view3d_;
+    std::unique_ptr<DataTable> table_;
+    std::unique_ptr<Header> header_;
+    ImVec2 header_at_{0, 0}, table_at_{0, 0};
+    ImVec4 view_rect_{0, 0, 0, 0};
+};
+
+// One figure of panels side by side with a caption under each (e.g. before / at collision /
+// after), on the diagrams' paper. All panels must have the same size.
+Image compose_figure(GlContext& context, const std::vector<Image>& panels,
+                     const std::vector<std::string>& captions,
+                     const std::vector<std::string>& notes, int font_height,
+                     const std::string& font_dir = "/usr/share/fonts/truetype/dejavu");
+
+}  // namespace collide::render

@@ -1,0 +1,55 @@
+// The 3D view: shaded bodies with dark outlines on a ground grid, lit by a key light, a fill
+// light and a sky-ground ambient term, seen by a perspective camera framed automatically from
+// the run (from the front, a little to the right and above). Velocity arrows are shaded 3D
+// arrows (one scale for all); angular velocity is an arrow on the axis with a curl around it;
+// at a collision the impulse, the normal and the r vectors. Labels are drawn by ImGui at the
+// projected points (annotate()).
+//
+// 1D and 2D scenes can be shown in 3D too: blocks become boxes, discs cylinders and polygons
+// prisms, extruded along z; 2D half-planes become walls or the ground.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include <imgui.h>
+
+#include "engine/scene.h"
+#include "render/diagram_view.h"  // Decor
+#include "render/draw2d.h"
+#include "render/frame_state.h"
+#include "render/gl.h"
+#include "render/style.h"
+
+namespace collide::render {
+
+class Scene3dView {
+public:
+    Scene3dView(const Gl& gl, const Scene& scene, const Style& style);
+    ~Scene3dView();
+    Scene3dView(const Scene3dView&) = delete;
+    Scene3dView& operator=(const Scene3dView&) = delete;
+
+    // Frames the camera on the run inside `viewport` (pixels, top-left origin) of a frame
+    // `frame_width` x `frame_height`; sets the arrow scales.
+    void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
+             ImVec4 viewport, int frame_width, int frame_height);
+    // The GL pass (the render target is bound, colour and depth cleared).
+    void draw(const FrameState& frame, const Decor& decor);
+    // Labels through ImGui, after draw().
+    void annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
+                  LabelPlacer* labels) const;
+
+    ImVec2 to_screen(const Vec3& world) const;  // pixels, top-left origin
+    double pixels_per_metre() const;            // across the view, at the scene's centre
+    DiagramView::Legend velocity_legend() const;
+    DiagramView::Legend impulse_legend() const;
+    bool spins() const { return max_spin_ > 0; }
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    double max_spin_ = 0.0;
+};
+
+}  // namespace collide::render

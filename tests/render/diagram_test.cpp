@@ -1,0 +1,318 @@
+// The renderer, headless: bodies drawn where the state says, arrows covering the pixels from
+// their tail to their tip, the label glyphs, the figure layout, and a small golden image.
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+
+#include <gtest/gtest.h>
+
+#include "cli/scene_file.h"
+#include "render/context.h"
+#include "render/draw2d.h"
+#include "render/imgui_layer.h"
+#include "render/renderer.h"
+#include "render/target.h"
+#include "test_util.h"
+
+namespace collide::render {
+namespace {
+
+class RenderTest : public ::testing::Test {
+protected:
+    static void SetUpTestSuite() { context_ = create_gl_context(GlBackend::osmesa).release(); }
+    static void TearDownTestSuite() {
+        delete context_;
+        context_ = nullptr;
+    }
+    static GlContext* context_;
+};
+GlContext* RenderTest::context_ = nullptr;
+
+const char* kTwoDiscs = R"(
+[scene]
+dimension = 2
+duration = 1.0
+[[body]]
+name = "left"
+shape = "disc"
+radius = 0.25
+mass = 1.0
+position = [-1.0, 0.0]
+[[body]]
+name = "right"
+shape = "disc"
+radius = 0.25
+mass = 1.0
+position = [1.0, 0.5]
+v = [2.0, 0.0]
+)";
+
+RenderSettings small(int w, int h) {
+    RenderSettings s;
+    s.width = w;
+    s.height = h;
+    s.samples = 0;
+    s.header = false;
+    s.table = false;
+    return s;
+}
+
+Decor bare() {
+    Decor d;
+    d.velocities = false;
+    d.labels = false;
+    d.com = false;
+    d.trails = false;
+    d.impacts = false;
+    return d;
+}
+
+TEST_F(RenderTest, ContextIsOffscreenOpenGL33OrLater) {
+    EXPECT_STREQ(context_->backend_name(), "osmesa");
+    EXPECT_NE(context_->description().find("Core Profile"), std::string::npos) << context_->description();
+}
+
+TEST_F(RenderTest, ADiscIsDrawnWhereTheStateSays) {
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    Renderer r(*context_, scene, small(320, 240));
+    const FrameState f = frame_state(scene, 0.0, std::vector<Body2>{scene.bodies[0].body2, scene.bodies[1].body2});
+    r.prepare({f}, {});
+    const Image im = r.render(f, bare());
+    const Palette palette;
+    const Colour fill = palette.fills[1];  // the second moving body
+
+    const ImVec2 c = r.to_screen(Vec3(1.0, 0.5, 0.0));
+    const ImVec2 far = r.to_screen(Vec3(1.6, 0.5, 0.0));
+    const ImVec2 other = r.to_screen(Vec3(-1.0, 0.0, 0.0));
+    ASSERT_TRUE(c.x > 0 && c.x < 320 && c.y > 0 && c.y < 240);
+    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(c.x), static_cast<int>(c.y)), fill, 4));
+    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(far.x), static_cast<int>(far.y)),
+                                  palette.background, 4));
+    // x to the right, y up.
+    EXPECT_GT(c.x, other.x);
+    EXPECT_LT(c.y, other.y);
+
+    // The filled pixels form a disc of the right radius around the right centre.
+    // Counted: pixels near the centre that are not paper (fill, outline, radius line); the
+    // outline is centred on the edge, so the count is the disc's area.
+    const double ppm = r.diagram()->pixels_per_metre();
+    const double r_px = 0.25 * ppm;
+    double n = 0, sx = 0, sy = 0;
+    for (int y = 0; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x) {
+            const double dx = x + 0.5 - c.x, dy = y + 0.5 - c.y;
+            if (dx * dx + dy * dy > 2.25 * r_px * r_px) continue;
+            const std::uint8_t* p = im.pixel(x, y);
+            double coverage = 0;  // how far from paper, 0..1, for anti-aliased edges
+            for (int k = 0; k < 3; ++k) {
+                const int paper = static_cast<int>((palette.background >> (8 * k)) & 0xFF);
+                const int want = static_cast<int>((fill >> (8 * k)) & 0xFF);
+                if (paper != want) coverage = std::max(coverage, std::min(1.0, std::abs(p[k] - paper) / std::abs(double(want - paper))));
+            }
+            n += coverage;
+            sx += coverage * (x + 0.5);
+            sy += coverage * (y + 0.5);
+        }
+    EXPECT_NEAR(n, M_PI * r_px * r_px, 0.06 * M_PI * r_px * r_px);
+    EXPECT_NEAR(sx / n, c.x, 0.5);
+    EXPECT_NEAR(sy / n, c.y, 0.5);
+}
+
+TEST_F(RenderTest, AVelocityArrowCoversThePixelsFromTheCentreToItsTip) {
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    Renderer r(*context_, scene, small(320, 240));
+    const FrameState f = frame_state(scene, 0.0, std::vector<Body2>{scene.bodies[0].body2, scene.bodies[1].body2});
+    r.prepare({f}, {});
+    Decor d = bare();
+    d.velocities = true;
+    const Image im = r.render(f, d);
+    const Palette palette;
+    const double k = r.diagram()->metres_per_speed();
+    ASSERT_GT(k, 0.0);
+    const Vec3 centre(1.0, 0.5, 0.0), tip = centre + k * Vec3(2.0, 0.0, 0.0);
+    // Along the shaft, outside the disc (the disc's edge is at 0.25 m), and the head near the tip.
+    for (double s : {0.4, 0.6, 0.8, 0.97}) {
+        const Vec3 p = centre + s * (tip - centre);
+        if ((p - centre).norm() < 0.3) continue;
+        const ImVec2 q = r.to_screen(p);
+        // The pixel the segment passes through (the line is 1.5 px wide here).
+        EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(q.x), static_cast<int>(q.y)), palette.velocity, 60))
+            << "at " << s << " of the arrow";
+    }
+    // Beside the arrow and beyond its tip: background.
+    const ImVec2 beside = r.to_screen(centre + 0.6 * (tip - centre) + Vec3(0, 0.2, 0));
+    const ImVec2 beyond = r.to_screen(tip + Vec3(0.15, 0, 0));
+    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(beside.x), static_cast<int>(beside.y)), palette.background, 4));
+    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(beyond.x), static_cast<int>(beyond.y)), palette.background, 4));
+}
+
+TEST_F(RenderTest, DrawArrowCoversTheSegmentAndNothingBeside) {
+    const Gl& gl = context_->gl();
+    RenderTarget target(gl, 240, 160, 0);
+    ImGuiLayer imgui(gl, 240, 160, FontSizes::for_height(160));
+    target.bind();
+    gl.ClearColor(1, 1, 1, 1);
+    gl.Clear(GL_COLOR_BUFFER_BIT);
+    imgui.begin();
+    const Colour red = rgb(200, 0, 0);
+    const ImVec2 p(30, 40), q(200, 120);
+    draw_arrow(imgui.draw_list(), p, q, red, 4.0f, 16.0f, 12.0f);
+    imgui.end();
+    Image im;
+    im.width = 240;
+    im.height = 160;
+    im.rgba.resize(240 * 160 * 4);
+    target.read_rgba(im.rgba.data());
+    for (float s : {0.05f, 0.25f, 0.5f, 0.75f, 0.95f}) {
+        const int x = static_cast<int>(p.x + s * (q.x - p.x)), y = static_cast<int>(p.y + s * (q.y - p.y));
+        EXPECT_TRUE(test::near_colour(im.pixel(x, y), red, 30)) << "at " << s;
+    }
+    // 10 pixels off the line on either side, and beyond the tip.
+    const float len = std::hypot(q.x - p.x, q.y - p.y);
+    const float nx = -(q.y - p.y) / len, ny = (q.x - p.x) / len;
+    for (float side : {-10.0f, 10.0f}) {
+        const int x = static_cast<int>(0.5f * (p.x + q.x) + side * nx), y = static_cast<int>(0.5f * (p.y + q.y) + side * ny);
+        EXPECT_TRUE(test::near_colour(im.pixel(x, y), rgb(255, 255, 255), 2));
+    }
+    EXPECT_TRUE(test::near_colour(im.pixel(215, 127), rgb(255, 255, 255), 2));
+}
+
+TEST_F(RenderTest, EglGivesTheSameFrameWhereItIsAvailable) {
+    if (!gl_backend_available(GlBackend::egl)) GTEST_SKIP() << "built without EGL";
+#ifdef __SANITIZE_ADDRESS__
+    // glvnd unloads Mesa's EGL driver at exit, and LeakSanitizer then reports the driver's
+    // own allocations from an unnamed module, which no suppression can match.
+    GTEST_SKIP() << "not under AddressSanitizer";
+#endif
+    std::unique_ptr<GlContext> egl;
+    try {
+        egl = create_gl_context(GlBackend::egl);
+    } catch (const std::runtime_error& e) {
+        GTEST_SKIP() << "no EGL display here: " << e.what();
+    }
+    EXPECT_STREQ(egl->backend_name(), "egl");
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    const FrameState f = frame_state(scene, 0.0, std::vector<Body2>{scene.bodies[0].body2, scene.bodies[1].body2});
+    Image a, b;
+    {
+        Renderer r(*egl, scene, small(200, 150));
+        r.prepare({f}, {});
+        a = r.render(f, bare());
+    }
+    context_->make_current();
+    Renderer r(*context_, scene, small(200, 150));
+    r.prepare({f}, {});
+    b = r.render(f, bare());
+    int off = 0;
+    for (std::size_t i = 0; i < a.rgba.size(); ++i) off += std::abs(a.rgba[i] - b.rgba[i]) > 8;
+    EXPECT_LE(off, 50);
+}
+
+TEST_F(RenderTest, TheLabelFontHasGreekSubscriptsAndSuperscripts) {
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    Renderer r(*context_, scene, small(160, 120));
+    EXPECT_TRUE(r.has_glyphs("\u03C9 \u2090 \u1D66 \u207B\u00B9 \u00BD \u2264 \u221A \u2211 \u2212 \u00D7"));  // ω ₐ ᵦ ⁻¹ ½ ≤ √ ∑ − ×
+    EXPECT_FALSE(r.has_glyphs("\u4E2D"));  // not every glyph exists
+}
+
+TEST_F(RenderTest, FigurePlacesPanelsSideBySide) {
+    std::vector<Image> panels(3);
+    const std::uint8_t colours[3][3] = {{255, 0, 0}, {0, 255, 0}, {0, 0, 255}};
+    for (int k = 0; k < 3; ++k) {
+        panels[k].width = 100;
+        panels[k].height = 80;
+        panels[k].rgba.resize(100 * 80 * 4);
+        for (std::size_t i = 0; i < panels[k].rgba.size(); i += 4) {
+            std::copy(colours[k], colours[k] + 3, panels[k].rgba.begin() + static_cast<std::ptrdiff_t>(i));
+            panels[k].rgba[i + 3] = 255;
+        }
+    }
+    const Image fig = compose_figure(*context_, panels, {"before", "at collision", "after"},
+                                     {"t = 1 s", "t = 2 s", "t = 3 s"}, 360);
+    EXPECT_GT(fig.width, 300);
+    EXPECT_GT(fig.height, 80);
+    // Each panel's centre, left to right.
+    const int y = 10 + 40;
+    int found = 0;
+    int last_x = -1;
+    for (int k = 0; k < 3; ++k)
+        for (int x = last_x + 1; x < fig.width; ++x)
+            if (test::near_colour(fig.pixel(x, y), rgb(colours[k][0], colours[k][1], colours[k][2]), 2)) {
+                ++found;
+                last_x = x + 90;
+                break;
+            }
+    EXPECT_EQ(found, 3);
+}
+
+// A small golden image: two bodies on the ground with velocity and spin arrows and a collision
+// (impulse, normal, r vectors). Regenerate with COLLIDE_UPDATE_GOLDEN=1 after a deliberate
+// change of the look, and look at the new file before committing it.
+TEST_F(RenderTest, GoldenDiagramMatchesWithinTolerance) {
+    const char* text = R"(
+[scene]
+dimension = 2
+duration = 1.0
+gravity = [0.0, -9.81]
+[[body]]
+name = "ground"
+shape = "plane"
+normal = [0.0, 1.0]
+offset = 0.0
+[[body]]
+name = "ball"
+shape = "disc"
+radius = 0.3
+mass = 1.0
+position = [-0.6, 0.8]
+v = [1.0, -1.0]
+w = 3.0
+[[body]]
+name = "box"
+shape = "rectangle"
+size = [0.6, 0.4]
+mass = 2.0
+position = [0.6, 0.2]
+angle = 0.0
+)";
+    const Scene scene = parse_scene_text(text, "golden.toml");
+    Renderer r(*context_, scene, small(160, 120));
+    std::vector<Body2> bodies;
+    for (const SceneBody& b : scene.bodies) bodies.push_back(b.body2);
+    FrameState f = frame_state(scene, 0.0, bodies);
+    ImpactMark im;
+    im.a = 1;
+    im.b = 2;
+    im.point = Vec3(0.3, 0.3, 0.0);
+    im.normal = Vec3(1.0, 0.0, 0.0);
+    im.impulse = Vec3(1.0, 0.2, 0.0);
+    f.impacts.push_back(im);
+    r.prepare({f}, {im});
+    Decor d;
+    d.labels = false;  // text would tie the golden to one FreeType version
+    d.trails = false;
+    const Image got = r.render(f, d);
+
+    const std::string golden = std::string(COLLIDE_RENDER_GOLDEN_DIR) + "/diagram-160x120.png";
+    if (std::getenv("COLLIDE_UPDATE_GOLDEN")) {
+        write_png_atomic(golden, got.width, got.height, got.rgba.data());
+        GTEST_SKIP() << "golden image rewritten: " << golden;
+    }
+    const Image want = read_png(golden);
+    ASSERT_EQ(want.width, got.width);
+    ASSERT_EQ(want.height, got.height);
+    // Per pixel: every channel within 24; at most 0.5% of the pixels may differ more (edge
+    // anti-aliasing may round differently on another llvmpipe).
+    int off = 0;
+    for (int y = 0; y < got.height; ++y)
+        for (int x = 0; x < got.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(got.pixel(x, y)[c] - want.pixel(x, y)[c]) > 24) {
+                    ++off;
+                    break;
+                }
+    EXPECT_LE(off, got.width * got.height / 200) << off << " pixels differ; see " << golden;
+}
+
+}  // namespace
+}  // namespace collide::render

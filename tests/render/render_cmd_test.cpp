@@ -1,0 +1,227 @@
+// `collide render` end to end on tiny scenes: the files it writes, and its refusals.
+#include "cli/render_cmd.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "render/png.h"
+#include "test_util.h"
+
+namespace collide {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* kCollision2d = R"([scene]
+title = "Two discs"
+dimension = 2
+duration = 0.5
+restitution = 1.0
+[[body]]
+name = "a"
+shape = "disc"
+radius = 0.1
+mass = 1.0
+position = [-0.3, 0.0]
+v = [2.0, 0.0]
+[[body]]
+name = "b"
+shape = "disc"
+radius = 0.1
+mass = 1.0
+position = [0.3, 0.05]
+)";
+
+std::string write(const render::test::TempDir& dir, const std::string& name, const std::string& text) {
+    std::ofstream(dir / name) << text;
+    return dir / name;
+}
+
+RenderOptions tiny(const std::string& scenario, const std::string& out) {
+    RenderOptions o;
+    o.scenario = scenario;
+    o.out_dir = out;
+    o.size = "160x120";
+    o.fps = 10;
+    o.quiet = true;
+    return o;
+}
+
+std::size_t lines(const std::string& path) {
+    std::ifstream in(path);
+    std::size_t n = 0;
+    for (std::string line; std::getline(in, line);) ++n;
+    return n;
+}
+
+TEST(RenderCommand, WritesFramesStillsFigureAndData) {
+    render::test::TempDir dir;
+    const std::string scenario = write(dir, "s.toml", kCollision2d);
+    std::ostringstream out, err;
+    ASSERT_EQ(run_render(tiny(scenario, dir / "out"), out, err), 0) << err.str();
+    // 0.5 s at 10 frames/s: frames at 0, 0.1, ..., 0.5.
+    for (int k = 0; k <= 5; ++k) {
+        char name[40];
+        std::snprintf(name, sizeof name, "out/frames/frame_%05d.png", k);
+        const render::Image im = render::read_png(dir / name);
+        EXPECT_EQ(im.width, 160);
+        EXPECT_EQ(im.height, 120);
+    }
+    EXPECT_FALSE(fs::exists(dir / "out/frames/frame_00006.png"));
+    for (const char* still : {"before.png", "at.png", "after.png"})
+        EXPECT_EQ(render::read_png(dir / (std::string("out/") + still)).width, 160) << still;
+    const render::Image figure = render::read_png(dir / "out/figure.png");
+    EXPECT_GT(figure.width, 3 * 80);
+    EXPECT_EQ(lines(dir / "out/data.csv"), 7u);  // header + 6 frames
+    EXPECT_EQ(lines(dir / "out/events.csv"), 2u);  // header + the collision
+    std::ifstream in(dir / "out/data.json");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    EXPECT_EQ(j["title"], "Two discs");
+    EXPECT_EQ(j["frames"].size(), 6u);
+    ASSERT_EQ(j["events"].size(), 1u);
+    EXPECT_EQ(j["events"][0]["a"], "a");
+    EXPECT_NEAR(j["frames"][5]["t"].get<double>(), 0.5, 1e-12);
+    // Nothing half-written is left behind.
+    for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
+        EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(RenderCommand, OneDimensionalAndThreeDimensionalScenesRender) {
+    render::test::TempDir dir;
+    const std::string one = write(dir, "1d.toml", R"([scene]
+dimension = 1
+duration = 0.4
+[[body]]
+name = "cart"
+shape = "block"
+length = 0.2
+mass = 1.0
+position = -0.3
+v = 2.0
+[[body]]
+name = "wall"
+shape = "block"
+length = 0.2
+static = true
+position = 0.3
+)");
+    const std::string three = write(dir, "3d.toml", R"([scene]
+dimension = 3
+duration = 0.4
+[[body]]
+name = "ball"
+shape = "sphere"
+radius = 0.1
+mass = 1.0
+position = [-0.3, 0.0, 0.0]
+v = [2.0, 0.0, 0.0]
+[[body]]
+name = "box"
+shape = "box"
+size = [0.2, 0.2, 0.2]
+mass = 1.0
+position = [0.3, 0.05, 0.0]
+)");
+    std::ostringstream out, err;
+    EXPECT_EQ(run_render(tiny(one, dir / "one"), out, err), 0) << err.str();
+    EXPECT_TRUE(fs::exists(dir / "one/figure.png"));
+    EXPECT_EQ(run_render(tiny(three, dir / "three"), out, err), 0) << err.str();
+    EXPECT_TRUE(fs::exists(dir / "three/at.png"));
+    RenderOptions flat = tiny(three, dir / "front");  // a 3D scene seen from the front
+    flat.view = "2d";
+    EXPECT_EQ(run_render(flat, out, err), 0) << err.str();
+    RenderOptions solid = tiny(one, dir / "solid");  // a 1D scene in 3D
+    solid.view = "3d";
+    EXPECT_EQ(run_render(solid, out, err), 0) << err.str();
+}
+
+TEST(RenderCommand, WithoutACollisionTheStillsAreSkippedWithANote) {
+    render::test::TempDir dir;
+    const std::string scenario = write(dir, "s.toml", R"([scene]
+dimension = 2
+duration = 0.2
+[[body]]
+name = "lonely"
+shape = "disc"
+radius = 0.1
+mass = 1.0
+v = [1.0, 0.0]
+)");
+    std::ostringstream out, err;
+    ASSERT_EQ(run_render(tiny(scenario, dir / "out"), out, err), 0) << err.str();
+    EXPECT_NE(err.str().find("no collision"), std::string::npos) << err.str();
+    EXPECT_FALSE(fs::exists(dir / "out/before.png"));
+    EXPECT_FALSE(fs::exists(dir / "out/figure.png"));
+    EXPECT_TRUE(fs::exists(dir / "out/frames/frame_00002.png"));
+}
+
+TEST(RenderCommand, RefusesANonEmptyDirectoryUnlessForced) {
+    render::test::TempDir dir;
+    const std::string scenario = write(dir, "s.toml", kCollision2d);
+    fs::create_directories(dir / "out/frames");
+    std::ofstream(dir / "out/notes.txt") << "keep me";
+    std::ofstream(dir / "out/frames/frame_00099.png") << "stale";
+    std::ostringstream out, err;
+    EXPECT_EQ(run_render(tiny(scenario, dir / "out"), out, err), 2);
+    EXPECT_NE(err.str().find("not empty"), std::string::npos) << err.str();
+    EXPECT_FALSE(fs::exists(dir / "out/frames/frame_00000.png"));
+    RenderOptions forced = tiny(scenario, dir / "out");
+    forced.force = true;
+    EXPECT_EQ(run_render(forced, out, err), 0) << err.str();
+    EXPECT_TRUE(fs::exists(dir / "out/notes.txt"));                  // not ours: kept
+    EXPECT_FALSE(fs::exists(dir / "out/frames/frame_00099.png"));    // an old frame: removed
+    EXPECT_TRUE(fs::exists(dir / "out/frames/frame_00005.png"));
+}
+
+TEST(RenderCommand, BadInputIsRefusedWithExitCode2) {
+    render::test::TempDir dir;
+    const std::string scenario = write(dir, "s.toml", kCollision2d);
+    const std::string broken = write(dir, "broken.toml", "[scene]\ndimension = 7\n");
+    const auto refuse = [&](RenderOptions o, const std::string& expect) {
+        std::ostringstream out, err;
+        EXPECT_EQ(run_render(o, out, err), 2) << expect;
+        EXPECT_NE(err.str().find(expect), std::string::npos) << err.str();
+        EXPECT_EQ(err.str().rfind("collide: error: ", 0), 0u) << err.str();
+    };
+    RenderOptions o = tiny(scenario, dir / "out");
+    o.size = "12x12";
+    refuse(o, "--size");
+    o = tiny(scenario, dir / "out");
+    o.size = "wide";
+    refuse(o, "--size");
+    o = tiny(scenario, dir / "out");
+    o.fps = 0;
+    refuse(o, "--fps");
+    o = tiny(scenario, dir / "out");
+    o.quality = "ultra";
+    refuse(o, "--quality");
+    o = tiny(scenario, dir / "out");
+    o.view = "4d";
+    refuse(o, "--view");
+    refuse(tiny(broken, dir / "out"), "broken.toml");
+    refuse(tiny(dir / "absent.toml", dir / "out"), "absent.toml");
+    EXPECT_FALSE(fs::exists(dir / "out"));  // nothing written on bad input
+}
+
+TEST(RenderCommand, SizePresetsAndWxH) {
+    int w = 0, h = 0;
+    EXPECT_TRUE(parse_render_size("720p", &w, &h));
+    EXPECT_EQ(w, 1280);
+    EXPECT_EQ(h, 720);
+    EXPECT_TRUE(parse_render_size("480p", &w, &h));
+    EXPECT_EQ(w, 854);
+    EXPECT_TRUE(parse_render_size("1440p", &w, &h));
+    EXPECT_EQ(h, 1440);
+    EXPECT_TRUE(parse_render_size("640x360", &w, &h));
+    EXPECT_EQ(w, 640);
+    EXPECT_FALSE(parse_render_size("640x", &w, &h));
+    EXPECT_FALSE(parse_render_size("640x360x2", &w, &h));
+    EXPECT_FALSE(parse_render_size("9000x100", &w, &h));
+}
+
+}  // namespace
+}  // namespace collide
