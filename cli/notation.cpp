@@ -9,6 +9,17 @@
 
 namespace collide::notation {
 
+namespace {
+
+// The end of the subscript that starts after the '_' at i: v_pa has the subscript "pa".
+std::size_t subscript_end(const std::string& text, std::size_t i) {
+    std::size_t j = i + 1;
+    while (j < text.size() && std::isalnum(static_cast<unsigned char>(text[j]))) ++j;
+    return j;
+}
+
+}  // namespace
+
 std::string to_tex(const std::string& text) {
     static const std::vector<std::pair<std::string, std::string>> symbols = {
         {"ω", "\\omega "}, {"μ", "\\mu "}, {"Δ", "\\Delta "}, {"]×", "]_\\times "},
@@ -35,8 +46,21 @@ std::string to_tex(const std::string& text) {
         }
         // Subscripts: v_pa -> v_{pa}.
         if (text[i] == '_') {
-            std::size_t j = i + 1;
-            while (j < text.size() && std::isalnum(static_cast<unsigned char>(text[j]))) ++j;
+            const std::size_t j = subscript_end(text, i);
+            out += "_{" + text.substr(i + 1, j - i - 1) + "}";
+            i = j;
+            continue;
+        }
+        out += text[i++];
+    }
+    return out;
+}
+
+std::string to_rich(const std::string& text) {
+    std::string out;
+    for (std::size_t i = 0; i < text.size();) {
+        if (text[i] == '_') {
+            const std::size_t j = subscript_end(text, i);
             out += "_{" + text.substr(i + 1, j - i - 1) + "}";
             i = j;
             continue;

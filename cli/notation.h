@@ -17,6 +17,9 @@ inline F operator+(F a, const F& b) { return {a.txt + b.txt, a.tex + b.tex}; }
 // Text notation -> LaTeX: Greek letters, ×, ·, ⁻¹, ², ᵀ, ′, subscripts v_pa -> v_{pa}.
 std::string to_tex(const std::string& text);
 
+// Text notation -> the renderer's rich text (render/draw2d.h): subscripts v_pa -> v_{pa}.
+std::string to_rich(const std::string& text);
+
 // A formula in the text notation.
 inline F f(const std::string& text) { return {text, to_tex(text)}; }
 // Prose inside a formula line (upright in LaTeX).

@@ -13,8 +13,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/event_problem.h"
 #include "cli/input_error.h"
+#include "cli/notation.h"
 #include "cli/scene_file.h"
+#include "cli/solve.h"
 #include "cli/step.h"
 #include "render/context.h"
 #include "render/frame_sink.h"
@@ -92,8 +95,6 @@ std::string csv_header(const Scene& s) {
 std::string csv_row(const Scene& s, const FrameState& f) {
     const int d = s.dimension;
     std::string r = num(f.t);
-    double ke = 0;
-    Vec3 p = Vec3::Zero();
     for (std::size_t i = 0; i < s.bodies.size(); ++i) {
         const SceneBody& b = s.bodies[i];
         if (b.is_static()) continue;
@@ -106,12 +107,10 @@ std::string csv_row(const Scene& s, const FrameState& f) {
             r += "," + num(x.q.w()) + "," + num(x.q.x()) + "," + num(x.q.y()) + "," + num(x.q.z());
             for (int k = 0; k < 3; ++k) r += "," + num(x.w[k]);
         }
-        const double m = d == 1 ? b.body1.mass : d == 2 ? b.body2.mass : b.body3.mass;
-        p += m * x.v;
-        ke += render::kinetic_energy(s, i, x);
     }
-    r += "," + num(ke);
-    for (int k = 0; k < d; ++k) r += "," + num(p[k]);
+    const render::FrameTotals sums = render::frame_totals(s, f);
+    r += "," + num(sums.kinetic);
+    for (int k = 0; k < d; ++k) r += "," + num(sums.momentum[k]);
     return r + "\n";
 }
 
@@ -166,12 +165,14 @@ Run simulate(const Scene& scene, const std::vector<double>& times) {
 struct Moments {
     double before = 0, at = 0, after = 0;
     FrameState states[3];
+    CollisionInstant instant;  // the first collision, the bodies where they touch
 };
 
 template <int D>
-FrameState state_at(typename Stepping<D>::World* world, const Scene& scene, double t) {
+FrameState state_at(typename Stepping<D>::World* world, const Scene& scene, double t,
+                    std::vector<typename Stepping<D>::Event>* events = nullptr) {
     std::vector<typename Stepping<D>::Event> ignored;
-    world->advance_to(t, &ignored);
+    world->advance_to(t, events ? events : &ignored);
     return render::frame_state(scene, t, world->bodies());
 }
 
@@ -210,14 +211,65 @@ Moments moments_of(const Scene& scene, const Run& run) {
     m.before = std::max(0.0, te - dt);
     m.after = std::min({scene.duration, te + dt, te + 0.5 * (next - te)});
     typename Stepping<D>::World world(scene);
-    m.states[0] = state_at<D>(&world, scene, m.before);
+    // The first event: its bodies where they touch (a collision at t = 0 happens in the first
+    // advance already).
+    std::vector<typename Stepping<D>::Event> events;
+    m.states[0] = state_at<D>(&world, scene, m.before, &events);
     typename Stepping<D>::World copy = world;  // the same run, continued to the instant
-    m.states[1] = state_at<D>(&copy, scene, m.at);
+    m.states[1] = state_at<D>(&copy, scene, m.at, &events);
+    if (events.empty()) {
+        // Advanced in other steps, the world can find the same instant a few ulps later.
+        typename Stepping<D>::World probe = copy;
+        probe.advance_to(std::min(scene.duration, te + 1e-9 * std::max(1.0, te)), &events);
+        if (events.empty()) throw std::logic_error("render: the first collision did not recur");
+    }
+    m.instant = collision_instant(events.front(), copy.bodies());
     m.states[2] = state_at<D>(&copy, scene, m.after);
     // Every collision at that instant (Newton's cradle passes the impulse along at once).
     for (const ImpactMark& im : run.impacts)
         if (std::abs(im.t - te) <= 1e-12 * std::max(1.0, te)) m.states[1].impacts.push_back(im);
     return m;
+}
+
+// ---- The worked example of the first collision ----
+
+struct WorkedExample {
+    SolveProblem problem;
+    Solution solution;
+    render::FormulaText formula;  // the overlay: the response model's formula and numbers
+};
+
+WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
+    WorkedExample w;
+    w.problem = collision_problem(scene, c);
+    w.solution = solve(w.problem);
+    char heading[160];
+    std::snprintf(heading, sizeof heading, "Collision of %s and %s  (%s, e = %s)",
+                  scene.bodies[c.a].name.c_str(), scene.bodies[c.b].name.c_str(),
+                  model_name(w.problem.model), notation::num_text(w.problem.restitution).c_str());
+    w.formula.heading = heading;
+    // The last two steps of the response model: a step's title carries its formula after two
+    // spaces ("Impulse  j = ..."), its lines the numbers.
+    const std::vector<WorkedStep> steps = worked_steps(w.problem, w.solution);
+    std::vector<const WorkedStep*> response;
+    for (const WorkedStep& st : steps)
+        if (st.response) response.push_back(&st);
+    if (response.size() > 2) response.erase(response.begin(), response.end() - 2);
+    for (const WorkedStep* st : response) {
+        const std::size_t gap = st->title.find("  ");
+        if (gap != std::string::npos) w.formula.lines.push_back(notation::to_rich(st->title.substr(gap + 2)));
+        for (const std::string& line : st->lines) w.formula.lines.push_back(notation::to_rich(line));
+    }
+    // The formula is for one contact point. When the world resolved several points at this
+    // instant (a face on a face, a resting stack), its impulse differs: say so, with its value.
+    const double scale = std::max({w.solution.P.norm(), c.impulse.norm(), 1e-300});
+    if ((w.solution.P - c.impulse).norm() > 1e-6 * scale) {
+        const int d = scene.dimension;
+        std::string P = d == 1 ? notation::num_text(c.impulse.x()) : notation::vec(c.impulse, d).txt;
+        w.formula.note = "The world resolved several contact points here; its total impulse is P = " + P +
+                         " N\u00B7s";
+    }
+    return w;
 }
 
 // ---- Output directory ----
@@ -239,7 +291,7 @@ void prepare_directory(const RenderOptions& o) {
         const std::string name = e.path().filename().string();
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
-    for (const char* name : {"before.png", "at.png", "after.png", "figure.png"})
+    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "worked-example.md"})
         fs::remove(dir / name, ec);
 }
 
@@ -251,7 +303,8 @@ std::string fixed_text(double x, int decimals) {
 
 // Returns the seconds spent on the frame sequence (rendering, encoding, writing).
 double write_outputs(const RenderOptions& o, const Scene& scene, const std::vector<double>& times,
-                     Run& run, const Moments* moments, std::ostream& err) {
+                     Run& run, const Moments* moments, const WorkedExample* worked,
+                     std::ostream& err) {
     const Quality q = quality_of(o.quality);
     int width = 0, height = 0;
     parse_render_size(o.size, &width, &height);
@@ -269,6 +322,7 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const std::vect
     settings.view = three_d ? render::ViewKind::perspective : render::ViewKind::diagram;
     // Time with enough decimals to change from frame to frame.
     settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
+    if (worked) settings.formula = worked->formula;
     render::Renderer renderer(*context, scene, settings);
     renderer.prepare(run.frames, run.impacts);
 
@@ -317,6 +371,9 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const std::vect
         render::RenderSettings panel = settings;
         panel.header = false;
         panel.table = false;
+        panel.plots = false;
+        panel.timeline = false;
+        panel.formula = {};
         panel.font_height = height;
         std::vector<FrameState> three(moments->states, moments->states + 3);
         // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
@@ -408,7 +465,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
                                                                        : moments_of<3>(scene, run));
         } else {
             err << "collide render: no collision in " << scene.duration
-                << " s: before.png, at.png, after.png and figure.png are not written\n";
+                << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
         }
         render::write_file_atomic(o.out_dir + "/data.csv", run.csv);
         render::write_file_atomic(o.out_dir + "/events.csv", run.events_csv);
@@ -418,14 +475,21 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
              << ",\n\"frames\": [\n" << run.json_frames << "\n],\n\"events\": [\n" << run.json_events
              << "\n]}\n";
         render::write_file_atomic(o.out_dir + "/data.json", json.str());
-        const double seconds = write_outputs(o, scene, times, run, moments.get(), err);
+        std::unique_ptr<WorkedExample> worked;
+        if (moments) {
+            worked = std::make_unique<WorkedExample>(worked_example(scene, moments->instant));
+            std::ostringstream md;
+            write_markdown(worked->problem, worked->solution, md);
+            render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
+        }
+        const double seconds = write_outputs(o, scene, times, run, moments.get(), worked.get(), err);
         if (!o.quiet) {
             char rate[64];
             std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", seconds,
                           static_cast<double>(times.size()) / std::max(seconds, 1e-9));
             out << "wrote " << times.size() << " frames (" << width << "x" << height << ")" << rate
                 << " to " << o.out_dir << "/frames";
-            if (moments) out << ", before.png, at.png, after.png, figure.png";
+            if (moments) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
             out << ", data.csv, data.json, events.csv\n";
         }
         return 0;

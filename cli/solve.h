@@ -3,6 +3,8 @@
 #pragma once
 
 #include <iosfwd>
+#include <string>
+#include <vector>
 
 #include "cli/solve_problem.h"
 #include "engine/page.h"
@@ -48,6 +50,18 @@ struct Solution {
 };
 
 Solution solve(const SolveProblem& problem);
+
+// The worked example as steps in the text notation (what `collide solve` prints): a title
+// (often the formula), lines (formula, then the numbers substituted), notes (prose).
+// `response` marks the steps of the response model itself (denominator and impulse, the
+// friction cone, ...), which a figure can show alone.
+struct WorkedStep {
+    std::string title;
+    std::vector<std::string> lines;
+    std::vector<std::string> notes;
+    bool response = false;
+};
+std::vector<WorkedStep> worked_steps(const SolveProblem& problem, const Solution& s);
 
 void write_text(const SolveProblem& problem, const Solution& s, std::ostream& out);
 void write_markdown(const SolveProblem& problem, const Solution& s, std::ostream& out);

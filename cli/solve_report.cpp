@@ -19,6 +19,7 @@ struct Step {
     std::string title;
     std::vector<F> lines;
     std::vector<std::string> notes;  // prose after the lines
+    bool response = false;           // a step of the response model itself
 };
 
 // Symbols with a body subscript: sym("v", 'a') = "v_a".
@@ -45,6 +46,7 @@ public:
                  {"The contact points are separating (or resting): no impulse acts, every velocity "
                   "stays as it was."});
         } else {
+            const std::size_t first_model_step = steps.size();
             switch (P.model) {
                 case Model::frictionless: frictionless_steps(); break;
                 case Model::coulomb: coulomb_steps(); break;
@@ -52,6 +54,7 @@ public:
                 case Model::stick: stick_steps(); break;
                 case Model::page_listing: listing_steps(); break;
             }
+            for (std::size_t k = first_model_step; k < steps.size(); ++k) steps[k].response = true;
             if (P.model != Model::page_listing && P.model != Model::stick) final_velocities();
             restitution_check();
         }
@@ -146,7 +149,10 @@ private:
     double denominator() const { return s.inv_ma + s.inv_mb + s.rot_a + s.rot_b; }
     F denominator_numbers() const {
         F line = f("D = ") + num(s.inv_ma) + f(" + ") + num(s.inv_mb);
-        if (d >= 2) line = line + f(" + ") + num(s.rot_a) + f(" + ") + num(s.rot_b);
+        // A rotational term below 1e-12 of D is round-off of a lever arm along n (a disc or a
+        // sphere): it changes no printed digit of D, and is printed as the 0 it stands for.
+        const auto term = [&](double x) { return std::abs(x) < 1e-12 * denominator() ? 0.0 : x; };
+        if (d >= 2) line = line + f(" + ") + num(term(s.rot_a)) + f(" + ") + num(term(s.rot_b));
         return line + f(" = ") + num(denominator()) + unit("1/kg");
     }
 
@@ -475,11 +481,21 @@ void write_text(const SolveProblem& P, const Solution& s, std::ostream& out) {
     if (!P.title.empty()) out << P.title << "\n";
     out << headline(P) << "\n" << kConventions << "\n";
     int i = 0;
-    for (const Step& st : Builder(P, s).build()) {
+    for (const WorkedStep& st : worked_steps(P, s)) {
         out << "\n" << ++i << ". " << st.title << "\n";
-        for (const F& line : st.lines) out << "   " << line.txt << "\n";
+        for (const std::string& line : st.lines) out << "   " << line << "\n";
         for (const std::string& note : st.notes) out << "   " << note << "\n";
     }
+}
+
+std::vector<WorkedStep> worked_steps(const SolveProblem& P, const Solution& s) {
+    std::vector<WorkedStep> out;
+    for (const Step& st : Builder(P, s).build()) {
+        WorkedStep w{st.title, {}, st.notes, st.response};
+        for (const F& line : st.lines) w.lines.push_back(line.txt);
+        out.push_back(std::move(w));
+    }
+    return out;
 }
 
 void write_markdown(const SolveProblem& P, const Solution& s, std::ostream& out) {

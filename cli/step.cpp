@@ -58,22 +58,11 @@ std::string body_text(const Body3& b) {
            txt(b.orientation) + "   w " + txt(b.w) + " rad/s";
 }
 
-// Potential energy in uniform gravity, zero at the origin: -m g . x (dynamic bodies).
-double potential_energy(const Scene& s, const Body1& b) {
-    return -b.mass * s.gravity.x() * b.position;
-}
-double potential_energy(const Scene& s, const Body2& b) {
-    return -b.mass * s.gravity.head<2>().dot(b.position);
-}
-double potential_energy(const Scene& s, const Body3& b) {
-    return -b.mass * s.gravity.dot(b.position);
-}
-
 template <class Body>
 double potential_energy(const Scene& s, const std::vector<Body>& bodies) {
     double potential = 0.0;
     for (const Body& b : bodies)
-        if (!b.is_static) potential += potential_energy(s, b);
+        potential += potential_energy(b, s.gravity);
     return potential;
 }
 

@@ -33,4 +33,10 @@ Totals2 totals(const std::vector<Body2>& bodies, const Vec2& about = Vec2::Zero(
 // off-diagonal inertia terms included.
 Totals3 totals(const std::vector<Body3>& bodies, const Vec3& about = Vec3::Zero());
 
+// Potential energy in uniform gravity g (1D: g.x along the line; 2D: g.x, g.y), zero at the
+// origin: U = -m g . x. Static bodies have none.
+double potential_energy(const Body1& b, const Vec3& g);
+double potential_energy(const Body2& b, const Vec3& g);
+double potential_energy(const Body3& b, const Vec3& g);
+
 }  // namespace collide

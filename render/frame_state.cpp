@@ -1,6 +1,9 @@
 #include "render/frame_state.h"
 
 #include <algorithm>
+#include <type_traits>
+
+#include "engine/diagnostics.h"
 
 namespace collide::render {
 
@@ -103,20 +106,69 @@ void add_trails(const std::vector<FrameState>& history, double span, FrameState*
         frame->trails[i].push_back({frame->t, frame->bodies[i].x});
 }
 
-double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s) {
+double body_mass(const Scene& scene, std::size_t i) {
     const SceneBody& b = scene.bodies[i];
-    if (b.is_static()) return 0.0;
+    return scene.dimension == 1 ? b.body1.mass : scene.dimension == 2 ? b.body2.mass : b.body3.mass;
+}
+
+namespace {
+
+// Body i of the scene in the state `s`, as the engine's body of the scene's dimension.
+Body1 body1_of(const Scene& scene, std::size_t i, const BodyState& s) {
+    Body1 b = scene.bodies[i].body1;
+    b.position = s.x.x();
+    b.v = s.v.x();
+    return b;
+}
+Body2 body2_of(const Scene& scene, std::size_t i, const BodyState& s) {
+    Body2 b = scene.bodies[i].body2;
+    b.position = s.x.head<2>();
+    b.angle = s.angle;
+    b.v = s.v.head<2>();
+    b.w = s.w.z();
+    return b;
+}
+Body3 body3_of(const Scene& scene, std::size_t i, const BodyState& s) {
+    Body3 b = scene.bodies[i].body3;
+    b.position = s.x;
+    b.orientation = s.q;
+    b.v = s.v;
+    b.w = s.w;
+    return b;
+}
+
+}  // namespace
+
+double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s) {
     switch (scene.dimension) {
-    case 1:
-        return 0.5 * b.body1.mass * s.v.squaredNorm();
-    case 2:
-        return 0.5 * b.body2.mass * s.v.squaredNorm() + 0.5 * b.body2.inertia * s.w.z() * s.w.z();
-    default: {
-        const Mat3 R = s.q.toRotationMatrix();
-        const Mat3 I = R * b.body3.inertia * R.transpose();
-        return 0.5 * b.body3.mass * s.v.squaredNorm() + 0.5 * s.w.dot(I * s.w);
+    case 1: return totals(std::vector<Body1>{body1_of(scene, i, s)}).kinetic_energy;
+    case 2: return totals(std::vector<Body2>{body2_of(scene, i, s)}).kinetic_energy;
+    default: return totals(std::vector<Body3>{body3_of(scene, i, s)}).kinetic_energy;
     }
+}
+
+FrameTotals frame_totals(const Scene& scene, const FrameState& frame) {
+    FrameTotals t;
+    const std::size_t n = std::min(scene.bodies.size(), frame.bodies.size());
+    const auto sum = [&](auto body_of) {
+        using Body = decltype(body_of(std::size_t{0}));
+        std::vector<Body> bodies;
+        for (std::size_t i = 0; i < n; ++i) {
+            bodies.push_back(body_of(i));
+            t.potential += potential_energy(bodies.back(), scene.gravity);
+        }
+        const auto sums = totals(bodies);
+        t.kinetic = sums.kinetic_energy;
+        if constexpr (std::is_same_v<Body, Body1>) t.momentum.x() = sums.momentum;
+        else if constexpr (std::is_same_v<Body, Body2>) t.momentum.head<2>() = sums.momentum;
+        else t.momentum = sums.momentum;
+    };
+    switch (scene.dimension) {
+    case 1: sum([&](std::size_t i) { return body1_of(scene, i, frame.bodies[i]); }); break;
+    case 2: sum([&](std::size_t i) { return body2_of(scene, i, frame.bodies[i]); }); break;
+    default: sum([&](std::size_t i) { return body3_of(scene, i, frame.bodies[i]); }); break;
     }
+    return t;
 }
 
 }  // namespace collide::render

@@ -58,7 +58,20 @@ ImpactMark impact_mark(const Scene& scene, const Event3& e);
 // `span` seconds before frame.t (in `history`, time order), then its current centre.
 void add_trails(const std::vector<FrameState>& history, double span, FrameState* frame);
 
-// Kinetic energy of body i (J): 1/2 m v.v + 1/2 w.I w (world inertia). 0 for static bodies.
+// Mass of body i (kg), whatever the dimension.
+double body_mass(const Scene& scene, std::size_t i);
+
+// Kinetic energy of body i (J), by the engine's formula (engine/diagnostics.h). 0 for static
+// bodies.
 double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s);
+
+// Totals of the moving bodies of a frame, by the engine's formulas: kinetic energy, potential
+// energy in the scene's gravity (zero at the origin), momentum (1D: x; 2D: x, y).
+struct FrameTotals {
+    double kinetic = 0.0;    // J
+    double potential = 0.0;  // J
+    Vec3 momentum = Vec3::Zero();  // kg m/s
+};
+FrameTotals frame_totals(const Scene& scene, const FrameState& frame);
 
 }  // namespace collide::render

@@ -21,7 +21,7 @@ namespace {
 const ImWchar kGlyphRanges[] = {
     0x0020, 0x00FF,  // Basic Latin, Latin-1 (², ³, ¹, ·, ×, ½, °)
     0x0370, 0x03FF,  // Greek (ω, α, β, θ, μ, Δ, Σ)
-    0x1D62, 0x1D6A,  // phonetic subscripts: ᵢ ᵣ ᵤ ᵥ ᵦ ᵧ ᵨ ᵩ ᵪ
+    0x1D2C, 0x1D6A,  // modifier letters (ᵀ) and phonetic subscripts: ᵢ ᵣ ᵤ ᵥ ᵦ ᵧ ᵨ ᵩ ᵪ
     0x2010, 0x2027,  // dashes, quotes, bullet, ellipsis
     0x2030, 0x203A,  // per mille, primes (′ ″)
     0x2070, 0x209F,  // superscripts and subscripts (⁻¹, ⁰..⁹, ₀..₉, ₐ ₑ ₒ ₓ ...)

@@ -21,10 +21,6 @@ std::string vec_text(const Vec3& v, int dims, int decimals) {
     return s + ")";
 }
 
-double mass_of(const Scene& s, std::size_t i) {
-    const SceneBody& b = s.bodies[i];
-    return s.dimension == 1 ? b.body1.mass : s.dimension == 2 ? b.body2.mass : b.body3.mass;
-}
 
 }  // namespace
 
@@ -34,21 +30,17 @@ std::vector<std::string> DataTable::cells(std::size_t i, const FrameState& f) co
     std::vector<std::string> out;
     const auto dec = [this](std::size_t c) { return columns_[c].decimals; };
     if (total) {
-        double m = 0, ke = 0;
-        Vec3 p = Vec3::Zero();
-        for (std::size_t r : rows_) {
-            m += mass_of(scene_, r);
-            p += mass_of(scene_, r) * f.bodies[r].v;
-            ke += kinetic_energy(scene_, r, f.bodies[r]);
-        }
+        double m = 0;
+        for (std::size_t r : rows_) m += body_mass(scene_, r);
+        const FrameTotals sums = frame_totals(scene_, f);
         out = {"total", format_fixed(m, dec(1)), ""};
         if (d > 1) out.push_back("");
-        out.push_back(vec_text(p, d, dec(out.size())));
-        out.push_back(format_fixed(ke, dec(out.size())));
+        out.push_back(vec_text(sums.momentum, d, dec(out.size())));
+        out.push_back(format_fixed(sums.kinetic, dec(out.size())));
         return out;
     }
     const BodyState& s = f.bodies[i];
-    const double m = mass_of(scene_, i);
+    const double m = body_mass(scene_, i);
     out = {scene_.bodies[i].name, format_fixed(m, dec(1)), vec_text(s.v, d, dec(2))};
     if (d == 2) out.push_back(format_fixed(s.w.z(), dec(3)));
     if (d == 3) out.push_back(vec_text(s.w, 3, dec(3)));
@@ -70,24 +62,21 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
     // Decimals from the largest value each column takes over the run.
     std::vector<double> largest(columns_.size(), 0.0);
     double total_mass = 0;
-    for (std::size_t r : rows_) total_mass += mass_of(scene_, r);
+    for (std::size_t r : rows_) total_mass += body_mass(scene_, r);
     largest[1] = total_mass;
     for (const FrameState& f : samples) {
-        double ke = 0;
-        Vec3 p = Vec3::Zero();
         for (std::size_t r : rows_) {
             const BodyState& s = f.bodies[r];
             std::size_t c = 2;
             largest[c] = std::max(largest[c], s.v.cwiseAbs().maxCoeff());
             if (d > 1) ++c, largest[c] = std::max(largest[c], s.w.cwiseAbs().maxCoeff());
             ++c;
-            largest[c] = std::max(largest[c], (mass_of(scene_, r) * s.v).cwiseAbs().maxCoeff());
-            p += mass_of(scene_, r) * s.v;
-            const double e = kinetic_energy(scene_, r, s);
-            ke += e;
+            largest[c] = std::max(largest[c], (body_mass(scene_, r) * s.v).cwiseAbs().maxCoeff());
         }
-        largest[columns_.size() - 2] = std::max(largest[columns_.size() - 2], p.cwiseAbs().maxCoeff());
-        largest.back() = std::max(largest.back(), ke);
+        const FrameTotals sums = frame_totals(scene_, f);
+        largest[columns_.size() - 2] =
+            std::max(largest[columns_.size() - 2], sums.momentum.cwiseAbs().maxCoeff());
+        largest.back() = std::max(largest.back(), sums.kinetic);
     }
     for (std::size_t c = 1; c < columns_.size(); ++c) columns_[c].decimals = decimals_for(largest[c]);
 
@@ -219,6 +208,190 @@ void Header::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) con
         }
         draw_rich_text(dl, fonts, fonts.small, ImVec2(at.x + mark + style_.px(10.0f), y), c.ink, e.text);
         y += fh * 1.6f;
+    }
+}
+
+// ---- Formula ----
+
+void FormulaBox::prepare(const FontSet& fonts, FormulaText text, float max_width) {
+    text_ = std::move(text);
+    size_ = ImVec2(0, 0);
+    if (text_.empty()) return;
+    const float pad = style_.px(10.0f);
+    const auto width_of = [&]() {
+        float w = rich_text_size(fonts, fonts.bold, text_.heading).x;
+        for (const std::string& line : text_.lines) w = std::max(w, rich_text_size(fonts, fonts.table, line).x);
+        if (!text_.note.empty()) w = std::max(w, rich_text_size(fonts, fonts.small, text_.note).x);
+        return w + 2 * pad;
+    };
+    while (text_.lines.size() > 1 && width_of() > max_width) {
+        // The widest line goes first, never the last one (the result).
+        std::size_t widest = 0;
+        float wmax = -1;
+        for (std::size_t k = 0; k + 1 < text_.lines.size(); ++k) {
+            const float w = rich_text_size(fonts, fonts.table, text_.lines[k]).x;
+            if (w > wmax) wmax = w, widest = k;
+        }
+        text_.lines.erase(text_.lines.begin() + static_cast<long>(widest));
+    }
+    if (!text_.note.empty() && width_of() > max_width) text_.note.clear();
+    float h = 2 * pad + fonts.bold->FontSize * 1.4f +
+              static_cast<float>(text_.lines.size()) * fonts.table->FontSize * 1.45f;
+    if (!text_.note.empty()) h += fonts.small->FontSize * 1.5f;
+    size_ = ImVec2(std::ceil(std::min(width_of(), max_width)), std::ceil(h));
+}
+
+void FormulaBox::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at) const {
+    if (text_.empty()) return;
+    const Palette& c = style_.colours;
+    const float pad = style_.px(10.0f);
+    dl->AddRectFilled(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel, style_.px(6.0f));
+    dl->AddRect(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel_border, style_.px(6.0f), 0,
+                style_.lw(1.0f));
+    float y = at.y + pad;
+    draw_rich_text(dl, fonts, fonts.bold, ImVec2(at.x + pad, y), c.ink, text_.heading);
+    y += fonts.bold->FontSize * 1.4f;
+    for (std::size_t k = 0; k < text_.lines.size(); ++k) {
+        // The last line is the result: in the impulse's colour.
+        const Colour colour = k + 1 == text_.lines.size() ? c.impulse : c.ink;
+        draw_rich_text(dl, fonts, fonts.table, ImVec2(at.x + pad, y), colour, text_.lines[k]);
+        y += fonts.table->FontSize * 1.45f;
+    }
+    if (!text_.note.empty())
+        draw_rich_text(dl, fonts, fonts.small, ImVec2(at.x + pad, y + style_.px(2.0f)), c.muted, text_.note);
+}
+
+// ---- Plot ----
+
+void Plot::prepare(const FontSet& fonts, std::string title, std::vector<double> times,
+                   std::vector<Series> series, ImVec2 size) {
+    (void)fonts;
+    title_ = std::move(title);
+    times_ = std::move(times);
+    series_ = std::move(series);
+    size_ = size;
+    lo_ = 0;
+    hi_ = 0;
+    bool first = true;
+    for (const Series& s : series_)
+        for (double v : s.values) {
+            if (!std::isfinite(v)) continue;
+            lo_ = first ? v : std::min(lo_, v);
+            hi_ = first ? v : std::max(hi_, v);
+            first = false;
+        }
+    // Zero in range when it is near, and some room above and below.
+    if (lo_ > 0 && lo_ < 0.5 * hi_) lo_ = 0;
+    if (hi_ < 0 && hi_ > 0.5 * lo_) hi_ = 0;
+    const double span = hi_ - lo_;
+    const double pad = span > 1e-12 * std::max(std::abs(hi_), 1.0) ? 0.08 * span
+                                                                    : std::max(0.05 * std::abs(hi_), 1e-3);
+    lo_ -= pad;
+    hi_ += pad;
+}
+
+void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const {
+    if (series_.empty() || times_.empty()) return;
+    const Palette& c = style_.colours;
+    const float pad = style_.px(8.0f);
+    dl->AddRectFilled(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel, style_.px(6.0f));
+    dl->AddRect(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel_border, style_.px(6.0f), 0,
+                style_.lw(1.0f));
+    // Title and the series' keys on the first line.
+    float x = at.x + pad;
+    const float y0 = at.y + pad * 0.6f;
+    draw_rich_text(dl, fonts, fonts.small, ImVec2(x, y0), c.ink, title_);
+    x += rich_text_size(fonts, fonts.small, title_).x + style_.px(12.0f);
+    for (const Series& s : series_) {
+        const float cy = y0 + 0.55f * fonts.small->FontSize;
+        dl->AddLine(ImVec2(x, cy), ImVec2(x + style_.px(14.0f), cy), s.colour, style_.lw(2.5f));
+        x += style_.px(18.0f);
+        draw_rich_text(dl, fonts, fonts.small, ImVec2(x, y0), c.ink, s.label);
+        x += rich_text_size(fonts, fonts.small, s.label).x + style_.px(10.0f);
+    }
+    // The plotting area; the value range at its left edge.
+    const std::string hi_text = format_number(hi_, 3), lo_text = format_number(lo_, 3);
+    const float label_w = std::max(rich_text_size(fonts, fonts.small, hi_text).x,
+                                   rich_text_size(fonts, fonts.small, lo_text).x);
+    const ImVec2 p0(at.x + pad + label_w + style_.px(6.0f), y0 + fonts.small->FontSize * 1.5f);
+    const ImVec2 p1(at.x + size_.x - pad, at.y + size_.y - pad);
+    if (p1.x - p0.x < 10 || p1.y - p0.y < 10) return;
+    draw_rich_text(dl, fonts, fonts.small, ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, hi_text).x, p0.y - 0.5f * fonts.small->FontSize), c.muted, hi_text);
+    draw_rich_text(dl, fonts, fonts.small, ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, lo_text).x, p1.y - 0.5f * fonts.small->FontSize), c.muted, lo_text);
+    const double t0 = times_.front(), t1 = std::max(times_.back(), t0 + 1e-12);
+    const auto X = [&](double tt) { return p0.x + static_cast<float>((tt - t0) / (t1 - t0)) * (p1.x - p0.x); };
+    const auto Y = [&](double v) { return p1.y - static_cast<float>((v - lo_) / (hi_ - lo_)) * (p1.y - p0.y); };
+    dl->AddLine(ImVec2(p0.x, p1.y), ImVec2(p1.x, p1.y), c.panel_border, style_.lw(1.0f));
+    dl->AddLine(ImVec2(p0.x, p0.y), ImVec2(p0.x, p1.y), c.panel_border, style_.lw(1.0f));
+    if (lo_ < 0 && hi_ > 0)
+        draw_dashed_line(dl, ImVec2(p0.x, Y(0)), ImVec2(p1.x, Y(0)), c.grid, style_.lw(1.0f), style_.px(4.0f), style_.px(4.0f));
+    // At most one point per pixel column.
+    const std::size_t n = times_.size();
+    const std::size_t stride = std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1.0f, p1.x - p0.x)));
+    for (const Series& s : series_) {
+        std::vector<ImVec2> past, all;
+        for (std::size_t k = 0; k < n; k += stride) {
+            const ImVec2 q(X(times_[k]), Y(s.values[k]));
+            all.push_back(q);
+            if (times_[k] <= t) past.push_back(q);
+        }
+        if (all.size() >= 2)
+            dl->AddPolyline(all.data(), static_cast<int>(all.size()), with_alpha(s.colour, 0.25f), 0, style_.lw(1.5f));
+        if (past.size() >= 2)
+            dl->AddPolyline(past.data(), static_cast<int>(past.size()), s.colour, 0, style_.lw(2.0f));
+        // The current value, interpolated between samples.
+        const auto it = std::upper_bound(times_.begin(), times_.end(), t);
+        const std::size_t k = it == times_.begin() ? 0 : static_cast<std::size_t>(it - times_.begin()) - 1;
+        double v = s.values[k];
+        if (k + 1 < n && times_[k + 1] > times_[k]) {
+            const double u = std::clamp((t - times_[k]) / (times_[k + 1] - times_[k]), 0.0, 1.0);
+            v = s.values[k] + u * (s.values[k + 1] - s.values[k]);
+        }
+        dl->AddCircleFilled(ImVec2(X(std::clamp(t, t0, t1)), Y(v)), style_.px(3.5f), s.colour);
+    }
+}
+
+// ---- Time line ----
+
+void TimeLine::prepare(const FontSet& fonts, double duration, std::vector<double> collisions, float width) {
+    duration_ = duration > 0 ? duration : 1.0;
+    collisions_ = std::move(collisions);
+    size_ = ImVec2(width, std::ceil(fonts.small->FontSize * 1.3f + style_.px(12.0f)));
+}
+
+void TimeLine::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const {
+    const Palette& c = style_.colours;
+    const std::string end = format_compact(duration_) + " s";
+    const float end_w = rich_text_size(fonts, fonts.small, end).x;
+    const float zero_w = rich_text_size(fonts, fonts.small, "0").x;
+    const float x0 = at.x + zero_w + style_.px(8.0f);
+    const float x1 = at.x + size_.x - end_w - style_.px(8.0f);
+    const float cy = std::round(at.y + style_.px(8.0f));
+    const float bar = style_.px(3.0f);
+    const auto X = [&](double tt) { return x0 + static_cast<float>(std::clamp(tt / duration_, 0.0, 1.0)) * (x1 - x0); };
+    draw_rich_text(dl, fonts, fonts.small, ImVec2(at.x, cy - 0.55f * fonts.small->FontSize), c.muted, "0");
+    draw_rich_text(dl, fonts, fonts.small, ImVec2(x1 + style_.px(8.0f), cy - 0.55f * fonts.small->FontSize), c.muted, end);
+    dl->AddRectFilled(ImVec2(x0, cy - bar), ImVec2(x1, cy + bar), c.grid, bar);
+    dl->AddRectFilled(ImVec2(x0, cy - bar), ImVec2(X(t), cy + bar), with_alpha(c.velocity, 0.55f), bar);
+    // Collisions: ticks across the bar (the first one a triangle below it).
+    for (std::size_t k = 0; k < collisions_.size(); ++k) {
+        const float x = std::round(X(collisions_[k]));
+        const Colour colour = collisions_[k] <= t ? c.impulse : with_alpha(c.impulse, 0.45f);
+        dl->AddLine(ImVec2(x, cy - 2.2f * bar), ImVec2(x, cy + 2.2f * bar), colour, style_.lw(1.5f));
+        if (k == 0) {
+            const float s = style_.px(5.0f);
+            dl->AddTriangleFilled(ImVec2(x, cy + 2.4f * bar), ImVec2(x - s, cy + 2.4f * bar + 1.4f * s),
+                                  ImVec2(x + s, cy + 2.4f * bar + 1.4f * s), colour);
+        }
+    }
+    dl->AddCircleFilled(ImVec2(X(t), cy), style_.px(6.0f), c.velocity);
+    dl->AddCircle(ImVec2(X(t), cy), style_.px(6.0f), c.background, 0, style_.lw(1.5f));
+    // "collision" under the first tick.
+    if (!collisions_.empty()) {
+        const std::string label = "collisions (" + std::to_string(collisions_.size()) + ")";
+        const float lw = rich_text_size(fonts, fonts.small, label).x;
+        const float lx = std::clamp(X(collisions_.front()) + style_.px(9.0f), x0, x1 - lw);
+        draw_rich_text(dl, fonts, fonts.small, ImVec2(lx, cy + 1.4f * bar), c.muted, label);
     }
 }
 

@@ -1,5 +1,7 @@
-// Overlays drawn with Dear ImGui into the frame: the header (title, time, arrow legends) and
-// the data table (per moving body: m, v, w, p, kinetic energy; then the totals).
+// Overlays drawn with Dear ImGui into the frame: the header (title, time, arrow legends), the
+// data table (per moving body: m, v, w, p, kinetic energy; then the totals), the formula of
+// the first collision with its numbers, plots of energy and momentum against time, and a
+// time line marking the collisions.
 //
 // Both are laid out once for a run (prepare), so that they keep their size and their columns
 // keep their widths and decimals from frame to frame.
@@ -63,6 +65,70 @@ private:
     std::string title_;
     int decimals_ = 3;
     std::vector<LegendEntry> legend_;
+    ImVec2 size_{0, 0};
+};
+
+// The formula of a collision with its numbers substituted (rich text, see draw2d.h): a
+// heading, then lines; a muted note under them (may be empty).
+struct FormulaText {
+    std::string heading;
+    std::vector<std::string> lines;
+    std::string note;
+    bool empty() const { return lines.empty(); }
+};
+
+class FormulaBox {
+public:
+    explicit FormulaBox(const Style& style) : style_(style) {}
+    // Lines wider than max_width are dropped from the top (the last line, the result, stays).
+    void prepare(const FontSet& fonts, FormulaText text, float max_width);
+    ImVec2 size() const { return size_; }
+    void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left) const;
+
+private:
+    Style style_;
+    FormulaText text_;
+    ImVec2 size_{0, 0};
+};
+
+// A small plot of quantities against time: each series over the whole run faint, up to the
+// current time solid, with a dot at the current value; zero marked when in range.
+class Plot {
+public:
+    struct Series {
+        std::string label;  // rich text
+        Colour colour = 0;
+        std::vector<double> values;  // one per time
+    };
+    explicit Plot(const Style& style) : style_(style) {}
+    void prepare(const FontSet& fonts, std::string title, std::vector<double> times,
+                 std::vector<Series> series, ImVec2 size);
+    ImVec2 size() const { return size_; }
+    bool empty() const { return series_.empty(); }
+    void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, double t) const;
+
+private:
+    Style style_;
+    std::string title_;
+    std::vector<double> times_;
+    std::vector<Series> series_;
+    double lo_ = 0, hi_ = 1;
+    ImVec2 size_{0, 0};
+};
+
+// The run from 0 to its duration as a bar across the frame: a tick at every collision (a
+// triangle for the first, whose before / at / after figure is made), the time so far filled.
+class TimeLine {
+public:
+    explicit TimeLine(const Style& style) : style_(style) {}
+    void prepare(const FontSet& fonts, double duration, std::vector<double> collisions, float width);
+    ImVec2 size() const { return size_; }
+    void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, double t) const;
+
+private:
+    Style style_;
+    double duration_ = 1;
+    std::vector<double> collisions_;
     ImVec2 size_{0, 0};
 };
 

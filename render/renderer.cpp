@@ -38,6 +38,10 @@ Renderer::Renderer(GlContext& context, const Scene& scene, const RenderSettings&
         view3d_ = std::make_unique<Scene3dView>(gl, scene_, style_);
     table_ = std::make_unique<DataTable>(scene_, style_);
     header_ = std::make_unique<Header>(style_);
+    formula_ = std::make_unique<FormulaBox>(style_);
+    energy_plot_ = std::make_unique<Plot>(style_);
+    momentum_plot_ = std::make_unique<Plot>(style_);
+    timeline_ = std::make_unique<TimeLine>(style_);
 }
 
 Renderer::~Renderer() = default;
@@ -94,6 +98,68 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     const ImVec2 hs = settings_.header ? header_->size() : ImVec2(0, 0);
     const ImVec2 ts = settings_.table ? table_->size() : ImVec2(0, 0);
 
+    // The bottom strip: the time line across the frame; above it the plots and the formula.
+    float strip = 0;  // its height, margin included
+    if (settings_.timeline) {
+        std::vector<double> times;
+        for (const ImpactMark& im : impacts) times.push_back(im.t);
+        timeline_->prepare(fonts, scene_.duration, times, W - 2 * m);
+        strip += timeline_->size().y;
+        timeline_at_ = ImVec2(m, H - m - strip);
+    }
+    const bool formula = !settings_.formula.empty();
+    if (settings_.plots || formula) {
+        if (formula) formula_->prepare(fonts, settings_.formula, 0.6f * W);
+        const ImVec2 fs = formula ? formula_->size() : ImVec2(0, 0);
+        const float row_h = std::max(fs.y, style_.px(120.0f));
+        float plot_w = 0;
+        if (settings_.plots) {
+            const float room = W - 2 * m - (formula ? fs.x + gap : 0.0f) - gap;
+            plot_w = std::min(style_.px(340.0f), 0.5f * room);
+            if (plot_w < style_.px(160.0f)) plot_w = 0;  // no room: no plots
+        }
+        const float y = H - m - strip - (strip > 0 ? gap * 0.5f : 0.0f) - row_h;
+        if (plot_w > 0) {
+            std::vector<double> t;
+            std::vector<double> ke, pe, total, px, py, pz;
+            for (const FrameState& f : samples) {
+                const FrameTotals sums = frame_totals(scene_, f);
+                t.push_back(f.t);
+                ke.push_back(sums.kinetic);
+                pe.push_back(sums.potential);
+                total.push_back(sums.kinetic + sums.potential);
+                px.push_back(sums.momentum.x());
+                py.push_back(sums.momentum.y());
+                pz.push_back(sums.momentum.z());
+            }
+            std::vector<Plot::Series> energy = {{"E_{k}", c.velocity, ke}};
+            if (scene_.gravity.norm() > 0) {
+                energy.push_back({"E_{p}", c.normal, pe});
+                energy.push_back({"E", c.ink, total});
+            }
+            energy_plot_->prepare(fonts, "energy (J)", t, energy, ImVec2(plot_w, row_h));
+            std::vector<Plot::Series> momentum;
+            if (scene_.dimension == 1) {
+                momentum.push_back({"p", c.velocity, px});
+            } else {
+                momentum.push_back({"p_{x}", c.velocity, px});
+                momentum.push_back({"p_{y}", c.impulse, py});
+                if (scene_.dimension == 3) momentum.push_back({"p_{z}", c.normal, pz});
+            }
+            momentum_plot_->prepare(fonts, "momentum (kg m s\u207B\u00B9)", t, momentum,
+                                    ImVec2(plot_w, row_h));
+            energy_at_ = ImVec2(m, y);
+            momentum_at_ = ImVec2(m + plot_w + gap, y);
+        } else {
+            energy_plot_->prepare(fonts, "", {}, {}, ImVec2(0, 0));
+            momentum_plot_->prepare(fonts, "", {}, {}, ImVec2(0, 0));
+        }
+        formula_at_ = ImVec2(W - m - fs.x, y + row_h - fs.y);
+        strip += row_h + (strip > 0 ? gap * 0.5f : 0.0f);
+    }
+    if (strip > 0) strip += gap;
+    const float bottom = H - strip;  // the views end here
+
     // Two layouts: overlays in a band across the top, or in a column on the right.
     struct Layout {
         ImVec4 view;
@@ -101,7 +167,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     };
     std::vector<Layout> layouts;
     if (hs.x + ts.x == 0) {
-        layouts.push_back({ImVec4(0, 0, W, H), {m, m}, {W - m, m}});
+        layouts.push_back({ImVec4(0, 0, W, bottom), {m, m}, {W - m, m}});
     } else {
         // Band: header left, table right (stacked if they do not fit side by side).
         Layout band;
@@ -115,14 +181,14 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
             band.table_at = ImVec2(m, m + hs.y + gap);
             band_h = hs.y + gap + ts.y;
         }
-        band.view = ImVec4(0, m + band_h, W, H);
+        band.view = ImVec4(0, m + band_h, W, bottom);
         layouts.push_back(band);
         // Column on the right: header above the table.
         const float col_w = std::max(hs.x, ts.x);
         Layout column;
         column.header_at = ImVec2(W - m - col_w, m);
         column.table_at = ImVec2(W - m - ts.x, m + hs.y + (hs.y > 0 ? gap : 0));
-        column.view = ImVec4(0, 0, W - m - col_w - gap, H);
+        column.view = ImVec4(0, 0, W - m - col_w - gap, bottom);
         if (column.view.z > 0.3f * W) layouts.push_back(column);
     }
     double best = -1;
@@ -179,10 +245,24 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
         const ImVec2 s = table_->size();
         labels.reserve(ImVec4(table_at_.x, table_at_.y, table_at_.x + s.x, table_at_.y + s.y));
     }
+    if (!energy_plot_->empty()) {
+        const ImVec2 s = energy_plot_->size();
+        labels.reserve(ImVec4(energy_at_.x, energy_at_.y, momentum_at_.x + s.x, energy_at_.y + s.y));
+    }
+    if (!settings_.formula.empty()) {
+        const ImVec2 s = formula_->size();
+        labels.reserve(ImVec4(formula_at_.x, formula_at_.y, formula_at_.x + s.x, formula_at_.y + s.y));
+    }
     if (view3d_) view3d_->annotate(dl, fonts, frame, decor, &labels);
     else diagram_->draw(dl, fonts, frame, decor, &labels);
     if (settings_.header) header_->draw(dl, fonts, header_at_, frame.t);
     if (settings_.table) table_->draw(dl, fonts, table_at_, frame);
+    if (!energy_plot_->empty()) {
+        energy_plot_->draw(dl, fonts, energy_at_, frame.t);
+        momentum_plot_->draw(dl, fonts, momentum_at_, frame.t);
+    }
+    if (!settings_.formula.empty()) formula_->draw(dl, fonts, formula_at_);
+    if (settings_.timeline) timeline_->draw(dl, fonts, timeline_at_, frame.t);
     imgui_->end();
 }
 

@@ -7,8 +7,10 @@
 // A frame is drawn into a render target (4x MSAA unless anti-aliasing is off): the 3D view's
 // shaded bodies first (when the view is 3D), then everything 2D through Dear ImGui: the
 // diagram (2D view) or the 3D view's labels, the header (title, time, legends) and the data
-// table. Layout: header at the top left, table at the top right, and the view below them or
-// beside them, whichever leaves the scene larger.
+// table; along the bottom the plots of energy and momentum, the formula of the first collision
+// and the time line. Layout: header at the top left, table at the top right, the strip at the
+// bottom, and the view between them or beside the header and table, whichever leaves the
+// scene larger.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +22,7 @@
 #include "render/context.h"
 #include "render/diagram_view.h"
 #include "render/frame_state.h"
+#include "render/overlay.h"
 #include "render/png.h"
 
 namespace collide::render {
@@ -33,6 +36,9 @@ struct RenderSettings {
     ViewKind view = ViewKind::diagram;
     bool header = true;              // title, time, arrow legends
     bool table = true;               // the data table
+    bool plots = true;               // energy and momentum against time (bottom)
+    bool timeline = true;            // the run's time line with its collisions (bottom)
+    FormulaText formula;             // the first collision's formula with numbers (bottom)
     int time_decimals = 3;           // "t = 0.350 s"
     // Font sizes: by default for the frame height; figure panels use the frame's.
     int font_height = 0;             // 0: height
@@ -42,8 +48,6 @@ struct RenderSettings {
 class Scene3dView;  // render/scene3d_view.h
 class ImGuiLayer;
 class RenderTarget;
-class DataTable;
-class Header;
 
 class Renderer {
 public:
@@ -84,7 +88,11 @@ private:
     std::unique_ptr<Scene3dView> view3d_;
     std::unique_ptr<DataTable> table_;
     std::unique_ptr<Header> header_;
+    std::unique_ptr<FormulaBox> formula_;
+    std::unique_ptr<Plot> energy_plot_, momentum_plot_;
+    std::unique_ptr<TimeLine> timeline_;
     ImVec2 header_at_{0, 0}, table_at_{0, 0};
+    ImVec2 formula_at_{0, 0}, energy_at_{0, 0}, momentum_at_{0, 0}, timeline_at_{0, 0};
     ImVec4 view_rect_{0, 0, 0, 0};
 };
 

@@ -346,7 +346,10 @@ struct Scene3dView::Impl {
     ImVec4 viewport{0, 0, 1, 1};
     int frame_w = 1, frame_h = 1;
     Vec3f eye = Vec3f(0, 0, 5), target = Vec3f::Zero();
-    Mat4f view_projection = Mat4f::Identity();
+    Mat4f view_projection = Mat4f::Identity();   // clip space of the viewport (project())
+    // The same camera drawn on the whole frame: the ground and grid run to the frame's edges
+    // while the scene stays framed in the viewport (an off-centre projection).
+    Mat4f frame_projection = Mat4f::Identity();
     Vec3f key_light, fill_light;
     double radius = 1.0;           // of the framed region (m)
     Vec3 centre = Vec3::Zero();
@@ -617,6 +620,14 @@ struct Scene3dView::Impl {
         const float far = distance + 8.0f * static_cast<float>(radius);
         view_projection = perspective(static_cast<float>(kFovY), vw / vh, near, far) *
                           look_at(eye, target, Vec3f(0, 1, 0));
+        // Viewport clip coordinates -> frame clip coordinates (x right, y up).
+        const float W = static_cast<float>(frame_w), H = static_cast<float>(frame_h);
+        Mat4f to_frame = Mat4f::Identity();
+        to_frame(0, 0) = vw / W;
+        to_frame(0, 3) = (2.0f * viewport.x + vw) / W - 1.0f;
+        to_frame(1, 1) = vh / H;
+        to_frame(1, 3) = 1.0f - (2.0f * viewport.y + vh) / H;
+        frame_projection = to_frame * view_projection;
     }
     static constexpr double kFovY = 30.0 * kPi / 180.0;
 
@@ -645,9 +656,9 @@ struct Scene3dView::Impl {
         if (lines.empty()) return;
         gl.UseProgram(line_program);
         gl.UniformMatrix4fv(gl.GetUniformLocation(line_program, "view_projection"), 1, GL_FALSE,
-                            view_projection.data());
-        gl.Uniform2f(gl.GetUniformLocation(line_program, "viewport"), viewport.z - viewport.x,
-                     viewport.w - viewport.y);
+                            frame_projection.data());
+        gl.Uniform2f(gl.GetUniformLocation(line_program, "viewport"), static_cast<float>(frame_w),
+                     static_cast<float>(frame_h));
         gl.Uniform1f(gl.GetUniformLocation(line_program, "depth_bias"), bias);
         if (depth_test) gl.Enable(GL_DEPTH_TEST);
         else gl.Disable(GL_DEPTH_TEST);
@@ -666,7 +677,7 @@ struct Scene3dView::Impl {
     void use_mesh_program() {
         gl.UseProgram(mesh_program);
         gl.UniformMatrix4fv(gl.GetUniformLocation(mesh_program, "view_projection"), 1, GL_FALSE,
-                            view_projection.data());
+                            frame_projection.data());
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "eye"), eye.x(), eye.y(), eye.z());
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "key_light"), key_light.x(), key_light.y(), key_light.z());
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "fill_light"), fill_light.x(), fill_light.y(), fill_light.z());
@@ -871,8 +882,7 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
     Impl& I = *impl_;
     const Gl& gl = I.gl;
     const Palette& pal = I.style.colours;
-    gl.Viewport(static_cast<GLint>(I.viewport.x), static_cast<GLint>(static_cast<float>(I.frame_h) - I.viewport.w),
-                static_cast<GLsizei>(I.viewport.z - I.viewport.x), static_cast<GLsizei>(I.viewport.w - I.viewport.y));
+    gl.Viewport(0, 0, I.frame_w, I.frame_h);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LEQUAL);
     gl.DepthMask(GL_TRUE);
@@ -897,7 +907,7 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
         u3("ground", colour3(rgb(238, 238, 233)));
         u3("line_colour", colour3(rgb(168, 170, 174)));
         gl.UniformMatrix4fv(gl.GetUniformLocation(I.ground_program, "view_projection"), 1, GL_FALSE,
-                            I.view_projection.data());
+                            I.frame_projection.data());
         gl.Uniform1f(gl.GetUniformLocation(I.ground_program, "spacing"), static_cast<float>(I.grid_spacing));
         gl.Uniform1f(gl.GetUniformLocation(I.ground_program, "fade"), e);
         gl.BindVertexArray(I.ground_vao);
@@ -910,7 +920,7 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
         // Shadows: one soft disc under each body, darker and smaller the nearer it is.
         gl.UseProgram(I.shadow_program);
         gl.UniformMatrix4fv(gl.GetUniformLocation(I.shadow_program, "view_projection"), 1, GL_FALSE,
-                            I.view_projection.data());
+                            I.frame_projection.data());
         gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "axis_u"), static_cast<float>(I.ground_u.x()),
                      static_cast<float>(I.ground_u.y()), static_cast<float>(I.ground_u.z()));
         gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "axis_v"), static_cast<float>(I.ground_v.x()),

@@ -54,6 +54,8 @@ RenderSettings small(int w, int h) {
     s.samples = 0;
     s.header = false;
     s.table = false;
+    s.plots = false;
+    s.timeline = false;
     return s;
 }
 
@@ -312,6 +314,45 @@ angle = 0.0
                     break;
                 }
     EXPECT_LE(off, got.width * got.height / 200) << off << " pixels differ; see " << golden;
+}
+
+// The time line's marker: solid velocity-blue pixels in the bottom strip; their centre.
+double time_marker_x(const Image& im) {
+    const Palette palette;
+    double n = 0, sx = 0;
+    for (int y = im.height - 60; y < im.height; ++y)
+        for (int x = 0; x < im.width; ++x)
+            if (test::near_colour(im.pixel(x, y), palette.velocity, 12)) n += 1, sx += x + 0.5;
+    return n > 0 ? sx / n : -1;
+}
+
+TEST_F(RenderTest, TheTimeLineMarksTheTimeInProportionAndTheFormulaEndsInTheImpulseColour) {
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");  // duration 1 s
+    RenderSettings s = small(640, 360);
+    s.timeline = true;
+    s.formula = {"Collision", {"j = \u2212(1 + e) u_{n} / D", "P = 1 N s"}, ""};
+    Renderer r(*context_, scene, s);
+    const std::vector<Body2> bodies{scene.bodies[0].body2, scene.bodies[1].body2};
+    std::vector<FrameState> frames;
+    for (double t : {0.25, 0.5, 0.75}) frames.push_back(frame_state(scene, t, bodies));
+    r.prepare(frames, {});
+    std::vector<double> x;
+    for (const FrameState& f : frames) x.push_back(time_marker_x(r.render(f, bare())));
+    // Linear in time: equal steps, about half the frame's width from t = 0.25 to 0.75.
+    ASSERT_GT(x[0], 0);
+    EXPECT_NEAR(x[1] - x[0], x[2] - x[1], 1.5);
+    EXPECT_GT(x[2] - x[0], 0.4 * 640);
+    EXPECT_LT(x[2] - x[0], 0.5 * 640);
+    // The formula's last line (the result) is drawn in the impulse's colour, at the bottom right.
+    const Image im = r.render(frames[0], bare());
+    int red = 0;  // reddish pixels: the impulse colour, anti-aliased on paper
+    for (int y = im.height / 2; y < im.height; ++y)
+        for (int x2 = im.width / 2; x2 < im.width; ++x2) {
+            const std::uint8_t* p = im.pixel(x2, y);
+            red += p[0] > p[1] + 60 && p[0] > p[2] + 60;
+        }
+    EXPECT_GT(red, 15);
+    if (const char* dump = std::getenv("COLLIDE_TEST_DUMP")) write_png_atomic(dump, im.width, im.height, im.rgba.data());
 }
 
 }  // namespace

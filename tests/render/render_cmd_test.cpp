@@ -85,6 +85,17 @@ TEST(RenderCommand, WritesFramesStillsFigureAndData) {
     ASSERT_EQ(j["events"].size(), 1u);
     EXPECT_EQ(j["events"][0]["a"], "a");
     EXPECT_NEAR(j["frames"][5]["t"].get<double>(), 0.5, 1e-12);
+    // The worked example of the collision: equal discs, e = 1, so j = -(1 + e) u_n / D with
+    // D = 2/m is -u_n; the event's impulse along the normal is the same number.
+    std::ifstream md_in(dir / "out/worked-example.md");
+    const std::string md((std::istreambuf_iterator<char>(md_in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(md.find("# a and b at t = "), std::string::npos) << md;
+    EXPECT_NE(md.find("model frictionless, e = 1"), std::string::npos) << md;
+    const auto& ev = j["events"][0];
+    const double jn = ev["impulse"][0].get<double>() * ev["normal"][0].get<double>() +
+                      ev["impulse"][1].get<double>() * ev["normal"][1].get<double>();
+    const double ua = ev["before"]["a"]["v"][0].get<double>() * ev["normal"][0].get<double>();
+    EXPECT_NEAR(jn, ua, 1e-9);  // -u_n = the approach speed along n (b at rest, m = 1)
     // Nothing half-written is left behind.
     for (const auto& e : fs::recursive_directory_iterator(dir / "out"))
         EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << e.path();

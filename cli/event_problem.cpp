@@ -1,0 +1,112 @@
+#include "cli/event_problem.h"
+
+#include <cstdio>
+
+namespace collide {
+
+namespace {
+
+SolveBody solve_body(const Scene& scene, std::size_t i, const CollisionInstant::Side& s) {
+    const SceneBody& sb = scene.bodies[i];
+    SolveBody out;
+    out.name = sb.name;
+    out.shape = sb.shape;
+    // Every dimension's member is filled, as the solve-file parser does: the worked example
+    // reads positions and velocities from b3 whatever the dimension.
+    const double mass = scene.dimension == 1   ? sb.body1.mass
+                        : scene.dimension == 2 ? sb.body2.mass
+                                               : sb.body3.mass;
+    const bool is_static = sb.is_static();
+    out.b1 = Body1{mass, is_static, s.x.x(), s.v.x()};
+    out.b2.mass = mass;
+    out.b2.is_static = is_static;
+    out.b2.inertia = sb.body2.inertia;
+    out.b2.angle = s.angle;
+    out.b2.position = s.x.head<2>();
+    out.b2.v = s.v.head<2>();
+    out.b2.w = s.w.z();
+    out.b3.mass = mass;
+    out.b3.is_static = is_static;
+    // A 2D body as a 3D one in the xy plane: an isotropic inertia equal to its moment.
+    out.b3.inertia = scene.dimension == 3 ? sb.body3.inertia : Mat3(Mat3::Identity() * sb.body2.inertia);
+    out.b3.orientation = s.q;
+    out.b3.position = s.x;
+    out.b3.v = s.v;
+    out.b3.w = s.w;
+    return out;
+}
+
+Vec3 lift(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
+Vec3 lift(double w) { return Vec3(0.0, 0.0, w); }
+Vec3 lift(const Vec3& v) { return v; }
+
+void place(CollisionInstant::Side* side, const Body2& b) {
+    side->x = lift(b.position);
+    side->angle = b.angle;
+    side->q = Quat(Eigen::AngleAxisd(b.angle, Vec3::UnitZ()));
+}
+void place(CollisionInstant::Side* side, const Body3& b) {
+    side->x = b.position;
+    side->q = b.orientation;
+}
+
+template <int D, class Body>
+CollisionInstant instant(const Event<D>& e, const std::vector<Body>& bodies) {
+    CollisionInstant c;
+    c.t = e.t;
+    c.a = e.a;
+    c.b = e.b;
+    c.point = lift(e.point);
+    c.normal = lift(e.normal);
+    c.impulse = lift(e.impulse);
+    c.before_a.v = lift(e.before_a.v);
+    c.before_a.w = lift(e.before_a.w);
+    c.before_b.v = lift(e.before_b.v);
+    c.before_b.w = lift(e.before_b.w);
+    place(&c.before_a, bodies[e.a]);
+    place(&c.before_b, bodies[e.b]);
+    return c;
+}
+
+}  // namespace
+
+CollisionInstant collision_instant(const Event1& e, const std::vector<Body1>& bodies) {
+    CollisionInstant c;
+    c.t = e.t;
+    c.a = e.a;
+    c.b = e.b;
+    c.point = Vec3(e.point, 0.0, 0.0);
+    c.normal = Vec3::UnitX();  // a is the left block
+    c.impulse = Vec3(e.impulse, 0.0, 0.0);
+    c.before_a.v = Vec3(e.va_before, 0.0, 0.0);
+    c.before_b.v = Vec3(e.vb_before, 0.0, 0.0);
+    c.before_a.x = Vec3(bodies[e.a].position, 0.0, 0.0);
+    c.before_b.x = Vec3(bodies[e.b].position, 0.0, 0.0);
+    return c;
+}
+CollisionInstant collision_instant(const Event2& e, const std::vector<Body2>& bodies) {
+    return instant(e, bodies);
+}
+CollisionInstant collision_instant(const Event3& e, const std::vector<Body3>& bodies) {
+    return instant(e, bodies);
+}
+
+SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c) {
+    SolveProblem p;
+    p.file = scene.title;
+    char when[64];
+    std::snprintf(when, sizeof when, "%.6g", c.t);
+    p.title = scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + " at t = " + when + " s";
+    p.dimension = scene.dimension;
+    p.model = scene.model;
+    p.restitution = scene.pair_restitution(c.a, c.b);
+    p.friction = scene.pair_friction(c.a, c.b);
+    p.normal = scene.dimension == 1 ? Vec3::UnitX() : c.normal;
+    p.point = c.point;
+    p.about = Vec3::Zero();
+    p.a = solve_body(scene, c.a, c.before_a);
+    p.b = solve_body(scene, c.b, c.before_b);
+    return p;
+}
+
+}  // namespace collide

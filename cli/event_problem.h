@@ -1,0 +1,45 @@
+// One collision of a run, as `collide solve` would be given it: so the figures of a scenario
+// (the formula overlay, the worked example of `collide render`) show the same worked example,
+// computed by the same engine functions, as `collide solve`.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "cli/solve_problem.h"
+#include "engine/scene.h"
+#include "engine/world.h"
+#include "engine/world1d.h"
+
+namespace collide {
+
+// The two bodies at the instant of a collision event, every vector embedded in 3D
+// (1D: along x; 2D: the xy plane, spins along z).
+struct CollisionInstant {
+    double t = 0.0;                      // s
+    std::size_t a = 0, b = 0;            // scene indices; the normal points from a into b
+    Vec3 point = Vec3::Zero();           // m (1D: unused)
+    Vec3 normal = Vec3::UnitX();         // unit (1D: +x, b is to the right of a)
+    Vec3 impulse = Vec3::Zero();         // N s on b: what the world applied
+    struct Side {
+        Vec3 x = Vec3::Zero();           // m, centre of mass at the instant
+        Quat q = Quat::Identity();       // orientation (2D: about +z by `angle`)
+        double angle = 0.0;              // rad, 2D
+        Vec3 v = Vec3::Zero(), w = Vec3::Zero();  // just before the impulse
+    } before_a, before_b;
+};
+
+// An event of a world with its bodies where they touch: indices, point, normal, impulse and
+// velocities before from the event; positions and orientations from `bodies`, the world's
+// bodies at the event's instant.
+CollisionInstant collision_instant(const Event1& e, const std::vector<Body1>& bodies);
+CollisionInstant collision_instant(const Event2& e, const std::vector<Body2>& bodies);
+CollisionInstant collision_instant(const Event3& e, const std::vector<Body3>& bodies);
+
+// The problem: the bodies' masses and inertia from the scene, their state from `c`, the
+// pair's restitution and friction (Scene::pair_restitution / pair_friction), the scene's
+// model; angular momentum about the origin.
+SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c);
+
+}  // namespace collide
