@@ -112,6 +112,11 @@ int main(int argc, char** argv) {
                        "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, "
                        "3d for 3D")
         ->check(CLI::IsMember({"2d", "3d"}));
+    render->add_option("--format", render_options.format,
+                       "png (the frames), or also DIR/animation.mp4 or DIR/animation.gif "
+                       "(needs ffmpeg)")
+        ->check(CLI::IsMember({"png", "mp4", "gif"}))
+        ->capture_default_str();
     render->add_option("--backend", render_options.backend,
                        "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)")
         ->check(CLI::IsMember({"osmesa", "egl"}))
@@ -121,7 +126,8 @@ int main(int argc, char** argv) {
                      "write into a directory that is not empty (replacing our files)");
     render->footer(
         "Writes DIR/frames/frame_00000.png ..., DIR/before.png, DIR/at.png, DIR/after.png,\n"
-        "DIR/figure.png (the three side by side), DIR/data.csv, DIR/data.json, DIR/events.csv.\n"
+        "DIR/figure.png (the three side by side), DIR/worked-example.md, DIR/data.csv,\n"
+        "DIR/data.json, DIR/events.csv, and DIR/animation.mp4 or .gif with --format.\n"
         "Every file is written under a temporary name and renamed when complete.\n"
         "Example: collide render lessons/scenes/billiards-2d.toml -o out/billiards");
 

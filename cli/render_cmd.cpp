@@ -24,6 +24,7 @@
 #include "render/frame_state.h"
 #include "render/png.h"
 #include "render/renderer.h"
+#include "render/video.h"
 
 namespace collide {
 
@@ -291,7 +292,8 @@ void prepare_directory(const RenderOptions& o) {
         const std::string name = e.path().filename().string();
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
-    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "worked-example.md"})
+    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "worked-example.md",
+                             "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
 }
 
@@ -446,6 +448,16 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
         render::GlBackend backend;
         if (!render::parse_gl_backend(o.backend, &backend))
             throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
+        if (o.format != "png" && o.format != "mp4" && o.format != "gif")
+            throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + o.format + "'");
+        std::string ffmpeg;
+        if (o.format != "png") {
+            ffmpeg = render::find_program("ffmpeg");
+            if (ffmpeg.empty())
+                throw InputError(kCommand, {}, "--format",
+                                 o.format + " is made by ffmpeg, which is not installed (Debian: "
+                                            "apt-get install ffmpeg); --format png writes the frames alone");
+        }
 
         const Scene scene = parse_scene_file(o.scenario);
         Scene timing = scene;
@@ -483,6 +495,14 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
         }
         const double seconds = write_outputs(o, scene, times, run, moments.get(), worked.get(), err);
+        const std::string video = o.format == "png" ? "" : "animation." + o.format;
+        if (!video.empty()) {
+            const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+            if (terminal) err << "encoding " << video << " with ffmpeg ...\n";
+            render::encode_video(ffmpeg, o.out_dir + "/frames", o.fps,
+                                 o.format == "mp4" ? render::VideoFormat::mp4 : render::VideoFormat::gif,
+                                 o.out_dir + "/" + video);
+        }
         if (!o.quiet) {
             char rate[64];
             std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", seconds,
@@ -490,7 +510,9 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             out << "wrote " << times.size() << " frames (" << width << "x" << height << ")" << rate
                 << " to " << o.out_dir << "/frames";
             if (moments) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
-            out << ", data.csv, data.json, events.csv\n";
+            out << ", data.csv, data.json, events.csv";
+            if (!video.empty()) out << ", " << video;
+            out << "\n";
         }
         return 0;
     } catch (const InputError& e) {

@@ -6,6 +6,8 @@
 //   DIR/figure.png                   those three side by side with captions
 //   DIR/data.csv, DIR/data.json      the sampled states (as `collide step --json`) and events
 //   DIR/events.csv                   the collision events
+//   DIR/worked-example.md            the first collision worked out (as `collide solve`)
+//   DIR/animation.mp4 or .gif        with --format mp4 or gif (needs ffmpeg)
 #pragma once
 
 #include <iosfwd>
@@ -23,6 +25,8 @@ struct RenderOptions {
     // (level 6, adaptive filters) and 4x slower to encode (two encoder threads).
     std::string quality = "medium";
     std::string view;              // --view: 2d or 3d; empty: 2d for 1D and 2D scenes, 3d for 3D
+    std::string format = "png";    // --format: png (frames only), mp4 or gif (also
+                                   // DIR/animation.mp4 or .gif, through ffmpeg)
     bool quiet = false;            // --quiet: no progress bar, no summary
     bool force = false;            // --force: write into a non-empty DIR (replacing our files)
     std::string backend = "osmesa";  // OpenGL context: osmesa or egl

@@ -17,8 +17,8 @@ packages=(
   libimgui-dev                      # renderer: overlays and labels (Dear ImGui 1.86)
   libfreetype-dev                   # renderer: font rasterisation beside ImGui
   fonts-dejavu-core                 # renderer: the label font (DejaVu Sans, Greek, sub/superscripts)
+  ffmpeg                            # collide render --format mp4|gif (optional for the build)
 )
-# Optional, not installed here: ffmpeg (collide render --format mp4|gif).
 
 missing=()
 for p in "${packages[@]}"; do

@@ -1,6 +1,7 @@
 // `collide render` end to end on tiny scenes: the files it writes, and its refusals.
 #include "cli/render_cmd.h"
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "render/png.h"
+#include "render/video.h"
 #include "test_util.h"
 
 namespace collide {
@@ -213,9 +215,44 @@ TEST(RenderCommand, BadInputIsRefusedWithExitCode2) {
     o = tiny(scenario, dir / "out");
     o.view = "4d";
     refuse(o, "--view");
+    o = tiny(scenario, dir / "out");
+    o.format = "avi";
+    refuse(o, "--format");
+    {
+        // Without ffmpeg on the PATH, mp4 is refused before anything is written.
+        const std::string path = std::getenv("PATH") ? std::getenv("PATH") : "";
+        setenv("PATH", (dir / "empty").c_str(), 1);
+        o = tiny(scenario, dir / "out");
+        o.format = "mp4";
+        refuse(o, "ffmpeg, which is not installed");
+        setenv("PATH", path.c_str(), 1);
+    }
     refuse(tiny(broken, dir / "out"), "broken.toml");
     refuse(tiny(dir / "absent.toml", dir / "out"), "absent.toml");
     EXPECT_FALSE(fs::exists(dir / "out"));  // nothing written on bad input
+}
+
+// MP4 and GIF go through ffmpeg (installed by scripts/install-deps.sh). The files must be
+// what they say they are: an MP4 has an 'ftyp' box at offset 4, a GIF starts with GIF89a.
+TEST(RenderCommand, Mp4AndGifAreEncodedByFfmpeg) {
+    if (render::find_program("ffmpeg").empty()) GTEST_SKIP() << "ffmpeg is not installed";
+    render::test::TempDir dir;
+    const std::string scenario = write(dir, "s.toml", kCollision2d);
+    for (const std::string format : {"mp4", "gif"}) {
+        RenderOptions o = tiny(scenario, dir / format);
+        o.size = "161x121";  // odd: MP4 needs even sizes, rounded down by the encoder
+        o.format = format;
+        std::ostringstream out, err;
+        ASSERT_EQ(run_render(o, out, err), 0) << err.str();
+        std::ifstream in(dir / (format + "/animation." + format), std::ios::binary);
+        std::string head(12, '\0');
+        in.read(head.data(), 12);
+        ASSERT_TRUE(in) << format;
+        if (format == "mp4") EXPECT_EQ(head.substr(4, 4), "ftyp");
+        else EXPECT_EQ(head.substr(0, 6), "GIF89a");
+        for (const auto& e : fs::recursive_directory_iterator(dir / format))
+            EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << e.path();
+    }
 }
 
 TEST(RenderCommand, SizePresetsAndWxH) {
