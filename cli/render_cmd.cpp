@@ -1,5 +1,6 @@
 #include "cli/render_cmd.h"
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -512,6 +513,10 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             if (moments) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
             out << ", data.csv, data.json, events.csv";
             if (!video.empty()) out << ", " << video;
+            // Peak resident memory of the whole process (Linux: kilobytes).
+            rusage usage{};
+            if (getrusage(RUSAGE_SELF, &usage) == 0)
+                out << "; peak memory " << (usage.ru_maxrss + 512) / 1024 << " MB";
             out << "\n";
         }
         return 0;
