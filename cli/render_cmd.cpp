@@ -305,8 +305,9 @@ std::string fixed_text(double x, int decimals) {
 }
 
 // Returns the seconds spent on the frame sequence (rendering, encoding, writing).
-double write_outputs(const RenderOptions& o, const Scene& scene, const std::vector<double>& times,
-                     Run& run, const Moments* moments, const WorkedExample* worked,
+double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView& view,
+                     const std::vector<double>& times, Run& run, const Moments* moments,
+                     const WorkedExample* worked,
                      std::ostream& err) {
     const Quality q = quality_of(o.quality);
     int width = 0, height = 0;
@@ -326,6 +327,7 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const std::vect
     // Time with enough decimals to change from frame to frame.
     settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
     if (worked) settings.formula = worked->formula;
+    settings.camera = {view.camera_azimuth, view.camera_elevation, view.camera_target, view.camera_distance};
     render::Renderer renderer(*context, scene, settings);
     renderer.prepare(run.frames, run.impacts);
 
@@ -366,6 +368,7 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const std::vect
             render::add_trails(run.frames, trail, &f);
             render::Decor d;
             d.velocities = k != 1;  // at the instant: the impulse, not the velocities
+            d.directions = view.directions;
             const render::Image image = renderer.render(f, d);
             render::write_png_atomic(o.out_dir + "/" + names[k], image.width, image.height,
                                      image.rgba.data(), q.png);
@@ -377,6 +380,7 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const std::vect
         panel.plots = false;
         panel.timeline = false;
         panel.formula = {};
+        panel.directions = view.directions;
         panel.font_height = height;
         std::vector<FrameState> three(moments->states, moments->states + 3);
         // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
@@ -399,12 +403,19 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const std::vect
             panels.push_back(panels_renderer.render(moments->states[k], d));
         }
         const int decimals = settings.time_decimals + 1;
+        std::vector<std::string> notes = {"t = " + fixed_text(moments->before, decimals) + " s",
+                                          "t = " + fixed_text(moments->at, decimals) + " s",
+                                          "t = " + fixed_text(moments->after, decimals) + " s"};
+        if (view.directions && scene.dimension == 1) {
+            // The page's captions: a (the left block) catches b before, and does not pass it
+            // after. The arrows show the positive direction; the velocities may be negative.
+            const std::size_t a = moments->instant.a, b = moments->instant.b;
+            const double va = moments->states[2].bodies[a].v.x(), vb = moments->states[2].bodies[b].v.x();
+            notes[0] += "     v_{ai} > v_{bi}";
+            notes[2] += va <= vb ? "     v_{af} \u2264 v_{bf}" : "     v_{af} > v_{bf}";
+        }
         const render::Image figure = render::compose_figure(
-            *context, panels, {"before", "at collision", "after"},
-            {"t = " + fixed_text(moments->before, decimals) + " s",
-             "t = " + fixed_text(moments->at, decimals) + " s",
-             "t = " + fixed_text(moments->after, decimals) + " s"},
-            height);
+            *context, panels, {"before", "at collision", "after"}, notes, height);
         render::write_png_atomic(o.out_dir + "/figure.png", figure.width, figure.height,
                                  figure.rgba.data(), q.png);
     }
@@ -460,7 +471,8 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
                                             "apt-get install ffmpeg); --format png writes the frames alone");
         }
 
-        const Scene scene = parse_scene_file(o.scenario);
+        SceneView view;
+        const Scene scene = parse_scene_file(o.scenario, &view);
         Scene timing = scene;
         timing.output_dt = 1.0 / o.fps;
         const std::vector<double> times = output_times(timing);
@@ -495,7 +507,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             write_markdown(worked->problem, worked->solution, md);
             render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
         }
-        const double seconds = write_outputs(o, scene, times, run, moments.get(), worked.get(), err);
+        const double seconds = write_outputs(o, scene, view, times, run, moments.get(), worked.get(), err);
         const std::string video = o.format == "png" ? "" : "animation." + o.format;
         if (!video.empty()) {
             const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);

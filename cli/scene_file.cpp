@@ -191,13 +191,33 @@ double overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
 
 }  // namespace
 
-Scene parse_scene_text(const std::string& text, const std::string& name) {
+SceneView read_view(const TableReader& root, int dim) {
+    SceneView v;
+    const auto t = root.table("view");
+    if (!t) return v;
+    t->allow_only({"camera_azimuth", "camera_elevation", "camera_target", "camera_distance",
+                   "directions"});
+    const auto bounded = [&](const char* key, double lo, double hi, const std::string& what) {
+        const std::optional<double> x = t->number(key, what);
+        if (x && (*x < lo || *x > hi))
+            t->fail(key, "expected " + what + " between " + show(lo) + " and " + show(hi) + ", got " + show(*x));
+        return x;
+    };
+    v.camera_azimuth = bounded("camera_azimuth", -360.0, 360.0, "an angle in degrees");
+    v.camera_elevation = bounded("camera_elevation", -89.0, 89.0, "an angle in degrees");
+    v.camera_target = read_vec(*t, "camera_target", dim, "m");
+    if (t->has("camera_distance")) v.camera_distance = read_positive(*t, "camera_distance", "a distance in m");
+    v.directions = t->boolean("directions").value_or(false);
+    return v;
+}
+
+Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view) {
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
     if (!root.has("scene") && (root.has("a") || root.has("dimension")))
         root.fail("", "this is a collision file (dimension, [a], [b] at the top): run it with "
                       "'collide solve'; scenario files have a [scene] table and [[body]] tables");
-    root.allow_only({"scene", "body"});
+    root.allow_only({"scene", "body", "view"});
     auto sc = root.table("scene");
     if (!sc) root.fail("", "missing table [scene]");
     sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "policy",
@@ -221,6 +241,8 @@ Scene parse_scene_text(const std::string& text, const std::string& name) {
     read_material(*sc, &e, &mu);
     s.restitution = e.value_or(1.0);
     s.friction = mu.value_or(0.0);
+    const SceneView shown = read_view(root, s.dimension);
+    if (view) *view = shown;
 
     const toml::node* list = root.node("body");
     const toml::array* bodies = list ? list->as_array() : nullptr;
@@ -251,10 +273,10 @@ Scene parse_scene_text(const std::string& text, const std::string& name) {
     return s;
 }
 
-Scene parse_scene_file(const std::string& path) {
+Scene parse_scene_file(const std::string& path, SceneView* view) {
     std::string name;
     const std::string text = read_input_file(path, &name);
-    return parse_scene_text(text, name);
+    return parse_scene_text(text, name, view);
 }
 
 }  // namespace collide

@@ -1,15 +1,27 @@
 // Scenario files (TOML): a [scene] table and [[body]] tables. Format: README.md.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "engine/scene.h"
 
 namespace collide {
 
+// How the scenario asks to be shown: the optional [view] table (README.md), read by
+// `collide render`. Unset camera values are chosen from the scene's extent.
+struct SceneView {
+    std::optional<double> camera_azimuth;    // degrees, -360..360: turned right of the front (+z)
+    std::optional<double> camera_elevation;  // degrees, -89..89: above the horizon
+    std::optional<Vec3> camera_target;       // m: the point looked at
+    std::optional<double> camera_distance;   // m from the target, > 0
+    bool directions = false;  // the page's positive-direction arrows in the figure's panels
+};
+
 // Parses and validates; throws InputError naming file, line, column and key. Beyond the
 // per-key checks: unique names, static bodies at rest, no two bodies overlapping at the start.
-Scene parse_scene_file(const std::string& path);
-Scene parse_scene_text(const std::string& text, const std::string& name);
+// `view`, when given, receives the [view] table (which is checked either way).
+Scene parse_scene_file(const std::string& path, SceneView* view = nullptr);
+Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view = nullptr);
 
 }  // namespace collide

@@ -280,6 +280,11 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
             const Vec2 tip = xy(f.bodies[i].x + k_velocity_ * f.bodies[i].v);
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
+            if (directions_room_ && scene_.dimension == 1) {  // the arrows over the blocks
+                Vec2 l(inf, inf), h(-inf, -inf);
+                extent(i, f.bodies[i], &l, &h);
+                hi.y() = std::max(hi.y(), h.y() + style_.px(60.0f) / s0);
+            }
             if (std::abs(f.bodies[i].w.z()) > 0) {  // the spin arc
                 const Vec2 c = xy(f.bodies[i].x);
                 const double r = reach(i) + style_.px(14.0f) / s0;
@@ -556,6 +561,43 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
                 pending.push_back({from - ImVec2(0, r), ImVec2(0, -1),
                                    "\u03C9 = " + format_number(w) + " rad s\u207B\u00B9", c.spin, fonts.text});
             }
+        }
+    }
+    // Positive directions. 1D: an arrow along +x above each moving block ("+v"), as in the
+    // page's figure. 2D: one glyph in the view's lower left corner: +x, +y and the
+    // counter-clockwise sense of +ω (velocities and spins are measured that way).
+    std::vector<std::pair<ImVec2, std::string>> direction_labels;  // top-left, text
+    if (decor.directions && scene_.dimension == 1) {
+        for (std::size_t i = 0; i < n; ++i) {
+            if (scene_.bodies[i].is_static() || kind(i) == Kind::none) continue;
+            const BodyState& s = frame.bodies[i];
+            Vec2 l(1e300, 1e300), h(-1e300, -1e300);
+            extent(i, s, &l, &h);
+            const ImVec2 top = to_screen(Vec3(s.x.x(), h.y(), 0));
+            const float len = style_.px(56.0f);
+            const ImVec2 a0(top.x - 0.5f * len, top.y - style_.px(34.0f));
+            draw_arrow(dl, a0, a0 + ImVec2(len, 0), c.muted, style_.lw(2.0f), hl * 0.8f, hw * 0.8f);
+            pending.push_back({a0 + ImVec2(len, 0), ImVec2(1, 0), "+v", c.muted, fonts.text});
+        }
+    }
+    if (decor.directions && scene_.dimension == 2) {
+        const float L = style_.px(46.0f), r = style_.px(13.0f);
+        const ImVec2 o(viewport_.x + style_.px(36.0f), viewport_.w - style_.px(36.0f));
+        draw_arrow(dl, o, o + ImVec2(L, 0), c.muted, style_.lw(2.0f), hl * 0.75f, hw * 0.75f);
+        draw_arrow(dl, o, o - ImVec2(0, L), c.muted, style_.lw(2.0f), hl * 0.75f, hw * 0.75f);
+        const ImVec2 arc = o + ImVec2(0.55f * L, -0.55f * L);
+        draw_curved_arrow(dl, arc, r, static_cast<float>(-0.6 * kPi), static_cast<float>(0.9 * kPi), c.muted,
+                          style_.lw(1.8f), hl * 0.6f, hw * 0.6f);
+        const float fh = fonts.text->FontSize;
+        direction_labels.push_back({o + ImVec2(L + style_.px(6.0f), -0.5f * fh), "+x"});
+        direction_labels.push_back({o + ImVec2(-0.5f * rich_text_size(fonts, fonts.text, "+y").x, -L - fh - style_.px(4.0f)), "+y"});
+        direction_labels.push_back({arc + ImVec2(r + style_.px(5.0f), -r - 0.3f * fh), "+\u03C9"});
+    }
+    for (const auto& [at, text] : direction_labels) {
+        draw_rich_text(dl, fonts, fonts.text, ImVec2(std::round(at.x), std::round(at.y)), c.muted, text);
+        if (labels) {
+            const ImVec2 sz = rich_text_size(fonts, fonts.text, text);
+            labels->reserve(ImVec4(at.x, at.y, at.x + sz.x, at.y + sz.y));
         }
     }
     dl->PopClipRect();

@@ -34,6 +34,10 @@ struct Decor {
     bool trails = true;
     bool labels = true;      // values and names
     bool com = true;         // centre-of-mass markers
+    // The positive directions, as in the page's "Directions" figures: 1D, over each moving
+    // block an arrow along +x ("+v": velocities are measured that way, and may be negative);
+    // 2D, one glyph in the corner: +x, +y and the counter-clockwise arc of +ω.
+    bool directions = false;
 };
 
 class DiagramView {
@@ -44,6 +48,8 @@ public:
     // x0, y0, x1, y1). Impacts set the impulse scale. Call before draw().
     void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
              ImVec4 viewport);
+    // Leave room above the moving bodies for the positive-direction arrows (Decor::directions).
+    void reserve_directions(bool on) { directions_room_ = on; }
 
     void draw(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
               LabelPlacer* labels) const;
@@ -84,6 +90,7 @@ private:
     Style style_;
     ImVec4 viewport_{0, 0, 1, 1};
     Vec2 centre_ = Vec2::Zero();  // world point at the viewport's centre
+    bool directions_room_ = false;
     double scale_ = 100.0;        // pixels per metre
     double k_velocity_ = 0.0;     // metres of arrow per m/s
     double k_impulse_ = 0.0;      // metres of arrow per N s

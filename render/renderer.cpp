@@ -34,8 +34,11 @@ Renderer::Renderer(GlContext& context, const Scene& scene, const RenderSettings&
         FontSizes::for_height(settings.font_height > 0 ? settings.font_height : settings.height),
         settings_.font_dir);
     diagram_ = std::make_unique<DiagramView>(scene_, style_);
-    if (settings_.view == ViewKind::perspective)
+    diagram_->reserve_directions(settings_.directions);
+    if (settings_.view == ViewKind::perspective) {
         view3d_ = std::make_unique<Scene3dView>(gl, scene_, style_);
+        view3d_->set_camera(settings_.camera);
+    }
     table_ = std::make_unique<DataTable>(scene_, style_);
     header_ = std::make_unique<Header>(style_);
     formula_ = std::make_unique<FormulaBox>(style_);
@@ -267,7 +270,9 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
 }
 
 void Renderer::render(const FrameState& frame, const Decor& decor, std::uint8_t* rgba) {
-    draw(frame, decor);
+    Decor d = decor;
+    d.directions = d.directions || settings_.directions;
+    draw(frame, d);
     target_->read_rgba(rgba);
 }
 

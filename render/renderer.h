@@ -23,6 +23,7 @@
 #include "render/diagram_view.h"
 #include "render/frame_state.h"
 #include "render/overlay.h"
+#include "render/scene3d_view.h"
 #include "render/png.h"
 
 namespace collide::render {
@@ -39,13 +40,14 @@ struct RenderSettings {
     bool plots = true;               // energy and momentum against time (bottom)
     bool timeline = true;            // the run's time line with its collisions (bottom)
     FormulaText formula;             // the first collision's formula with numbers (bottom)
+    CameraRequest camera;            // the 3D view's camera, where the scenario sets it
+    bool directions = false;         // the 2D view's positive-direction arrows (Decor::directions)
     int time_decimals = 3;           // "t = 0.350 s"
     // Font sizes: by default for the frame height; figure panels use the frame's.
     int font_height = 0;             // 0: height
     std::string font_dir = "/usr/share/fonts/truetype/dejavu";
 };
 
-class Scene3dView;  // render/scene3d_view.h
 class ImGuiLayer;
 class RenderTarget;
 

@@ -807,13 +807,18 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
     // scenes a little more from the front. Then the distance and the aim are adjusted so that
     // the bounds' projection fills 86% of the viewport.
     const bool flat = I.scene.dimension < 3;
-    const double az = (flat ? 20.0 : 32.0) * kPi / 180.0, el = (flat ? 16.0 : 24.0) * kPi / 180.0;
+    const double az = camera_.azimuth.value_or(flat ? 20.0 : 32.0) * kPi / 180.0;
+    const double el = camera_.elevation.value_or(flat ? 16.0 : 24.0) * kPi / 180.0;
     const Vec3f dir(static_cast<float>(std::sin(az) * std::cos(el)), static_cast<float>(std::sin(el)),
                     static_cast<float>(std::cos(az) * std::cos(el)));
     float distance = static_cast<float>(I.radius / std::sin(0.5 * Impl::kFovY));
     Vec3f look = f3(I.centre);
+    if (camera_.target) look = f3(*camera_.target);
+    if (camera_.distance) distance = static_cast<float>(*camera_.distance);
     const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-    for (int iteration = 0; iteration < 4; ++iteration) {
+    // What the scenario fixes stays fixed: a set target is not re-aimed, a set distance not
+    // changed.
+    for (int iteration = 0; iteration < 4 && !(camera_.target && camera_.distance); ++iteration) {
         I.set_camera(dir, distance, look);
         float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
         for (int k = 0; k < 8; ++k) {
@@ -833,8 +838,8 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
         const Vec3f up = right.cross(fwd);
         const float half_h = distance * std::tan(0.5f * static_cast<float>(Impl::kFovY));
         const float half_w = half_h * vw / vh;
-        look += right * (2.0f * dx * half_w) - up * (2.0f * dy * half_h);
-        distance *= std::clamp(fill, 0.3f, 3.0f);
+        if (!camera_.target) look += right * (2.0f * dx * half_w) - up * (2.0f * dy * half_h);
+        if (!camera_.distance) distance *= std::clamp(fill, 0.3f, 3.0f);
     }
     I.set_camera(dir, distance, look);
     // Lights in the viewer's frame: the key from the upper left, the fill from the right.

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include <imgui.h>
@@ -23,6 +24,14 @@
 
 namespace collide::render {
 
+// A camera asked for by the scenario ([view] table); what is not set is chosen by fit().
+struct CameraRequest {
+    std::optional<double> azimuth;    // degrees: turned right of the front (+z) about +y
+    std::optional<double> elevation;  // degrees above the horizon
+    std::optional<Vec3> target;       // m: the point looked at
+    std::optional<double> distance;   // m from the target
+};
+
 class Scene3dView {
 public:
     Scene3dView(const Gl& gl, const Scene& scene, const Style& style);
@@ -34,6 +43,7 @@ public:
     // `frame_width` x `frame_height`; sets the arrow scales.
     void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
              ImVec4 viewport, int frame_width, int frame_height);
+    void set_camera(const CameraRequest& camera) { camera_ = camera; }
     // The GL pass (the render target is bound, colour and depth cleared).
     void draw(const FrameState& frame, const Decor& decor);
     // Labels through ImGui, after draw().
@@ -50,6 +60,7 @@ private:
     struct Impl;
     std::unique_ptr<Impl> impl_;
     double max_spin_ = 0.0;
+    CameraRequest camera_;
 };
 
 }  // namespace collide::render

@@ -176,9 +176,38 @@ INSTANTIATE_TEST_SUITE_P(
             "[[body]]\nshape = \"plane\"\nnormal = [0.0, 1.0]\nv = [1.0, 0.0]\n",
             "body[1].v", 7, "a plane is placed by normal and offset"},
         Bad{"no bodies", "", "", 0, "expected one or more [[body]] tables"},
+        Bad{"camera looking straight down",
+            "[view]\ncamera_elevation = 95.0\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+            "view.camera_elevation", 5, "between -89 and 89"},
+        Bad{"unknown view key with a hint",
+            "[view]\ndirection = true\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+            "view.direction", 5, "did you mean 'directions'?"},
+        Bad{"camera target of another dimension",
+            "[view]\ncamera_target = [0.0, 0.0, 1.0]\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+            "view.camera_target", 5, "2"},
         Bad{"unknown policy",
             "policy = \"together\"\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
             "scene.policy", 4, "expected sequential or simultaneous"}));
+
+TEST(SceneFile, ViewTableIsReadAndOptional) {
+    SceneView view;
+    parse_scene_text(std::string(kHead) +
+                         "[view]\ncamera_azimuth = -40.0\ncamera_elevation = 10\n"
+                         "camera_target = [0.5, 0.25]\ncamera_distance = 3.0\ndirections = true\n"
+                         "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+                     "view.toml", &view);
+    EXPECT_EQ(view.camera_azimuth, -40.0);
+    EXPECT_EQ(view.camera_elevation, 10.0);
+    ASSERT_TRUE(view.camera_target.has_value());
+    EXPECT_EQ(*view.camera_target, Vec3(0.5, 0.25, 0.0));
+    EXPECT_EQ(view.camera_distance, 3.0);
+    EXPECT_TRUE(view.directions);
+    SceneView none;
+    parse_scene_text(std::string(kHead) + "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+                     "plain.toml", &none);
+    EXPECT_FALSE(none.camera_azimuth || none.camera_elevation || none.camera_target || none.camera_distance);
+    EXPECT_FALSE(none.directions);
+}
 
 TEST(SceneFile, CollisionFileIsPointedToSolve) {
     try {

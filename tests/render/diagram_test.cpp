@@ -355,5 +355,85 @@ TEST_F(RenderTest, TheTimeLineMarksTheTimeInProportionAndTheFormulaEndsInTheImpu
     if (const char* dump = std::getenv("COLLIDE_TEST_DUMP")) write_png_atomic(dump, im.width, im.height, im.rgba.data());
 }
 
+TEST_F(RenderTest, TheScenariosCameraIsHonoured) {
+    // From the front (azimuth 0, elevation 0) at a set target and distance: the target is at
+    // the view's centre, +x goes right along the same row, +y straight up.
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    RenderSettings s = small(320, 240);
+    s.view = ViewKind::perspective;
+    s.camera = {0.0, 0.0, Vec3(0.2, 0.1, 0.0), 5.0};
+    Renderer r(*context_, scene, s);
+    const std::vector<Body2> bodies{scene.bodies[0].body2, scene.bodies[1].body2};
+    r.prepare({frame_state(scene, 0.0, bodies)}, {});
+    const ImVec2 c = r.to_screen(Vec3(0.2, 0.1, 0.0));
+    EXPECT_NEAR(c.x, 160.0f, 0.5f);
+    EXPECT_NEAR(c.y, 120.0f, 0.5f);
+    const ImVec2 right = r.to_screen(Vec3(1.2, 0.1, 0.0)), up = r.to_screen(Vec3(0.2, 1.1, 0.0));
+    EXPECT_GT(right.x, c.x + 10.0f);
+    EXPECT_NEAR(right.y, c.y, 0.5f);
+    EXPECT_NEAR(up.x, c.x, 0.5f);
+    EXPECT_LT(up.y, c.y - 10.0f);
+    // 1 m at 5 m with a 30 degree vertical field of view: 240 / (2 * 5 tan 15 deg) pixels.
+    EXPECT_NEAR(c.y - up.y, 240.0 / (2.0 * 5.0 * std::tan(15.0 * M_PI / 180.0)), 1.0);
+}
+
+TEST_F(RenderTest, PositiveDirectionArrowsPointAlongPlusX) {
+    const Palette palette;
+    // Muted grey pixels in a box (pixels), and their mean x.
+    const auto grey = [&](const Image& im, int x0, int y0, int x1, int y1, double* mean_x) {
+        int n = 0;
+        double sx = 0;
+        for (int y = std::max(0, y0); y < std::min(im.height, y1); ++y)
+            for (int x = std::max(0, x0); x < std::min(im.width, x1); ++x)
+                if (test::near_colour(im.pixel(x, y), palette.muted, 25)) ++n, sx += x;
+        if (mean_x) *mean_x = n ? sx / n : 0;
+        return n;
+    };
+    // 1D: an arrow over the block, centred on it, its head (more grey pixels) on the +x side.
+    const Scene line = parse_scene_text(R"([scene]
+dimension = 1
+duration = 1.0
+[[body]]
+name = "cart"
+shape = "block"
+length = 0.5
+mass = 1.0
+position = 0.0
+)", "line.toml");
+    const FrameState f1 = frame_state(line, 0.0, std::vector<Body1>{line.bodies[0].body1});
+    for (bool on : {false, true}) {
+        RenderSettings s = small(400, 300);
+        s.directions = on;
+        Renderer r(*context_, line, s);
+        r.prepare({f1}, {});
+        const Image im = r.render(f1, bare());
+        const ImVec2 top = r.to_screen(Vec3(0.0, 2.0 * block_height(line, 0) / 2.0, 0.0));
+        double mean = 0;
+        const int n = grey(im, static_cast<int>(top.x) - 60, static_cast<int>(top.y) - 50,
+                           static_cast<int>(top.x) + 60, static_cast<int>(top.y) - 2, &mean);
+        if (!on) {
+            EXPECT_EQ(n, 0);
+        } else {
+            EXPECT_GT(n, 20);
+            EXPECT_GT(mean, top.x);
+            EXPECT_LT(mean, top.x + 10.0);
+        }
+    }
+    // 2D: the +x, +y, +ω glyph in the lower left corner of the view.
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    const FrameState f2 = frame_state(scene, 0.0, std::vector<Body2>{scene.bodies[0].body2, scene.bodies[1].body2});
+    std::vector<int> counts;
+    for (bool on : {false, true}) {
+        RenderSettings s = small(400, 300);
+        s.directions = on;
+        Renderer r(*context_, scene, s);
+        r.prepare({f2}, {});
+        const Image im = r.render(f2, bare());
+        counts.push_back(grey(im, 0, 300 - 90, 90, 300, nullptr));
+    }
+    // (Anti-aliased outlines leave a few grey pixels without the glyph.)
+    EXPECT_GT(counts[1], counts[0] + 40);
+}
+
 }  // namespace
 }  // namespace collide::render
