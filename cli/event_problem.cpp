@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "engine/diagnostics.h"
+
 namespace collide {
 
 namespace {
@@ -63,6 +65,10 @@ CollisionInstant instant(const Event<D>& e, const std::vector<Body>& bodies) {
     c.before_a.w = lift(e.before_a.w);
     c.before_b.v = lift(e.before_b.v);
     c.before_b.w = lift(e.before_b.w);
+    c.va_after = lift(e.after_a.v);
+    c.wa_after = lift(e.after_a.w);
+    c.vb_after = lift(e.after_b.v);
+    c.wb_after = lift(e.after_b.w);
     place(&c.before_a, bodies[e.a]);
     place(&c.before_b, bodies[e.b]);
     return c;
@@ -80,6 +86,8 @@ CollisionInstant collision_instant(const Event1& e, const std::vector<Body1>& bo
     c.impulse = Vec3(e.impulse, 0.0, 0.0);
     c.before_a.v = Vec3(e.va_before, 0.0, 0.0);
     c.before_b.v = Vec3(e.vb_before, 0.0, 0.0);
+    c.va_after = Vec3(e.va_after, 0.0, 0.0);
+    c.vb_after = Vec3(e.vb_after, 0.0, 0.0);
     c.before_a.x = Vec3(bodies[e.a].position, 0.0, 0.0);
     c.before_b.x = Vec3(bodies[e.b].position, 0.0, 0.0);
     return c;
@@ -89,6 +97,34 @@ CollisionInstant collision_instant(const Event2& e, const std::vector<Body2>& bo
 }
 CollisionInstant collision_instant(const Event3& e, const std::vector<Body3>& bodies) {
     return instant(e, bodies);
+}
+
+double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after) {
+    // The collision problem's bodies carry the scene's mass and inertia and the instant's
+    // pose; only their velocities change.
+    const SolveProblem p = collision_problem(scene, c);
+    Body3 a = p.a.b3, b = p.b.b3;
+    if (after) {
+        a.v = c.va_after;
+        a.w = c.wa_after;
+        b.v = c.vb_after;
+        b.w = c.wb_after;
+    }
+    if (scene.dimension == 1) {
+        Body1 a1 = p.a.b1, b1 = p.b.b1;
+        a1.v = a.v.x();
+        b1.v = b.v.x();
+        return totals(std::vector<Body1>{a1, b1}).kinetic_energy;
+    }
+    if (scene.dimension == 2) {
+        Body2 a2 = p.a.b2, b2 = p.b.b2;
+        a2.v = a.v.head<2>();
+        a2.w = a.w.z();
+        b2.v = b.v.head<2>();
+        b2.w = b.w.z();
+        return totals(std::vector<Body2>{a2, b2}).kinetic_energy;
+    }
+    return totals(std::vector<Body3>{a, b}).kinetic_energy;
 }
 
 SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c) {

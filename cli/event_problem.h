@@ -28,7 +28,13 @@ struct CollisionInstant {
         double angle = 0.0;              // rad, 2D
         Vec3 v = Vec3::Zero(), w = Vec3::Zero();  // just before the impulse
     } before_a, before_b;
+    // Just after it, as the world resolved it.
+    Vec3 va_after = Vec3::Zero(), wa_after = Vec3::Zero(), vb_after = Vec3::Zero(), wb_after = Vec3::Zero();
 };
+
+// Kinetic energy (J) of the two bodies of `c` with the velocities before (after = false) or
+// after the impulse, by the engine's formula (engine/diagnostics.h).
+double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after);
 
 // An event of a world with its bodies where they touch: indices, point, normal, impulse and
 // velocities before from the event; positions and orientations from `bodies`, the world's

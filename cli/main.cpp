@@ -8,6 +8,7 @@
 
 #include "cli/input_error.h"
 #include "cli/interactive.h"
+#include "cli/lesson.h"
 #include "cli/render_cmd.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
@@ -31,7 +32,7 @@ int run_solve(const std::string& file, const std::string& format, const std::str
 }
 
 int run_step(const std::string& file, const collide::StepOptions& options, bool interactive) {
-    const collide::Scene scene = collide::parse_scene_file(file);
+    const collide::Scene scene = collide::load_scenario(file);
     if (interactive) {
         collide::run_interactive(scene, {options.json, isatty(0) != 0}, std::cin, std::cout,
                                  std::cerr);
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
     collide::StepOptions step_options;
     CLI::App* step = app.add_subcommand(
         "step", "Run a scenario file and print its state at every output step (or its events)");
-    step->add_option("FILE", scene_file, "scenario (TOML); - reads stdin")->required();
+    step->add_option("FILE", scene_file, "scenario (TOML) or lesson id; - reads stdin")->required();
     step->add_flag("--json", step_options.json, "one JSON object per line");
     CLI::Option* events = step->add_flag(
         "--events", step_options.events,
@@ -96,7 +97,9 @@ int main(int argc, char** argv) {
     collide::RenderOptions render_options;
     CLI::App* render = app.add_subcommand(
         "render", "Render a scenario headless: PNG frames, the before / at / after figure, data");
-    render->add_option("SCENARIO", render_options.scenario, "scenario file (TOML)")->required();
+    render->add_option("SCENARIO", render_options.scenario,
+                       "a scenario file (TOML), a lesson file, or a lesson id (collide lessons)")
+        ->required();
     render->add_option("-o,--output", render_options.out_dir, "output directory (created)")
         ->required();
     render->add_option("--size", render_options.size, "WxH, or 480p, 720p, 1080p, 1440p")
@@ -131,6 +134,11 @@ int main(int argc, char** argv) {
         "Every file is written under a temporary name and renamed when complete.\n"
         "Example: collide render lessons/scenes/billiards-2d.toml -o out/billiards");
 
+    bool lessons_json = false;
+    CLI::App* lessons = app.add_subcommand("lessons", "List the bundled lessons: id, title, dimension, duration");
+    lessons->add_flag("--json", lessons_json, "one JSON object per lesson, one per line");
+    lessons->footer("Render one: collide render ID -o DIR. Lessons live in lessons/*.toml (README.md, 'Lessons').");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -154,6 +162,12 @@ int main(int argc, char** argv) {
             return run_step(scene_file, step_options, loop);
         }
         if (*render) return collide::run_render(render_options, std::cout, std::cerr);
+        if (*lessons) {
+            std::ostringstream out;
+            collide::write_lesson_list(collide::load_lessons(collide::lessons_dir()), lessons_json, out);
+            std::cout << out.str() << std::flush;
+            return 0;
+        }
     } catch (const collide::InputError& e) {
         std::cerr << "collide: error: " << e.what() << "\n";
         return kBadInput;

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,6 +17,7 @@
 
 #include "cli/event_problem.h"
 #include "cli/input_error.h"
+#include "cli/lesson.h"
 #include "cli/notation.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
@@ -294,7 +296,7 @@ void prepare_directory(const RenderOptions& o) {
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
     for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "worked-example.md",
-                             "animation.mp4", "animation.gif"})
+                             "lesson.md", "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
 }
 
@@ -472,7 +474,11 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
         }
 
         SceneView view;
-        const Scene scene = parse_scene_file(o.scenario, &view);
+        std::optional<Lesson> lesson;
+        const Scene scene = load_scenario(o.scenario, &view, &lesson);
+        // A lesson's answers come first: a question the run cannot answer is bad input.
+        std::vector<LessonAnswer> answers;
+        if (lesson) answers = answer_questions(*lesson);
         Scene timing = scene;
         timing.output_dt = 1.0 / o.fps;
         const std::vector<double> times = output_times(timing);
@@ -507,6 +513,11 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             write_markdown(worked->problem, worked->solution, md);
             render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
         }
+        if (lesson) {
+            std::ostringstream md;
+            write_lesson_markdown(*lesson, answers, md);
+            render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
+        }
         const double seconds = write_outputs(o, scene, view, times, run, moments.get(), worked.get(), err);
         const std::string video = o.format == "png" ? "" : "animation." + o.format;
         if (!video.empty()) {
@@ -524,6 +535,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
                 << " to " << o.out_dir << "/frames";
             if (moments) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
             out << ", data.csv, data.json, events.csv";
+            if (lesson) out << ", lesson.md";
             if (!video.empty()) out << ", " << video;
             // Peak resident memory of the whole process (Linux: kilobytes).
             rusage usage{};

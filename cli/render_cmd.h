@@ -7,6 +7,7 @@
 //   DIR/data.csv, DIR/data.json      the sampled states (as `collide step --json`) and events
 //   DIR/events.csv                   the collision events
 //   DIR/worked-example.md            the first collision worked out (as `collide solve`)
+//   DIR/lesson.md                    for a lesson: its text, questions and computed answers
 //   DIR/animation.mp4 or .gif        with --format mp4 or gif (needs ffmpeg)
 #pragma once
 
@@ -16,7 +17,7 @@
 namespace collide {
 
 struct RenderOptions {
-    std::string scenario;          // scenario file (TOML)
+    std::string scenario;          // a scenario file, a lesson file or a lesson id
     std::string out_dir;           // -o DIR
     std::string size = "720p";     // --size: WxH, or 480p, 720p, 1080p, 1440p
     double fps = 30.0;             // --fps: frames per simulated second

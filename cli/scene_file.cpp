@@ -211,13 +211,16 @@ SceneView read_view(const TableReader& root, int dim) {
     return v;
 }
 
-Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view) {
+Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view,
+                       const std::vector<std::string>& also_allowed) {
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
     if (!root.has("scene") && (root.has("a") || root.has("dimension")))
         root.fail("", "this is a collision file (dimension, [a], [b] at the top): run it with "
                       "'collide solve'; scenario files have a [scene] table and [[body]] tables");
-    root.allow_only({"scene", "body", "view"});
+    std::vector<std::string> top = {"scene", "body", "view"};
+    top.insert(top.end(), also_allowed.begin(), also_allowed.end());
+    root.allow_only(top);
     auto sc = root.table("scene");
     if (!sc) root.fail("", "missing table [scene]");
     sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "policy",

@@ -3,6 +3,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "engine/scene.h"
 
@@ -22,6 +23,9 @@ struct SceneView {
 // per-key checks: unique names, static bodies at rest, no two bodies overlapping at the start.
 // `view`, when given, receives the [view] table (which is checked either way).
 Scene parse_scene_file(const std::string& path, SceneView* view = nullptr);
-Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view = nullptr);
+// `also_allowed`: more top-level tables the caller reads itself (a lesson's [lesson] and
+// [[question]]).
+Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view = nullptr,
+                       const std::vector<std::string>& also_allowed = {});
 
 }  // namespace collide

@@ -1,0 +1,375 @@
+#include "cli/lesson.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <ostream>
+
+#include <nlohmann/json.hpp>
+
+#include "cli/notation.h"
+#include "cli/toml_reader.h"
+#include "engine/diagnostics.h"
+#include "engine/world.h"
+#include "engine/world1d.h"
+
+#ifndef COLLIDE_LESSONS_DIR
+#define COLLIDE_LESSONS_DIR "lessons"
+#endif
+
+namespace collide {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct QuantityInfo {
+    const char* unit;     // for 1D and 2D; "spin" quantities are rad/s
+    bool needs_event;
+    bool needs_body;
+};
+
+const std::map<std::string, QuantityInfo>& quantity_table() {
+    static const std::map<std::string, QuantityInfo> table = {
+        {"impulse", {"N s", true, false}},
+        {"impulse_normal", {"N s", true, false}},
+        {"velocity_before", {"m/s", true, true}},
+        {"velocity_after", {"m/s", true, true}},
+        {"spin_before", {"rad/s", true, true}},
+        {"spin_after", {"rad/s", true, true}},
+        {"kinetic_energy_before", {"J", true, false}},
+        {"kinetic_energy_after", {"J", true, false}},
+        {"energy_lost", {"J", true, false}},
+        {"time", {"s", true, false}},
+        {"collisions", {"", false, false}},
+        {"last_collision_time", {"s", false, false}},
+        {"final_velocity", {"m/s", false, true}},
+        {"final_spin", {"rad/s", false, true}},
+        {"final_kinetic_energy", {"J", false, false}},
+    };
+    return table;
+}
+
+std::vector<std::string> strings(const TableReader& t, const std::string& key, const std::string& what) {
+    std::vector<std::string> out;
+    const toml::node* n = t.node(key);
+    if (!n) return out;
+    const toml::array* arr = n->as_array();
+    if (!arr) t.fail(key, "expected " + what);
+    for (const toml::node& el : *arr) {
+        if (!el.is_string()) t.fail(key, "expected " + what);
+        out.push_back(*el.value<std::string>());
+    }
+    return out;
+}
+
+}  // namespace
+
+const std::vector<std::string>& lesson_quantities() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> v;
+        for (const auto& [name, info] : quantity_table()) v.push_back(name);
+        return v;
+    }();
+    return names;
+}
+
+Lesson load_lesson(const std::string& path) {
+    std::string name;
+    const std::string text = read_input_file(path, &name);
+    Lesson L;
+    L.file = path;
+    L.scene = parse_scene_text(text, name, &L.view, {"lesson", "question"});
+    const toml::table table = parse_toml_text(text, name);
+    const TableReader root(table, name, "");
+    const auto lt = root.table("lesson");
+    if (!lt) root.fail("", "missing table [lesson] (a scenario file without one is run with "
+                           "'collide step' or 'collide render FILE')");
+    lt->allow_only({"id", "order", "title", "section", "goals", "explanation"});
+    L.id = lt->string("id", "a lesson id (letters, digits and -)").value_or("");
+    if (L.id.empty()) lt->fail("id", "missing key 'id' (used as `collide render ID`)");
+    for (char ch : L.id)
+        if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '-'))
+            lt->fail("id", "a lesson id has letters, digits and - only, got '" + L.id + "'");
+    L.order = static_cast<int>(lt->integer("order", "the lesson's position in the list").value_or(0));
+    L.title = lt->string("title", "the lesson's title").value_or("");
+    if (L.title.empty()) lt->fail("title", "missing key 'title'");
+    L.section = lt->string("section", "the page's section it teaches").value_or("");
+    L.goals = strings(*lt, "goals", "a list of learning goals (strings)");
+    L.explanation = lt->string("explanation", "the explanation (text)").value_or("");
+    if (L.scene.title.empty()) L.scene.title = L.title;
+
+    if (const toml::node* list = root.node("question")) {
+        const toml::array* qs = list->as_array();
+        if (!qs) root.fail("question", "expected [[question]] tables");
+        for (std::size_t i = 0; i < qs->size(); ++i) {
+            const toml::table* t = qs->get(i)->as_table();
+            const std::string key = "question[" + std::to_string(i + 1) + "]";
+            if (!t) root.fail("question", key + " is not a table; write [[question]]");
+            const TableReader q(*t, name, key);
+            q.allow_only({"text", "quantity", "event", "body", "explain"});
+            LessonQuestion Q;
+            Q.text = q.string("text", "the question (text)").value_or("");
+            if (Q.text.empty()) q.fail("text", "missing key 'text'");
+            Q.quantity = read_choice(q, "quantity", lesson_quantities(), "quantity", "");
+            const QuantityInfo& info = quantity_table().at(Q.quantity);
+            if (info.needs_event) {
+                const long long e = q.integer("event", "a collision number, from 1").value_or(1);
+                if (e < 1 || e > 1000000) q.fail("event", "expected a collision number from 1");
+                Q.event = static_cast<int>(e);
+            } else {
+                q.forbid("event", "'" + Q.quantity + "' is about the whole run, not one collision");
+            }
+            if (info.needs_body) {
+                Q.body = q.string("body", "a body's name").value_or("");
+                if (Q.body.empty()) q.fail("body", "missing key 'body' ('" + Q.quantity + "' is a body's)");
+                bool found = false;
+                std::vector<std::string> names;
+                for (const SceneBody& b : L.scene.bodies) {
+                    names.push_back(b.name);
+                    found = found || b.name == Q.body;
+                }
+                if (!found) {
+                    const std::string hint = closest_match(Q.body, names);
+                    q.fail("body", "no body named '" + Q.body + "'" +
+                                       (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+                }
+            } else {
+                q.forbid("body", "'" + Q.quantity + "' is not about one body");
+            }
+            if ((Q.quantity == "spin_before" || Q.quantity == "spin_after" || Q.quantity == "final_spin") &&
+                L.scene.dimension == 1)
+                q.fail("quantity", "bodies on a line do not spin");
+            Q.explain = q.string("explain", "how to get there (text)").value_or("");
+            L.questions.push_back(std::move(Q));
+        }
+    }
+    return L;
+}
+
+std::string lessons_dir() {
+    if (const char* env = std::getenv("COLLIDE_LESSONS")) return env;
+    return COLLIDE_LESSONS_DIR;
+}
+
+std::vector<Lesson> load_lessons(const std::string& dir) {
+    std::vector<Lesson> out;
+    std::error_code ec;
+    std::vector<std::string> files;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec))
+        if (e.is_regular_file() && e.path().extension() == ".toml") files.push_back(e.path().string());
+    if (ec) throw InputError(dir, {}, "", "cannot read the lessons directory: " + ec.message());
+    std::sort(files.begin(), files.end());
+    for (const std::string& f : files) out.push_back(load_lesson(f));
+    std::stable_sort(out.begin(), out.end(), [](const Lesson& a, const Lesson& b) { return a.order < b.order; });
+    for (std::size_t j = 0; j < out.size(); ++j)
+        for (std::size_t i = 0; i < j; ++i)
+            if (out[i].id == out[j].id)
+                throw InputError(out[j].file, {}, "lesson.id",
+                                 "the id '" + out[j].id + "' is already used by " + out[i].file);
+    return out;
+}
+
+std::string resolve_lesson(const std::string& id_or_file, const std::string& dir) {
+    std::error_code ec;
+    if (fs::is_regular_file(id_or_file, ec) || id_or_file == "-") return id_or_file;
+    std::vector<std::string> ids;
+    for (const Lesson& L : load_lessons(dir)) {
+        if (L.id == id_or_file) return L.file;
+        ids.push_back(L.id);
+    }
+    const std::string hint = closest_match(id_or_file, ids);
+    throw InputError(id_or_file, {}, "",
+                     "no such file, and no lesson with this id" +
+                         (hint.empty() ? std::string(" (collide lessons lists them)")
+                                       : "; did you mean '" + hint + "'?"));
+}
+
+Scene load_scenario(const std::string& arg, SceneView* view, std::optional<Lesson>* lesson) {
+    const std::string file = resolve_lesson(arg, lessons_dir());
+    std::string name;
+    const std::string text = read_input_file(file, &name);
+    if (parse_toml_text(text, name).contains("lesson")) {
+        Lesson L = load_lesson(file);
+        if (view) *view = L.view;
+        Scene scene = L.scene;
+        if (lesson) *lesson = std::move(L);
+        return scene;
+    }
+    return parse_scene_text(text, name, view);
+}
+
+// ---- Answers ----
+
+namespace {
+
+template <int D>
+struct Stepper {
+    using World = collide::World<D>;
+    using Event = collide::Event<D>;
+};
+template <>
+struct Stepper<1> {
+    using World = World1;
+    using Event = Event1;
+};
+
+Vec3 lift(double x) { return Vec3(x, 0, 0); }
+Vec3 lift(const Vec2& v) { return Vec3(v.x(), v.y(), 0); }
+Vec3 lift(const Vec3& v) { return v; }
+Vec3 spin_of(const Body1&) { return Vec3::Zero(); }
+Vec3 spin_of(const Body2& b) { return Vec3(0, 0, b.w); }
+Vec3 spin_of(const Body3& b) { return b.w; }
+
+template <int D>
+std::vector<LessonAnswer> answer(const Lesson& L) {
+    using World = typename Stepper<D>::World;
+    using Event = typename Stepper<D>::Event;
+    const Scene& scene = L.scene;
+    World world(scene);
+    std::vector<Event> events;
+    world.advance_to(scene.duration, &events);
+
+    // Event k with the bodies where they touch (a fresh world run up to its instant).
+    const auto instant = [&](std::size_t k) {
+        World w(scene);
+        std::vector<Event> upto;
+        w.advance_to(events[k].t, &upto);
+        if (upto.size() <= k) {
+            World probe = w;
+            probe.advance_to(std::min(scene.duration, events[k].t + 1e-9 * std::max(1.0, events[k].t)), &upto);
+        }
+        return collision_instant(upto.at(k), w.bodies());
+    };
+    const auto body_index = [&](const std::string& name) {
+        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
+            if (scene.bodies[i].name == name) return i;
+        return scene.bodies.size();
+    };
+
+    std::vector<LessonAnswer> out;
+    for (std::size_t qi = 0; qi < L.questions.size(); ++qi) {
+        const LessonQuestion& q = L.questions[qi];
+        const QuantityInfo& info = quantity_table().at(q.quantity);
+        const std::string where = "question[" + std::to_string(qi + 1) + "]";
+        LessonAnswer a;
+        a.unit = info.unit;
+        const auto set_vector = [&](const Vec3& v) {
+            if (D == 1) {
+                a.value = v.x();
+            } else if (D == 2 && info.unit == std::string("rad/s")) {
+                a.value = v.z();
+            } else {
+                a.vector = v;
+                a.value = v.norm();
+                a.is_vector = true;
+            }
+        };
+        if (info.needs_event && static_cast<std::size_t>(q.event) > events.size())
+            throw InputError(L.file, {}, where + ".event",
+                             "asks for collision " + std::to_string(q.event) + " but the run has " +
+                                 std::to_string(events.size()));
+        std::size_t body = info.needs_body ? body_index(q.body) : 0;
+        if (info.needs_event) {
+            const CollisionInstant c = instant(static_cast<std::size_t>(q.event - 1));
+            if (info.needs_body && body != c.a && body != c.b)
+                throw InputError(L.file, {}, where + ".body",
+                                 "'" + q.body + "' takes no part in collision " + std::to_string(q.event) +
+                                     " (" + scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + ")");
+            const bool is_a = body == c.a;
+            if (q.quantity == "impulse") set_vector(c.impulse);
+            else if (q.quantity == "impulse_normal") a.value = c.impulse.dot(c.normal);
+            else if (q.quantity == "velocity_before") set_vector(is_a ? c.before_a.v : c.before_b.v);
+            else if (q.quantity == "velocity_after") set_vector(is_a ? c.va_after : c.vb_after);
+            else if (q.quantity == "spin_before") set_vector(is_a ? c.before_a.w : c.before_b.w);
+            else if (q.quantity == "spin_after") set_vector(is_a ? c.wa_after : c.wb_after);
+            else if (q.quantity == "kinetic_energy_before") a.value = pair_kinetic_energy(scene, c, false);
+            else if (q.quantity == "kinetic_energy_after") a.value = pair_kinetic_energy(scene, c, true);
+            else if (q.quantity == "energy_lost")
+                a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
+            else if (q.quantity == "time") a.value = c.t;
+        } else if (q.quantity == "collisions") {
+            a.value = static_cast<double>(events.size());
+        } else if (q.quantity == "last_collision_time") {
+            if (events.empty()) throw InputError(L.file, {}, where + ".quantity", "the run has no collision");
+            a.value = events.back().t;
+        } else if (q.quantity == "final_velocity") {
+            set_vector(lift(world.bodies()[body].v));
+        } else if (q.quantity == "final_spin") {
+            set_vector(spin_of(world.bodies()[body]));
+        } else if (q.quantity == "final_kinetic_energy") {
+            a.value = totals(world.bodies()).kinetic_energy;
+        }
+        // The text: the number (or vector) to 6 significant digits, then the unit.
+        const auto n = [](double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); };
+        if (a.is_vector) {
+            a.text = "(" + n(a.vector.x()) + ", " + n(a.vector.y()) + (D == 3 ? ", " + n(a.vector.z()) : "") + ")";
+        } else {
+            a.text = n(a.value);
+        }
+        if (!a.unit.empty()) a.text += " " + a.unit;
+        out.push_back(a);
+    }
+    return out;
+}
+
+}  // namespace
+
+void write_lesson_list(const std::vector<Lesson>& lessons, bool json, std::ostream& out) {
+    if (json) {
+        for (const Lesson& L : lessons)
+            out << nlohmann::ordered_json{{"id", L.id}, {"order", L.order}, {"title", L.title},
+                                          {"section", L.section}, {"dimension", L.scene.dimension},
+                                          {"duration", L.scene.duration}}
+                       .dump()
+                << "\n";
+        return;
+    }
+    std::size_t w = 2;
+    for (const Lesson& L : lessons) w = std::max(w, L.id.size());
+    out << "  # " << std::string("id") + std::string(w - 2, ' ') << "  dim  duration  title\n";
+    for (const Lesson& L : lessons) {
+        char line[64];
+        std::snprintf(line, sizeof line, "%3d ", L.order);
+        out << line << L.id << std::string(w - L.id.size(), ' ');
+        std::snprintf(line, sizeof line, "  %2dD  %6.3g s  ", L.scene.dimension, L.scene.duration);
+        out << line << L.title << "\n";
+    }
+}
+
+void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& answers, std::ostream& out) {
+    out << "# " << L.title << "\n\n";
+    if (!L.section.empty()) out << "*The page's section: " << L.section << ".*\n\n";
+    if (!L.goals.empty()) {
+        out << "## Learning goals\n\n";
+        for (const std::string& g : L.goals) out << "- " << g << "\n";
+        out << "\n";
+    }
+    if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
+    out << "![before, at and after the first collision](figure.png)\n\n";
+    if (!L.questions.empty()) {
+        out << "## Questions\n\n";
+        for (std::size_t i = 0; i < L.questions.size(); ++i) {
+            const LessonQuestion& q = L.questions[i];
+            out << i + 1 << ". " << q.text << "\n\n   <details><summary>Answer</summary>\n\n   "
+                << (i < answers.size() ? answers[i].text : std::string("?"));
+            if (!q.explain.empty()) out << ". " << q.explain;
+            out << "\n\n   </details>\n\n";
+        }
+    }
+    out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";
+}
+
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson) {
+    switch (lesson.scene.dimension) {
+    case 1: return answer<1>(lesson);
+    case 2: return answer<2>(lesson);
+    default: return answer<3>(lesson);
+    }
+}
+
+}  // namespace collide

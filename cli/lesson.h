@@ -1,0 +1,83 @@
+// Lessons (README.md, "Lessons"): a scenario (the [scene], [[body]] and [view] tables of a
+// scenario file) with its teaching text in a [lesson] table and [[question]] tables whose
+// answers the engine computes from the run. Lesson files live in lessons/*.toml.
+#pragma once
+
+#include <iosfwd>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/event_problem.h"
+#include "cli/input_error.h"
+#include "cli/scene_file.h"
+
+namespace collide {
+
+struct LessonQuestion {
+    std::string text;      // the question, as asked
+    std::string quantity;  // what answers it: one of lesson_quantities()
+    int event = 1;         // event quantities: which collision of the run, from 1
+    std::string body;      // body quantities: the body's name
+    std::string explain;   // optional: how to get there, shown with the answer
+};
+
+struct Lesson {
+    std::string file;         // as given or found
+    std::string id;           // e.g. "catch-up": `collide render catch-up`
+    int order = 0;            // position in `collide lessons`
+    std::string title;
+    std::string section;      // the page's section it teaches
+    std::vector<std::string> goals;
+    std::string explanation;  // plain language, Markdown paragraphs
+    std::vector<LessonQuestion> questions;
+    Scene scene;
+    SceneView view;
+};
+
+// The quantities a question can ask for, each with its unit and whether it needs an event
+// and a body: "impulse" (event: P on b), "impulse_normal" (event: j = P . n),
+// "velocity_before" / "velocity_after" and "spin_before" / "spin_after" (event, body),
+// "kinetic_energy_before" / "kinetic_energy_after" / "energy_lost" (event: the two bodies),
+// "time" (event), "collisions" (the count over the run), "last_collision_time",
+// "final_velocity" / "final_spin" (body, at the end of the run), "final_kinetic_energy".
+const std::vector<std::string>& lesson_quantities();
+
+// Parses and validates a lesson file (the scenario part as parse_scene_text does). Throws
+// InputError naming file, line and key.
+Lesson load_lesson(const std::string& path);
+
+// The directory of the bundled lessons: $COLLIDE_LESSONS when set, else the source tree's.
+std::string lessons_dir();
+// Every lesson in `dir` (its *.toml files), in their order. Throws InputError on a bad file.
+std::vector<Lesson> load_lessons(const std::string& dir);
+// A lesson file for a command-line argument: an existing file, or a lesson id in dir.
+// Throws InputError ("no lesson or file 'x'", with the closest id as a hint).
+std::string resolve_lesson(const std::string& id_or_file, const std::string& dir);
+
+// The scenario for a command-line argument: a scenario file, a lesson file or a lesson id (in
+// lessons_dir()). `lesson` receives the lesson when it is one. Throws InputError.
+Scene load_scenario(const std::string& arg, SceneView* view = nullptr,
+                    std::optional<Lesson>* lesson = nullptr);
+
+struct LessonAnswer {
+    double value = 0.0;       // the number (a vector's: its length; see `vector`)
+    Vec3 vector = Vec3::Zero();
+    bool is_vector = false;   // 2D and 3D vectors and 3D spins
+    std::string unit;         // "N s", "m/s", ...
+    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"
+};
+// Runs the lesson's scene once and answers every question. Throws InputError (naming the
+// question) when one asks for an event the run does not have or a body it lacks.
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
+
+// `collide lessons`: a table (order, id, dimension, duration, title), or with json one object
+// per line: {"id": .., "order": .., "title": .., "section": .., "dimension": .., "duration": ..}.
+void write_lesson_list(const std::vector<Lesson>& lessons, bool json, std::ostream& out);
+
+// The lesson as Markdown: title, the page's section, goals, explanation, the questions with
+// their answers (in <details>, opened on click), and a link to the worked example.
+void write_lesson_markdown(const Lesson& lesson, const std::vector<LessonAnswer>& answers,
+                           std::ostream& out);
+
+}  // namespace collide

@@ -1,0 +1,147 @@
+// Lessons (cli/lesson.h): every bundled lesson loads, runs and answers its questions; the
+// answers match closed forms; malformed lesson files are refused with their key.
+#include "cli/lesson.h"
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+namespace collide {
+namespace {
+
+const std::string kDir = std::string(COLLIDE_SOURCE_DIR) + "/lessons";
+
+const Lesson& find(const std::vector<Lesson>& all, const std::string& id) {
+    for (const Lesson& L : all)
+        if (L.id == id) return L;
+    throw std::runtime_error("no lesson " + id);
+}
+
+TEST(Lessons, EveryBundledLessonLoadsRunsAndAnswersEveryQuestion) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    ASSERT_FALSE(all.empty());
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.file);
+        EXPECT_FALSE(L.title.empty());
+        EXPECT_FALSE(L.explanation.empty());
+        EXPECT_FALSE(L.goals.empty());
+        const std::vector<LessonAnswer> answers = answer_questions(L);
+        ASSERT_EQ(answers.size(), L.questions.size());
+        for (const LessonAnswer& a : answers) EXPECT_TRUE(std::isfinite(a.value)) << a.text;
+        std::ostringstream md;
+        write_lesson_markdown(L, answers, md);
+        EXPECT_NE(md.str().find("# " + L.title), std::string::npos);
+    }
+    // Ordered, ids unique (load_lessons refuses duplicates).
+    for (std::size_t i = 1; i < all.size(); ++i) EXPECT_LE(all[i - 1].order, all[i].order);
+}
+
+TEST(Lessons, CatchUpAnswersAreTheClosedForms) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    const Lesson& L = find(all, "catch-up");
+    const double ma = L.scene.bodies[0].body1.mass, mb = L.scene.bodies[1].body1.mass;
+    const double va = L.scene.bodies[0].body1.v, vb = L.scene.bodies[1].body1.v;
+    const double e = L.scene.restitution;
+    // J = (1 + e) ma mb (va - vb) / (ma + mb); va' = va - J/ma; vb' = vb + J/mb;
+    // lost energy (1 - e^2) ma mb (va - vb)^2 / (2 (ma + mb)).
+    const double J = (1 + e) * ma * mb * (va - vb) / (ma + mb);
+    const double lost = (1 - e * e) * ma * mb * (va - vb) * (va - vb) / (2 * (ma + mb));
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(a.size(), 4u);
+    EXPECT_NEAR(a[0].value, J, 1e-12);
+    EXPECT_NEAR(a[1].value, va - J / ma, 1e-12);
+    EXPECT_NEAR(a[2].value, vb + J / mb, 1e-12);
+    EXPECT_NEAR(a[3].value, lost, 1e-12);
+    EXPECT_GT(J, 0.0);  // A catches B: J > 0
+}
+
+TEST(Lessons, AnIdResolvesToItsFileAndAnUnknownOneGetsAHint) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    EXPECT_EQ(resolve_lesson("catch-up", kDir), find(all, "catch-up").file);
+    try {
+        resolve_lesson("catchup", kDir);
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("did you mean 'catch-up'?"), std::string::npos) << e.what();
+    }
+}
+
+struct BadLesson {
+    const char* what;
+    const char* tail;  // appended to a valid 1D scene
+    const char* key;
+    const char* fragment;
+};
+
+void PrintTo(const BadLesson& b, std::ostream* os) { *os << b.what; }
+
+class LessonBad : public ::testing::TestWithParam<BadLesson> {};
+
+const char* kScene = R"([scene]
+dimension = 1
+duration = 1.0
+[[body]]
+name = "A"
+shape = "block"
+length = 0.2
+mass = 1.0
+position = -0.5
+v = 1.0
+[[body]]
+name = "B"
+shape = "block"
+length = 0.2
+mass = 1.0
+position = 0.5
+)";
+
+TEST_P(LessonBad, IsRefusedWithItsKey) {
+    const BadLesson& b = GetParam();
+    // One file per case: ctest runs the cases in parallel processes.
+    std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+    for (char& ch : name) if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '-';
+    const std::string path = ::testing::TempDir() + "/lesson-" + name + ".toml";
+    {
+        std::ofstream out(path);
+        out << kScene << b.tail;
+    }
+    try {
+        const Lesson L = load_lesson(path);
+        answer_questions(L);
+        FAIL() << b.what << ": accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.key(), b.key) << b.what << ": " << e.what();
+        EXPECT_NE(std::string(e.what()).find(b.fragment), std::string::npos) << e.what();
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Catalogue, LessonBad,
+    ::testing::Values(
+        BadLesson{"no [lesson] table", "", "", "missing table [lesson]"},
+        BadLesson{"no id", "[lesson]\ntitle = \"t\"\n", "lesson.id", "missing key 'id'"},
+        BadLesson{"bad id", "[lesson]\nid = \"a b\"\ntitle = \"t\"\n", "lesson.id", "letters, digits and -"},
+        BadLesson{"unknown quantity",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impuls\"\n",
+                  "question[1].quantity", "did you mean 'impulse'?"},
+        BadLesson{"unknown body",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\n"
+                  "quantity = \"velocity_after\"\nbody = \"C\"\n",
+                  "question[1].body", "no body named 'C'"},
+        BadLesson{"spin on a line",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\n"
+                  "quantity = \"spin_after\"\nbody = \"A\"\n",
+                  "question[1].quantity", "do not spin"},
+        BadLesson{"a collision the run does not have",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\n"
+                  "quantity = \"impulse\"\nevent = 3\n",
+                  "question[1].event", "the run has 1"},
+        BadLesson{"unknown lesson key",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\ngoal = [\"g\"]\n",
+                  "lesson.goal", "did you mean 'goals'?"}));
+
+}  // namespace
+}  // namespace collide
