@@ -9,6 +9,7 @@
 #include "cli/input_error.h"
 #include "cli/interactive.h"
 #include "cli/lesson.h"
+#include "cli/material_cmd.h"
 #include "cli/render_cmd.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
@@ -139,6 +140,27 @@ int main(int argc, char** argv) {
     lessons->add_flag("--json", lessons_json, "one JSON object per lesson, one per line");
     lessons->footer("Render one: collide render ID -o DIR. Lessons live in lessons/*.toml (README.md, 'Lessons').");
 
+    collide::MaterialOptions material_options;
+    CLI::App* material = app.add_subcommand(
+        "material", "Write a self-contained HTML site of lessons (works offline)");
+    material->add_option("LESSON", material_options.lessons,
+                         "lesson ids or lesson files (default: every bundled lesson)");
+    material->add_option("-o,--output", material_options.out_dir, "output directory")->required();
+    material->add_option("--size", material_options.size, "frame size: WxH, or 480p, 720p, 1080p, 1440p")
+        ->capture_default_str();
+    material->add_option("--fps", material_options.fps, "frames per simulated second")->capture_default_str();
+    material->add_option("--quality", material_options.quality, "low, medium or high (as collide render)")
+        ->check(CLI::IsMember({"low", "medium", "high"}))
+        ->capture_default_str();
+    material->add_flag("--quiet", material_options.quiet, "no progress and no summary");
+    material->add_flag("--force", material_options.force, "replace a directory that is not empty");
+    material->footer(
+        "Writes DIR/index.html (every lesson with a thumbnail), DIR/ID/index.html per lesson\n"
+        "(explanation, figure, animation, worked example, table, plots, questions with answers),\n"
+        "DIR/style.css (with print rules) and, per lesson, what collide render writes. The site is\n"
+        "built beside DIR and renamed into place when complete.\n"
+        "Example: collide material -o out/site && chromium out/site/index.html");
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -162,6 +184,7 @@ int main(int argc, char** argv) {
             return run_step(scene_file, step_options, loop);
         }
         if (*render) return collide::run_render(render_options, std::cout, std::cerr);
+        if (*material) return collide::run_material(material_options, std::cout, std::cerr);
         if (*lessons) {
             std::ostringstream out;
             collide::write_lesson_list(collide::load_lessons(collide::lessons_dir()), lessons_json, out);

@@ -445,98 +445,114 @@ bool parse_render_size(const std::string& text, int* width, int* height) {
     return true;
 }
 
+RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
+    RenderReport report;
+    // Options first: nothing is written when one is wrong.
+    int width = 0, height = 0;
+    if (!parse_render_size(o.size, &width, &height))
+        throw InputError(kCommand, {}, "--size",
+                         "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" +
+                             o.size + "'");
+    if (!(o.fps > 0 && o.fps <= 100000))
+        throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
+    quality_of(o.quality);
+    if (!o.view.empty() && o.view != "2d" && o.view != "3d")
+        throw InputError(kCommand, {}, "--view", "expected 2d or 3d, got '" + o.view + "'");
+    if (o.out_dir.empty()) throw InputError(kCommand, {}, "-o", "the output directory is required");
+    render::GlBackend backend;
+    if (!render::parse_gl_backend(o.backend, &backend))
+        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
+    if (o.format != "png" && o.format != "mp4" && o.format != "gif")
+        throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + o.format + "'");
+    std::string ffmpeg;
+    if (o.format != "png") {
+        ffmpeg = render::find_program("ffmpeg");
+        if (ffmpeg.empty())
+            throw InputError(kCommand, {}, "--format",
+                             o.format + " is made by ffmpeg, which is not installed (Debian: "
+                                        "apt-get install ffmpeg); --format png writes the frames alone");
+    }
+
+    report.scene = load_scenario(o.scenario, &report.view, &report.lesson);
+    const Scene& scene = report.scene;
+    // A lesson's answers come first: a question the run cannot answer is bad input.
+    if (report.lesson) report.answers = answer_questions(*report.lesson);
+    Scene timing = scene;
+    timing.output_dt = 1.0 / o.fps;
+    const std::vector<double> times = output_times(timing);
+    if (times.size() > 1000000)
+        throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
+    prepare_directory(o);
+
+    Run run = scene.dimension == 1   ? simulate<1>(scene, times)
+              : scene.dimension == 2 ? simulate<2>(scene, times)
+                                     : simulate<3>(scene, times);
+    std::unique_ptr<Moments> moments;
+    if (!run.impacts.empty()) {
+        moments = std::make_unique<Moments>(scene.dimension == 1   ? moments_of<1>(scene, run)
+                                            : scene.dimension == 2 ? moments_of<2>(scene, run)
+                                                                   : moments_of<3>(scene, run));
+    } else {
+        err << "collide render: no collision in " << scene.duration
+            << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
+    }
+    render::write_file_atomic(o.out_dir + "/data.csv", run.csv);
+    render::write_file_atomic(o.out_dir + "/events.csv", run.events_csv);
+    std::ostringstream json;
+    json << "{\"title\": " << nlohmann::json(scene.title).dump()
+         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(o.fps)
+         << ",\n\"frames\": [\n" << run.json_frames << "\n],\n\"events\": [\n" << run.json_events
+         << "\n]}\n";
+    render::write_file_atomic(o.out_dir + "/data.json", json.str());
+    std::unique_ptr<WorkedExample> worked;
+    if (moments) {
+        worked = std::make_unique<WorkedExample>(worked_example(scene, moments->instant));
+        std::ostringstream md;
+        write_markdown(worked->problem, worked->solution, md);
+        render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
+        report.problem = worked->problem;
+        report.solution = worked->solution;
+        report.first_collision = moments->instant;
+        report.world_note = worked->formula.note;
+    }
+    if (report.lesson) {
+        std::ostringstream md;
+        write_lesson_markdown(*report.lesson, report.answers, md);
+        render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
+    }
+    report.seconds = write_outputs(o, scene, report.view, times, run, moments.get(), worked.get(), err);
+    report.frames = static_cast<long>(times.size());
+    report.width = width;
+    report.height = height;
+    for (const ImpactMark& im : run.impacts) report.collision_times.push_back(im.t);
+    for (const FrameState& f : run.frames) {
+        report.t.push_back(f.t);
+        report.totals.push_back(render::frame_totals(scene, f));
+    }
+    if (o.format != "png") {
+        report.video = "animation." + o.format;
+        const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+        if (terminal) err << "encoding " << report.video << " with ffmpeg ...\n";
+        render::encode_video(ffmpeg, o.out_dir + "/frames", o.fps,
+                             o.format == "mp4" ? render::VideoFormat::mp4 : render::VideoFormat::gif,
+                             o.out_dir + "/" + report.video);
+    }
+    return report;
+}
+
 int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     try {
-        // Options first: nothing is written when one is wrong.
-        int width = 0, height = 0;
-        if (!parse_render_size(o.size, &width, &height))
-            throw InputError(kCommand, {}, "--size",
-                             "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" +
-                                 o.size + "'");
-        if (!(o.fps > 0 && o.fps <= 100000))
-            throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
-        quality_of(o.quality);
-        if (!o.view.empty() && o.view != "2d" && o.view != "3d")
-            throw InputError(kCommand, {}, "--view", "expected 2d or 3d, got '" + o.view + "'");
-        if (o.out_dir.empty()) throw InputError(kCommand, {}, "-o", "the output directory is required");
-        render::GlBackend backend;
-        if (!render::parse_gl_backend(o.backend, &backend))
-            throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
-        if (o.format != "png" && o.format != "mp4" && o.format != "gif")
-            throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + o.format + "'");
-        std::string ffmpeg;
-        if (o.format != "png") {
-            ffmpeg = render::find_program("ffmpeg");
-            if (ffmpeg.empty())
-                throw InputError(kCommand, {}, "--format",
-                                 o.format + " is made by ffmpeg, which is not installed (Debian: "
-                                            "apt-get install ffmpeg); --format png writes the frames alone");
-        }
-
-        SceneView view;
-        std::optional<Lesson> lesson;
-        const Scene scene = load_scenario(o.scenario, &view, &lesson);
-        // A lesson's answers come first: a question the run cannot answer is bad input.
-        std::vector<LessonAnswer> answers;
-        if (lesson) answers = answer_questions(*lesson);
-        Scene timing = scene;
-        timing.output_dt = 1.0 / o.fps;
-        const std::vector<double> times = output_times(timing);
-        if (times.size() > 1000000)
-            throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
-        prepare_directory(o);
-
-        Run run = scene.dimension == 1   ? simulate<1>(scene, times)
-                  : scene.dimension == 2 ? simulate<2>(scene, times)
-                                         : simulate<3>(scene, times);
-        std::unique_ptr<Moments> moments;
-        if (!run.impacts.empty()) {
-            moments = std::make_unique<Moments>(scene.dimension == 1   ? moments_of<1>(scene, run)
-                                                : scene.dimension == 2 ? moments_of<2>(scene, run)
-                                                                       : moments_of<3>(scene, run));
-        } else {
-            err << "collide render: no collision in " << scene.duration
-                << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
-        }
-        render::write_file_atomic(o.out_dir + "/data.csv", run.csv);
-        render::write_file_atomic(o.out_dir + "/events.csv", run.events_csv);
-        std::ostringstream json;
-        json << "{\"title\": " << nlohmann::json(scene.title).dump()
-             << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(o.fps)
-             << ",\n\"frames\": [\n" << run.json_frames << "\n],\n\"events\": [\n" << run.json_events
-             << "\n]}\n";
-        render::write_file_atomic(o.out_dir + "/data.json", json.str());
-        std::unique_ptr<WorkedExample> worked;
-        if (moments) {
-            worked = std::make_unique<WorkedExample>(worked_example(scene, moments->instant));
-            std::ostringstream md;
-            write_markdown(worked->problem, worked->solution, md);
-            render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
-        }
-        if (lesson) {
-            std::ostringstream md;
-            write_lesson_markdown(*lesson, answers, md);
-            render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
-        }
-        const double seconds = write_outputs(o, scene, view, times, run, moments.get(), worked.get(), err);
-        const std::string video = o.format == "png" ? "" : "animation." + o.format;
-        if (!video.empty()) {
-            const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
-            if (terminal) err << "encoding " << video << " with ffmpeg ...\n";
-            render::encode_video(ffmpeg, o.out_dir + "/frames", o.fps,
-                                 o.format == "mp4" ? render::VideoFormat::mp4 : render::VideoFormat::gif,
-                                 o.out_dir + "/" + video);
-        }
+        const RenderReport r = render_scenario(o, err);
         if (!o.quiet) {
             char rate[64];
-            std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", seconds,
-                          static_cast<double>(times.size()) / std::max(seconds, 1e-9));
-            out << "wrote " << times.size() << " frames (" << width << "x" << height << ")" << rate
+            std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
+                          static_cast<double>(r.frames) / std::max(r.seconds, 1e-9));
+            out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate
                 << " to " << o.out_dir << "/frames";
-            if (moments) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
+            if (r.problem) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
             out << ", data.csv, data.json, events.csv";
-            if (lesson) out << ", lesson.md";
-            if (!video.empty()) out << ", " << video;
+            if (r.lesson) out << ", lesson.md";
+            if (!r.video.empty()) out << ", " << r.video;
             // Peak resident memory of the whole process (Linux: kilobytes).
             rusage usage{};
             if (getrusage(RUSAGE_SELF, &usage) == 0)

@@ -12,7 +12,13 @@
 #pragma once
 
 #include <iosfwd>
+#include <optional>
 #include <string>
+#include <vector>
+
+#include "cli/lesson.h"
+#include "cli/solve.h"
+#include "render/frame_state.h"
 
 namespace collide {
 
@@ -32,6 +38,29 @@ struct RenderOptions {
     bool force = false;            // --force: write into a non-empty DIR (replacing our files)
     std::string backend = "osmesa";  // OpenGL context: osmesa or egl
 };
+
+// What a render made and computed, for the summary line and for `collide material`.
+struct RenderReport {
+    Scene scene;
+    SceneView view;
+    std::optional<Lesson> lesson;
+    std::vector<LessonAnswer> answers;         // a lesson's questions, in order
+    std::optional<SolveProblem> problem;       // the first collision's worked example
+    std::optional<Solution> solution;
+    std::optional<CollisionInstant> first_collision;
+    std::string world_note;  // when the world resolved several points there (the formula box's note)
+    std::vector<double> collision_times;       // s, every collision of the run
+    std::vector<double> t;                     // every frame's time (s)
+    std::vector<render::FrameTotals> totals;   // and its energies and momentum
+    long frames = 0;
+    int width = 0, height = 0;
+    double seconds = 0.0;                      // rendering and writing the frames
+    std::string video;                         // "animation.mp4" / ".gif", or ""
+};
+
+// Renders `options.scenario` into options.out_dir as the command does, without the summary.
+// Throws InputError (bad input: nothing written) or std::runtime_error.
+RenderReport render_scenario(const RenderOptions& options, std::ostream& err);
 
 // Runs the command. Returns the exit code: 0 done, 2 bad input (one "collide: error: ..."
 // line on err: the scenario file, an option, or an output directory that is not empty),

@@ -1,0 +1,502 @@
+#include "cli/material_cmd.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <sstream>
+
+#include "cli/input_error.h"
+#include "cli/lesson.h"
+#include "cli/notation.h"
+#include "cli/render_cmd.h"
+#include "render/png.h"
+#include "render/video.h"
+
+namespace collide {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kBadInput = 2;
+
+// ---- HTML text ----
+
+std::string escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+// Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>.
+std::string math(const std::string& text) {
+    const std::string rich = notation::to_rich(text);  // v_{pa}
+    std::string out;
+    for (std::size_t i = 0; i < rich.size();) {
+        if (rich.compare(i, 2, "_{") == 0) {
+            const std::size_t close = rich.find('}', i + 2);
+            if (close != std::string::npos) {
+                out += "<sub>" + escape(rich.substr(i + 2, close - i - 2)) + "</sub>";
+                i = close + 1;
+                continue;
+            }
+        }
+        out += escape(std::string(1, rich[i]));
+        ++i;
+    }
+    return out;
+}
+
+// Paragraphs separated by blank lines.
+std::string paragraphs(const std::string& text) {
+    std::string out, para;
+    std::istringstream in(text);
+    const auto flush = [&] {
+        if (!para.empty()) out += "<p>" + math(para) + "</p>\n";
+        para.clear();
+    };
+    for (std::string line; std::getline(in, line);) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+            flush();
+        } else {
+            if (!para.empty()) para += ' ';
+            para += line;
+        }
+    }
+    flush();
+    return out;
+}
+
+std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
+std::string vec(const Vec3& v, int dim) {
+    if (dim == 1) return n(v.x());
+    return "(" + n(v.x()) + ", " + n(v.y()) + (dim == 3 ? ", " + n(v.z()) : "") + ")";
+}
+std::string spin(const Vec3& w, int dim) { return dim == 2 ? n(w.z()) : vec(w, 3); }
+
+// ---- Plots (SVG) ----
+
+struct Series {
+    std::string label;
+    std::string colour;
+    std::vector<double> values;
+};
+
+std::string svg_plot(const std::string& title, const std::vector<double>& t, const std::vector<Series>& series,
+                     const std::vector<double>& collisions, double duration) {
+    const double W = 560, H = 230, left = 64, right = 16, top = 34, bottom = 34;
+    double lo = 0, hi = 0;
+    bool first = true;
+    for (const Series& s : series)
+        for (double v : s.values) {
+            lo = first ? v : std::min(lo, v);
+            hi = first ? v : std::max(hi, v);
+            first = false;
+        }
+    const double data_lo = lo, data_hi = hi;  // labelled where they are
+    if (lo > 0 && lo < 0.5 * hi) lo = 0;
+    if (hi < 0 && hi > 0.5 * lo) hi = 0;
+    const double span = hi - lo;
+    const double pad = span > 1e-12 * std::max(1.0, std::abs(hi)) ? 0.08 * span : std::max(0.05 * std::abs(hi), 1e-3);
+    lo -= pad;
+    hi += pad;
+    const double T = duration > 0 ? duration : 1;
+    const auto X = [&](double x) { return left + (W - left - right) * x / T; };
+    const auto Y = [&](double y) { return top + (H - top - bottom) * (hi - y) / (hi - lo); };
+    char buf[256];
+    std::ostringstream o;
+    o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
+      << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title) << "\">\n";
+    o << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
+    o << "<text x=\"" << left << "\" y=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
+    // Keys, right-aligned on the title line.
+    double kx = W - right;
+    for (auto it = series.rbegin(); it != series.rend(); ++it) {
+        kx -= 8.0 * static_cast<double>(it->label.size()) + 34;
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"14\" x2=\"%.1f\" y2=\"14\" stroke=\"%s\" stroke-width=\"3\"/>",
+                      kx, kx + 20, it->colour.c_str());
+        o << buf << "<text x=\"" << kx + 25 << "\" y=\"18\">" << math(it->label) << "</text>\n";
+    }
+    // Axes, zero, collisions.
+    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1f V%.1f H%.1f\" fill=\"none\" stroke=\"#999\"/>\n", left, top, H - bottom, W - right);
+    o << buf;
+    if (lo < 0 && hi > 0) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\" stroke-dasharray=\"4 4\"/>\n",
+                      left, Y(0), W - right, Y(0));
+        o << buf;
+    }
+    for (double c : collisions) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ce2029\" stroke-opacity=\"0.25\"/>\n",
+                      X(c), top, X(c), H - bottom);
+        o << buf;
+    }
+    // The largest and smallest values, at their heights (one label when they are equal).
+    o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_hi) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_hi)) << "</text>\n";
+    if (Y(data_lo) - Y(data_hi) > 14)
+        o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_lo) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_lo)) << "</text>\n";
+    o << "<text x=\"" << left << "\" y=\"" << H - bottom + 18 << "\" fill=\"#555\">0</text>\n";
+    o << "<text x=\"" << W - right << "\" y=\"" << H - bottom + 18 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(T)) << " s</text>\n";
+    o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\" fill=\"#555\">time (s)</text>\n";
+    for (const Series& s : series) {
+        o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
+        const std::size_t stride = std::max<std::size_t>(1, t.size() / 600);
+        for (std::size_t k = 0; k < t.size(); k += stride) {
+            std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(t[k]), Y(s.values[k]));
+            o << buf;
+        }
+        if (!t.empty()) {
+            std::snprintf(buf, sizeof buf, "%.1f,%.1f", X(t.back()), Y(s.values.back()));
+            o << buf;
+        }
+        o << "\"/>\n";
+    }
+    o << "</svg>\n";
+    return o.str();
+}
+
+// ---- Thumbnails ----
+
+// A box-filtered copy `width` pixels wide.
+render::Image shrink(const render::Image& im, int width) {
+    render::Image out;
+    out.width = std::max(1, std::min(width, im.width));
+    out.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(im.height) * out.width / im.width)));
+    out.rgba.assign(static_cast<std::size_t>(out.width) * out.height * 4, 0);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            const int x0 = x * im.width / out.width, x1 = std::max(x0 + 1, (x + 1) * im.width / out.width);
+            const int y0 = y * im.height / out.height, y1 = std::max(y0 + 1, (y + 1) * im.height / out.height);
+            unsigned sum[4] = {0, 0, 0, 0};
+            for (int yy = y0; yy < y1; ++yy)
+                for (int xx = x0; xx < x1; ++xx)
+                    for (int c = 0; c < 4; ++c) sum[c] += im.pixel(xx, yy)[c];
+            const unsigned count = static_cast<unsigned>((x1 - x0) * (y1 - y0));
+            for (int c = 0; c < 4; ++c)
+                out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] = static_cast<std::uint8_t>(sum[c] / count);
+        }
+    return out;
+}
+
+// ---- Pages ----
+
+const char* kStyle = R"(/* Collide teaching material: one stylesheet for screen and print. */
+:root { --ink: #1c1c1e; --muted: #5f6368; --paper: #fbfbf8; --rule: #d6d6d0; --accent: #1d4ed8; --red: #ce2029; }
+* { box-sizing: border-box; }
+body { margin: 0; background: var(--paper); color: var(--ink);
+       font: 17px/1.55 "DejaVu Sans", "Helvetica Neue", Arial, sans-serif; }
+header.site { background: #fff; border-bottom: 1px solid var(--rule); padding: 0.8rem 1.5rem; }
+header.site a { color: var(--ink); text-decoration: none; font-weight: bold; }
+main { max-width: 62rem; margin: 0 auto; padding: 1.5rem; }
+h1 { font-size: 1.9rem; margin: 0.2rem 0 0.3rem; }
+h2 { font-size: 1.3rem; margin-top: 2.2rem; border-bottom: 1px solid var(--rule); padding-bottom: 0.2rem; }
+h3 { font-size: 1.05rem; margin: 1.2rem 0 0.3rem; }
+.section { color: var(--muted); margin: 0 0 1rem; }
+figure { margin: 1rem 0; }
+figure img, video { width: 100%; height: auto; border: 1px solid var(--rule); background: #fff; }
+figcaption { color: var(--muted); font-size: 0.9rem; margin-top: 0.3rem; }
+.math { font-family: "DejaVu Serif", Georgia, serif; background: #fff; border-left: 3px solid var(--rule);
+        padding: 0.15rem 0.7rem; margin: 0.25rem 0; overflow-x: auto; white-space: nowrap; }
+.math.result { border-left-color: var(--red); }
+.note { color: var(--muted); font-size: 0.95rem; }
+table { border-collapse: collapse; margin: 0.8rem 0; background: #fff; font-size: 0.95rem; }
+th, td { border: 1px solid var(--rule); padding: 0.3rem 0.7rem; text-align: right; }
+th:first-child, td:first-child { text-align: left; }
+th { background: #f1f1ec; }
+.plots { display: grid; grid-template-columns: repeat(auto-fit, minmax(22rem, 1fr)); gap: 1rem; }
+.plots img { width: 100%; border: 1px solid var(--rule); }
+ol.questions > li { margin: 0.8rem 0; }
+details { margin: 0.4rem 0 0; background: #fff; border: 1px solid var(--rule); border-radius: 4px; padding: 0.3rem 0.7rem; }
+summary { cursor: pointer; color: var(--accent); }
+.answer { font-weight: bold; }
+.grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(17rem, 1fr)); gap: 1.2rem; padding: 0; }
+.card { list-style: none; background: #fff; border: 1px solid var(--rule); border-radius: 6px; overflow: hidden; }
+.card a { color: var(--ink); text-decoration: none; display: block; }
+.card img { width: 100%; display: block; border-bottom: 1px solid var(--rule); }
+.card .text { padding: 0.6rem 0.8rem 0.8rem; }
+.card .num { color: var(--muted); font-size: 0.85rem; }
+.card h2 { font-size: 1.05rem; margin: 0.1rem 0 0.2rem; border: none; padding: 0; }
+nav.pager { display: flex; justify-content: space-between; margin-top: 2.5rem; }
+nav.pager a { color: var(--accent); }
+@media print {
+  body { background: #fff; font-size: 11pt; }
+  header.site, nav.pager, video, .noprint { display: none; }
+  main { max-width: none; padding: 0; }
+  h2 { break-after: avoid; }
+  figure, table, .plots, details { break-inside: avoid; }
+  details > summary { display: none; }
+  details { border: none; padding: 0; }
+  details:not([open]) > * { display: block; }
+  a { color: var(--ink); text-decoration: none; }
+}
+)";
+
+std::string page_head(const std::string& title, const std::string& root) {
+    return "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+           "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n<title>" +
+           escape(title) + "</title>\n<link rel=\"stylesheet\" href=\"" + root +
+           "style.css\">\n</head>\n<body>\n<header class=\"site\"><a href=\"" + root +
+           "index.html\">Collide: lessons on collisions with rotation</a></header>\n<main>\n";
+}
+const char* kPageTail = "</main>\n</body>\n</html>\n";
+
+struct Built {
+    Lesson lesson;
+    RenderReport report;
+    bool thumb = false;
+};
+
+std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
+    const Lesson& L = b.lesson;
+    const RenderReport& r = b.report;
+    const int d = L.scene.dimension;
+    std::ostringstream o;
+    o << page_head(L.title, "../");
+    o << "<p class=\"section\">Lesson " << L.order << " · " << d << "D"
+      << (L.section.empty() ? "" : " · the page's section <em>" + escape(L.section) + "</em>") << "</p>\n";
+    o << "<h1>" << math(L.title) << "</h1>\n";
+    if (!L.goals.empty()) {
+        o << "<h2>Learning goals</h2>\n<ul>\n";
+        for (const std::string& g : L.goals) o << "<li>" << math(g) << "</li>\n";
+        o << "</ul>\n";
+    }
+    o << "<h2>Explanation</h2>\n" << paragraphs(L.explanation);
+    if (r.problem) {
+        o << "<figure><img src=\"figure.png\" alt=\"The bodies before, at and after the first collision\">"
+             "<figcaption>Before, at and after the first collision (t = "
+          << escape(n(r.first_collision->t)) << " s), from the simulation.";
+        if (L.view.directions) o << " Grey arrows: the positive directions (velocities may be negative).";
+        o << "</figcaption></figure>\n";
+    }
+    o << "<h2>Animation</h2>\n";
+    if (r.video == "animation.mp4")
+        o << "<video controls loop muted playsinline preload=\"metadata\" poster=\"frames/frame_00000.png\" src=\"animation.mp4\"></video>\n";
+    else if (r.video == "animation.gif")
+        o << "<figure><img src=\"animation.gif\" alt=\"Animation\"></figure>\n";
+    else
+        o << "<p class=\"note\">The frames are in <a href=\"frames/frame_00000.png\">frames/</a> (" << r.frames
+          << " PNG files); install ffmpeg for a video.</p>\n";
+    if (r.problem && r.solution) {
+        const SolveProblem& P = *r.problem;
+        const Solution& S = *r.solution;
+        o << "<h2>The first collision, worked out</h2>\n";
+        o << "<p class=\"note\">Conventions: the normal n points from A into B; the impulse P acts as +P on B "
+             "and −P on A at the contact point; u = v<sub>pb</sub> − v<sub>pa</sub>; SI units. Model: "
+          << escape(model_name(P.model)) << ".</p>\n";
+        int k = 0;
+        for (const WorkedStep& st : worked_steps(P, S)) {
+            o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
+            for (std::size_t i = 0; i < st.lines.size(); ++i)
+                o << "<div class=\"math" << (st.response && i + 1 == st.lines.size() ? " result" : "") << "\">"
+                  << math(st.lines[i]) << "</div>\n";
+            for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
+        }
+        if (!r.world_note.empty()) o << "<p class=\"note\">" << math(r.world_note) << "</p>\n";
+        // The table: the two bodies before and after.
+        o << "<h2>Before and after</h2>\n<table>\n<tr><th>body</th><th>m (kg)</th><th>v before (m/s)</th>"
+             "<th>v after (m/s)</th>";
+        if (d > 1) o << "<th>ω before (rad/s)</th><th>ω after (rad/s)</th>";
+        o << "</tr>\n";
+        const auto row = [&](const SolveBody& B, const Vec3& v, const Vec3& w) {
+            o << "<tr><td>" << escape(B.name) << "</td><td>" << (B.b3.is_static ? "static" : escape(n(B.b3.mass)))
+              << "</td><td>" << escape(vec(B.b3.v, d)) << "</td><td>" << escape(vec(v, d)) << "</td>";
+            if (d > 1) o << "<td>" << escape(spin(B.b3.w, d)) << "</td><td>" << escape(spin(w, d)) << "</td>";
+            o << "</tr>\n";
+        };
+        row(P.a, S.va, S.wa);
+        row(P.b, S.vb, S.wb);
+        o << "</table>\n<table>\n<tr><th>totals</th><th>before</th><th>after</th></tr>\n"
+          << "<tr><td>momentum (kg m/s)</td><td>" << escape(vec(S.p_before, d)) << "</td><td>" << escape(vec(S.p_after, d)) << "</td></tr>\n";
+        if (d > 1)
+            o << "<tr><td>angular momentum about the origin (kg m²/s)</td><td>" << escape(spin(S.L_before, d))
+              << "</td><td>" << escape(spin(S.L_after, d)) << "</td></tr>\n";
+        o << "<tr><td>kinetic energy (J)</td><td>" << escape(n(S.ke_before)) << "</td><td>" << escape(n(S.ke_after))
+          << "</td></tr>\n</table>\n";
+    }
+    o << "<h2>Energy and momentum against time</h2>\n<div class=\"plots\">"
+         "<img src=\"energy.svg\" alt=\"Energy against time\"><img src=\"momentum.svg\" alt=\"Momentum against time\"></div>\n"
+         "<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "
+         "<a href=\"data.json\">data.json</a>, <a href=\"events.csv\">events.csv</a>.</p>\n";
+    if (!L.questions.empty()) {
+        o << "<h2>Questions</h2>\n<ol class=\"questions\">\n";
+        for (std::size_t i = 0; i < L.questions.size(); ++i) {
+            const LessonQuestion& q = L.questions[i];
+            o << "<li>" << math(q.text) << "\n<details><summary>Answer</summary><p><span class=\"answer\">"
+              << math(i < r.answers.size() ? r.answers[i].text : "?") << "</span>";
+            if (!q.explain.empty()) o << "<br>" << math(q.explain);
+            o << "</p></details></li>\n";
+        }
+        o << "</ol>\n";
+    }
+    o << "<nav class=\"pager\">";
+    o << (prev ? "<a href=\"../" + prev->lesson.id + "/index.html\">← " + math(prev->lesson.title) + "</a>" : "<span></span>");
+    o << "<a href=\"../index.html\">All lessons</a>";
+    o << (next ? "<a href=\"../" + next->lesson.id + "/index.html\">" + math(next->lesson.title) + " →</a>" : "<span></span>");
+    o << "</nav>\n" << kPageTail;
+    return o.str();
+}
+
+std::string index_page(const std::vector<Built>& all) {
+    std::ostringstream o;
+    o << page_head("Collide: lessons", "");
+    o << "<h1>Collisions with rotation: lessons</h1>\n<p>Each lesson is a simulation you can trust: "
+         "the exact instant of contact, the impulse from the page's formulas, and the checks "
+         "(momentum, angular momentum, energy). Open one for its explanation, figure, animation, "
+         "worked example, plots and questions.</p>\n<ul class=\"grid\">\n";
+    for (const Built& b : all) {
+        const Lesson& L = b.lesson;
+        o << "<li class=\"card\"><a href=\"" << L.id << "/index.html\">";
+        if (b.thumb) o << "<img src=\"" << L.id << "/thumb.png\" alt=\"\">";
+        o << "<div class=\"text\"><div class=\"num\">Lesson " << L.order << " · " << L.scene.dimension << "D"
+          << (L.section.empty() ? "" : " · " + escape(L.section)) << "</div><h2>" << math(L.title)
+          << "</h2></div></a></li>\n";
+    }
+    o << "</ul>\n" << kPageTail;
+    return o.str();
+}
+
+}  // namespace
+
+int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& err) {
+    const auto start = std::chrono::steady_clock::now();
+    fs::path tmp;
+    try {
+        if (opt.out_dir.empty()) throw InputError("", {}, "-o", "the output directory is required");
+        // The lessons first: nothing is written when one is wrong.
+        std::vector<Lesson> lessons;
+        if (opt.lessons.empty()) {
+            lessons = load_lessons(lessons_dir());
+        } else {
+            for (const std::string& arg : opt.lessons) {
+                const std::string file = resolve_lesson(arg, lessons_dir());
+                SceneView view;
+                std::optional<Lesson> lesson;
+                load_scenario(file, &view, &lesson);
+                if (!lesson) throw InputError(file, {}, "", "is a scenario, not a lesson (it has no [lesson] table)");
+                lessons.push_back(*lesson);
+            }
+        }
+        if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
+        const fs::path dir(opt.out_dir);
+        std::error_code ec;
+        if (fs::exists(dir, ec) && (!fs::is_directory(dir, ec) || (!fs::is_empty(dir, ec) && !opt.force)))
+            throw InputError(opt.out_dir, {}, "",
+                             fs::is_directory(dir, ec) ? "directory is not empty (use --force to replace it)"
+                                                       : "exists and is not a directory");
+        // Build beside DIR, rename at the end.
+        tmp = dir.parent_path() / (dir.filename().string() + ".tmp-" + std::to_string(::getpid()));
+        fs::remove_all(tmp, ec);
+        fs::create_directories(tmp);
+        const bool video = !render::find_program("ffmpeg").empty();
+        const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+
+        std::vector<Built> built;
+        for (std::size_t k = 0; k < lessons.size(); ++k) {
+            const Lesson& L = lessons[k];
+            const auto t0 = std::chrono::steady_clock::now();
+            RenderOptions ro;
+            ro.scenario = L.file;
+            ro.out_dir = (tmp / L.id).string();
+            ro.size = opt.size;
+            ro.fps = opt.fps;
+            ro.quality = opt.quality;
+            ro.format = video ? "mp4" : "png";
+            ro.quiet = true;
+            std::ostringstream notes;  // "no collision" notes: not an error for a lesson page
+            Built b{L, render_scenario(ro, notes), false};
+            // The thumbnail: the collision instant, or the first frame.
+            const fs::path lesson_dir = tmp / L.id;
+            const fs::path still = fs::exists(lesson_dir / "at.png") ? lesson_dir / "at.png" : lesson_dir / "frames/frame_00000.png";
+            if (fs::exists(still)) {
+                const render::Image thumb = shrink(render::read_png(still.string()), 480);
+                render::write_png_atomic((lesson_dir / "thumb.png").string(), thumb.width, thumb.height, thumb.rgba.data());
+                b.thumb = true;
+            }
+            // Plots.
+            const RenderReport& r = b.report;
+            std::vector<double> ke, pe, total, px, py, pz;
+            for (const render::FrameTotals& s : r.totals) {
+                ke.push_back(s.kinetic);
+                pe.push_back(s.potential);
+                total.push_back(s.kinetic + s.potential);
+                px.push_back(s.momentum.x());
+                py.push_back(s.momentum.y());
+                pz.push_back(s.momentum.z());
+            }
+            std::vector<Series> energy = {{"kinetic", "#1d4ed8", ke}};
+            if (L.scene.gravity.norm() > 0) {
+                energy.push_back({"potential", "#0f766e", pe});
+                energy.push_back({"total", "#1c1c1e", total});
+            }
+            std::vector<Series> momentum;
+            if (L.scene.dimension == 1) {
+                momentum.push_back({"p", "#1d4ed8", px});
+            } else {
+                momentum.push_back({"p_x", "#1d4ed8", px});
+                momentum.push_back({"p_y", "#ce2029", py});
+                if (L.scene.dimension == 3) momentum.push_back({"p_z", "#0f766e", pz});
+            }
+            render::write_file_atomic((lesson_dir / "energy.svg").string(),
+                                      svg_plot("Energy (J)", r.t, energy, r.collision_times, L.scene.duration));
+            render::write_file_atomic((lesson_dir / "momentum.svg").string(),
+                                      svg_plot("Momentum (kg m/s)", r.t, momentum, r.collision_times, L.scene.duration));
+            built.push_back(std::move(b));
+            if (terminal) {
+                char line[200];
+                std::snprintf(line, sizeof line, "[%zu/%zu] %-24s %5.1f s\n", k + 1, lessons.size(), L.id.c_str(),
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+                err << line << std::flush;
+            }
+        }
+        for (std::size_t k = 0; k < built.size(); ++k)
+            render::write_file_atomic((tmp / built[k].lesson.id / "index.html").string(),
+                                      lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr,
+                                                  k + 1 < built.size() ? &built[k + 1] : nullptr));
+        render::write_file_atomic((tmp / "index.html").string(), index_page(built));
+        render::write_file_atomic((tmp / "style.css").string(), kStyle);
+
+        // Into place: an old DIR (with --force) goes aside first, then away.
+        fs::path old;
+        if (fs::exists(dir, ec)) {
+            old = dir.parent_path() / (dir.filename().string() + ".old-" + std::to_string(::getpid()));
+            fs::rename(dir, old);
+        }
+        fs::rename(tmp, dir);
+        tmp.clear();
+        if (!old.empty()) fs::remove_all(old, ec);
+        if (!opt.quiet) {
+            char line[200];
+            std::snprintf(line, sizeof line, "wrote %zu lessons to %s/index.html in %.1f s%s\n", built.size(),
+                          opt.out_dir.c_str(),
+                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                          video ? "" : " (no ffmpeg: pages link the PNG frames instead of a video)");
+            out << line;
+        }
+        return 0;
+    } catch (const InputError& e) {
+        std::error_code ec;
+        if (!tmp.empty()) fs::remove_all(tmp, ec);
+        if (e.file().empty()) err << "collide: error: " << e.key() << ": " << e.message() << "\n";
+        else err << "collide: error: " << e.what() << "\n";
+        return kBadInput;
+    } catch (const std::exception& e) {
+        std::error_code ec;
+        if (!tmp.empty()) fs::remove_all(tmp, ec);
+        err << "collide: " << e.what() << "\n";
+        return 1;
+    }
+}
+
+}  // namespace collide

@@ -1,0 +1,33 @@
+// `collide material -o DIR [LESSON ...]`: a self-contained static HTML site of lessons that
+// works offline (README.md, "collide material"):
+//   DIR/index.html             every lesson with a thumbnail, its section and dimension
+//   DIR/style.css              one stylesheet, with print rules
+//   DIR/ID/index.html          a lesson: goals, explanation, the before / at / after figure, the
+//                              animation, the worked example (formula, then numbers), a table
+//                              of the first collision, plots of energy and momentum against
+//                              time (SVG), questions with answers that open on click
+//   DIR/ID/...                 everything `collide render ID` writes (frames, data, Markdown)
+// The site is built in a temporary directory beside DIR and renamed into place at the end:
+// DIR is complete or untouched.
+#pragma once
+
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+namespace collide {
+
+struct MaterialOptions {
+    std::string out_dir;               // -o DIR
+    std::vector<std::string> lessons;  // ids or lesson files; empty: every bundled lesson
+    std::string size = "720p";         // as collide render
+    double fps = 30.0;
+    std::string quality = "medium";
+    bool quiet = false;                // no progress, no summary
+    bool force = false;                // replace a DIR that is not empty
+};
+
+// Returns the exit code: 0 done, 2 bad input (nothing written), 1 any other failure.
+int run_material(const MaterialOptions& options, std::ostream& out, std::ostream& err);
+
+}  // namespace collide

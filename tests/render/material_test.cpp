@@ -1,0 +1,92 @@
+// `collide material`: the site it writes is complete and self-contained (every internal link
+// and image resolves, nothing is fetched from the network), the answers are on the pages, and
+// bad input writes nothing.
+#include "cli/material_cmd.h"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "test_util.h"
+
+namespace collide {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+MaterialOptions tiny(const std::string& out) {
+    MaterialOptions o;
+    o.out_dir = out;
+    o.lessons = {"catch-up"};
+    o.size = "160x120";
+    o.fps = 10;
+    o.quiet = true;
+    return o;
+}
+
+TEST(Material, EveryLinkAndImageResolvesAndNothingComesFromTheNetwork) {
+    render::test::TempDir dir;
+    std::ostringstream out, err;
+    ASSERT_EQ(run_material(tiny(dir / "site"), out, err), 0) << err.str();
+    const std::regex attr(R"re((?:href|src|poster)="([^"]*)")re");
+    int pages = 0, links = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir / "site")) {
+        if (e.path().extension() != ".html") continue;
+        ++pages;
+        const std::string html = read(e.path());
+        EXPECT_EQ(html.find("http://"), std::string::npos) << e.path();
+        EXPECT_EQ(html.find("https://"), std::string::npos) << e.path();
+        for (std::sregex_iterator m(html.begin(), html.end(), attr), end; m != end; ++m) {
+            const std::string target = (*m)[1];
+            ++links;
+            EXPECT_TRUE(fs::exists(e.path().parent_path() / target)) << e.path() << " -> " << target;
+        }
+    }
+    EXPECT_EQ(pages, 2);  // the index and the lesson
+    EXPECT_GT(links, 10);
+    // The lesson page holds its questions and the computed answers; the index links to it.
+    const std::string lesson = read(fs::path(dir / "site") / "catch-up/index.html");
+    EXPECT_NE(lesson.find("What impulse J does B receive?"), std::string::npos);
+    EXPECT_NE(lesson.find("<details><summary>Answer</summary>"), std::string::npos);
+    EXPECT_NE(lesson.find("1.2 N s"), std::string::npos);  // J = (1 + 0.5) 2 1 (1.5 - 0.3) / 3
+    EXPECT_NE(read(fs::path(dir / "site") / "index.html").find("catch-up/index.html"), std::string::npos);
+    EXPECT_NE(read(fs::path(dir / "site") / "style.css").find("@media print"), std::string::npos);
+    // Built beside the directory and renamed: no temporary left.
+    for (const auto& e : fs::directory_iterator(dir.str()))
+        EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+TEST(Material, BadInputWritesNothing) {
+    render::test::TempDir dir;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons = {"no-such-lesson"};
+    EXPECT_EQ(run_material(o, out, err), 2);
+    EXPECT_NE(err.str().find("no-such-lesson"), std::string::npos) << err.str();
+    EXPECT_FALSE(fs::exists(dir / "site"));
+    // A directory that is not empty is kept unless --force.
+    fs::create_directories(dir / "busy");
+    std::ofstream(dir / "busy/keep.txt") << "mine";
+    err.str("");
+    EXPECT_EQ(run_material(tiny(dir / "busy"), out, err), 2);
+    EXPECT_NE(err.str().find("--force"), std::string::npos) << err.str();
+    EXPECT_TRUE(fs::exists(dir / "busy/keep.txt"));
+    MaterialOptions forced = tiny(dir / "busy");
+    forced.force = true;
+    EXPECT_EQ(run_material(forced, out, err), 0) << err.str();
+    EXPECT_TRUE(fs::exists(dir / "busy/index.html"));
+    EXPECT_FALSE(fs::exists(dir / "busy/keep.txt"));
+}
+
+}  // namespace
+}  // namespace collide
