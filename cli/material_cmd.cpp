@@ -167,29 +167,6 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
     return o.str();
 }
 
-// ---- Thumbnails ----
-
-// A box-filtered copy `width` pixels wide.
-render::Image shrink(const render::Image& im, int width) {
-    render::Image out;
-    out.width = std::max(1, std::min(width, im.width));
-    out.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(im.height) * out.width / im.width)));
-    out.rgba.assign(static_cast<std::size_t>(out.width) * out.height * 4, 0);
-    for (int y = 0; y < out.height; ++y)
-        for (int x = 0; x < out.width; ++x) {
-            const int x0 = x * im.width / out.width, x1 = std::max(x0 + 1, (x + 1) * im.width / out.width);
-            const int y0 = y * im.height / out.height, y1 = std::max(y0 + 1, (y + 1) * im.height / out.height);
-            unsigned sum[4] = {0, 0, 0, 0};
-            for (int yy = y0; yy < y1; ++yy)
-                for (int xx = x0; xx < x1; ++xx)
-                    for (int c = 0; c < 4; ++c) sum[c] += im.pixel(xx, yy)[c];
-            const unsigned count = static_cast<unsigned>((x1 - x0) * (y1 - y0));
-            for (int c = 0; c < 4; ++c)
-                out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] = static_cast<std::uint8_t>(sum[c] / count);
-        }
-    return out;
-}
-
 // ---- Pages ----
 
 const char* kStyle = R"(/* Collide teaching material: one stylesheet for screen and print. */
@@ -224,7 +201,7 @@ summary { cursor: pointer; color: var(--accent); }
 .grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(17rem, 1fr)); gap: 1.2rem; padding: 0; }
 .card { list-style: none; background: #fff; border: 1px solid var(--rule); border-radius: 6px; overflow: hidden; }
 .card a { color: var(--ink); text-decoration: none; display: block; }
-.card img { width: 100%; display: block; border-bottom: 1px solid var(--rule); }
+.card img { width: 100%; aspect-ratio: 16 / 9; object-fit: contain; background: var(--paper); display: block; border-bottom: 1px solid var(--rule); }
 .card .text { padding: 0.6rem 0.8rem 0.8rem; }
 .card .num { color: var(--muted); font-size: 0.85rem; }
 .card h2 { font-size: 1.05rem; margin: 0.1rem 0 0.2rem; border: none; padding: 0; }
@@ -416,14 +393,14 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             ro.quiet = true;
             std::ostringstream notes;  // "no collision" notes: not an error for a lesson page
             Built b{L, render_scenario(ro, notes), false};
-            // The thumbnail: the collision instant, or the first frame.
+            // The thumbnail: the figure's collision panel (collide render writes it), else the
+            // first frame.
             const fs::path lesson_dir = tmp / L.id;
-            const fs::path still = fs::exists(lesson_dir / "at.png") ? lesson_dir / "at.png" : lesson_dir / "frames/frame_00000.png";
-            if (fs::exists(still)) {
-                const render::Image thumb = shrink(render::read_png(still.string()), 480);
+            if (!fs::exists(lesson_dir / "thumb.png") && fs::exists(lesson_dir / "frames/frame_00000.png")) {
+                const render::Image thumb = render::shrink(render::read_png((lesson_dir / "frames/frame_00000.png").string()), 480);
                 render::write_png_atomic((lesson_dir / "thumb.png").string(), thumb.width, thumb.height, thumb.rgba.data());
-                b.thumb = true;
             }
+            b.thumb = fs::exists(lesson_dir / "thumb.png");
             // Plots.
             const RenderReport& r = b.report;
             std::vector<double> ke, pe, total, px, py, pz;

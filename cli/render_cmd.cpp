@@ -295,7 +295,7 @@ void prepare_directory(const RenderOptions& o) {
         const std::string name = e.path().filename().string();
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
-    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "worked-example.md",
+    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "worked-example.md",
                              "lesson.md", "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
 }
@@ -404,6 +404,9 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
             d.trails = false;
             panels.push_back(panels_renderer.render(moments->states[k], d));
         }
+        // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
+        const render::Image thumb = render::shrink(panels[1], 480);
+        render::write_png_atomic(o.out_dir + "/thumb.png", thumb.width, thumb.height, thumb.rgba.data(), q.png);
         const int decimals = settings.time_decimals + 1;
         std::vector<std::string> notes = {"t = " + fixed_text(moments->before, decimals) + " s",
                                           "t = " + fixed_text(moments->at, decimals) + " s",
@@ -549,7 +552,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
                           static_cast<double>(r.frames) / std::max(r.seconds, 1e-9));
             out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate
                 << " to " << o.out_dir << "/frames";
-            if (r.problem) out << ", before.png, at.png, after.png, figure.png, worked-example.md";
+            if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";
             out << ", data.csv, data.json, events.csv";
             if (r.lesson) out << ", lesson.md";
             if (!r.video.empty()) out << ", " << r.video;

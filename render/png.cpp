@@ -4,8 +4,10 @@
 #include <png.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <cmath>
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
@@ -202,6 +204,27 @@ Image read_png(const std::string& path) {
         png_image_free(&image);
         throw std::runtime_error(path + ": cannot read PNG: " + message);
     }
+    return out;
+}
+
+Image shrink(const Image& im, int width) {
+    Image out;
+    out.width = std::max(1, std::min(width, im.width));
+    out.height = std::max(1, static_cast<int>(std::lround(static_cast<double>(im.height) * out.width / im.width)));
+    out.rgba.assign(static_cast<std::size_t>(out.width) * out.height * 4, 0);
+    for (int y = 0; y < out.height; ++y)
+        for (int x = 0; x < out.width; ++x) {
+            // The source pixels this one covers (at least one).
+            const int x0 = x * im.width / out.width, x1 = std::max(x0 + 1, (x + 1) * im.width / out.width);
+            const int y0 = y * im.height / out.height, y1 = std::max(y0 + 1, (y + 1) * im.height / out.height);
+            unsigned sum[4] = {0, 0, 0, 0};
+            for (int yy = y0; yy < y1; ++yy)
+                for (int xx = x0; xx < x1; ++xx)
+                    for (int c = 0; c < 4; ++c) sum[c] += im.pixel(xx, yy)[c];
+            const unsigned count = static_cast<unsigned>((x1 - x0) * (y1 - y0));
+            for (int c = 0; c < 4; ++c)
+                out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] = static_cast<std::uint8_t>(sum[c] / count);
+        }
     return out;
 }
 

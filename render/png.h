@@ -37,6 +37,9 @@ void write_png_atomic(const std::string& path, int width, int height, const std:
 // Any file, with the same guarantee (data.csv, data.json).
 void write_file_atomic(const std::string& path, const std::string& data);
 
+// A box-filtered copy `width` pixels wide (never wider than the image), same aspect.
+Image shrink(const Image& image, int width);
+
 // Any PNG, converted to 8-bit RGBA. Throws std::runtime_error naming the path.
 Image read_png(const std::string& path);
 
