@@ -83,13 +83,13 @@ Lesson load_lesson(const std::string& path) {
     const std::string text = read_input_file(path, &name);
     Lesson L;
     L.file = path;
-    L.scene = parse_scene_text(text, name, &L.view, {"lesson", "question"});
+    L.scene = parse_scene_text(text, name, &L.view, {"lesson", "question", "variant"});
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
     const auto lt = root.table("lesson");
     if (!lt) root.fail("", "missing table [lesson] (a scenario file without one is run with "
                            "'collide step' or 'collide render FILE')");
-    lt->allow_only({"id", "order", "title", "section", "goals", "explanation"});
+    lt->allow_only({"id", "order", "title", "section", "goals", "explanation", "label"});
     L.id = lt->string("id", "a lesson id (letters, digits and -)").value_or("");
     if (L.id.empty()) lt->fail("id", "missing key 'id' (used as `collide render ID`)");
     for (char ch : L.id)
@@ -102,6 +102,42 @@ Lesson load_lesson(const std::string& path) {
     L.goals = strings(*lt, "goals", "a list of learning goals (strings)");
     L.explanation = lt->string("explanation", "the explanation (text)").value_or("");
     if (L.scene.title.empty()) L.scene.title = L.title;
+    L.label = lt->string("label", "the scene's label beside its variants").value_or("");
+
+    // [[variant]]: the scene again with other scene-wide settings.
+    if (const toml::node* list = root.node("variant")) {
+        const toml::array* vs = list->as_array();
+        if (!vs) root.fail("variant", "expected [[variant]] tables");
+        for (std::size_t i = 0; i < vs->size(); ++i) {
+            const toml::table* t = vs->get(i)->as_table();
+            const std::string key = "variant[" + std::to_string(i + 1) + "]";
+            if (!t) root.fail("variant", key + " is not a table; write [[variant]]");
+            const TableReader v(*t, name, key);
+            v.allow_only({"label", "restitution", "friction", "model", "policy"});
+            LessonVariant V{v.string("label", "the variant's label").value_or(""), L.scene};
+            if (V.label.empty()) v.fail("label", "missing key 'label' (shown under its panels)");
+            if (v.has("restitution")) {
+                const double e = *v.number("restitution", "a coefficient of restitution");
+                if (e < 0 || e > 1) v.fail("restitution", "expected a coefficient of restitution in [0, 1], got " + show(e));
+                V.scene.restitution = e;
+                for (SceneBody& b : V.scene.bodies) b.restitution.reset();  // the variant's e for every pair
+            }
+            if (v.has("friction")) {
+                const double mu = *v.number("friction", "a friction coefficient");
+                if (mu < 0) v.fail("friction", "expected a friction coefficient >= 0, got " + show(mu));
+                V.scene.friction = mu;
+                for (SceneBody& b : V.scene.bodies) b.friction.reset();
+            }
+            if (v.has("model"))
+                parse_model(read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick"}, "model", ""),
+                            &V.scene.model);
+            if (v.has("policy"))
+                V.scene.policy = read_choice(v, "policy", {"sequential", "simultaneous"}, "policy", "") == "sequential"
+                                     ? Policy::sequential
+                                     : Policy::simultaneous;
+            L.variants.push_back(std::move(V));
+        }
+    }
 
     if (const toml::node* list = root.node("question")) {
         const toml::array* qs = list->as_array();

@@ -22,6 +22,12 @@ struct LessonQuestion {
     std::string explain;   // optional: how to get there, shown with the answer
 };
 
+// The same scene with other settings, shown side by side with it ("e = 1, 0.5, 0").
+struct LessonVariant {
+    std::string label;        // e.g. "e = 0"
+    Scene scene;              // the lesson's scene with the variant's settings
+};
+
 struct Lesson {
     std::string file;         // as given or found
     std::string id;           // e.g. "catch-up": `collide render catch-up`
@@ -32,6 +38,8 @@ struct Lesson {
     std::string explanation;  // plain language, Markdown paragraphs
     std::vector<LessonQuestion> questions;
     Scene scene;
+    std::string label;        // the scene's own label beside its variants (e.g. "e = 0.5")
+    std::vector<LessonVariant> variants;
     SceneView view;
 };
 

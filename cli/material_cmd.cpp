@@ -302,6 +302,23 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         o << "<tr><td>kinetic energy (J)</td><td>" << escape(n(S.ke_before)) << "</td><td>" << escape(n(S.ke_after))
           << "</td></tr>\n</table>\n";
     }
+    if (!r.variants.empty()) {
+        o << "<h2>Side by side</h2>\n<figure><img src=\"variants.png\" alt=\"The scene and its variants, "
+             "before, at and after the first collision\"></figure>\n<table>\n<tr><th></th><th>impulse on b (N s)</th>"
+             "<th>a after (m/s)</th><th>b after (m/s)</th><th>kinetic energy lost (J)</th></tr>\n";
+        for (const RenderReport::Variant& v : r.variants) {
+            if (!v.first) {
+                o << "<tr><td>" << math(v.label) << "</td><td colspan=\"4\">no collision</td></tr>\n";
+                continue;
+            }
+            const CollisionInstant& c = *v.first;
+            o << "<tr><td>" << math(v.label) << " (" << escape(L.scene.bodies[c.a].name) << " on "
+              << escape(L.scene.bodies[c.b].name) << ")</td><td>" << escape(vec(c.impulse, d)) << "</td><td>"
+              << escape(vec(c.va_after, d)) << "</td><td>" << escape(vec(c.vb_after, d)) << "</td><td>"
+              << escape(n(v.ke_before - v.ke_after)) << "</td></tr>\n";
+        }
+        o << "</table>\n";
+    }
     o << "<h2>Energy and momentum against time</h2>\n<div class=\"plots\">"
          "<img src=\"energy.svg\" alt=\"Energy against time\"><img src=\"momentum.svg\" alt=\"Momentum against time\"></div>\n"
          "<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "

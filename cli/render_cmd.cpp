@@ -295,7 +295,7 @@ void prepare_directory(const RenderOptions& o) {
         const std::string name = e.path().filename().string();
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
-    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "worked-example.md",
+    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "variants.png", "worked-example.md",
                              "lesson.md", "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
 }
@@ -306,11 +306,48 @@ std::string fixed_text(double x, int decimals) {
     return buf;
 }
 
+// A lesson's variants side by side: variants.png and, per scene, the first collision's
+// impulse, velocities after and kinetic energy lost.
+std::string variants_markdown(const RenderReport& r) {
+    if (r.variants.empty()) return "";
+    const int d = r.scene.dimension;
+    const auto V = [d](const Vec3& v) {
+        if (d == 1) return notation::num_text(v.x());
+        return notation::vec(v, d).txt;
+    };
+    std::ostringstream md;
+    md << "\n## Side by side\n\n![the scene and its variants](variants.png)\n\n"
+       << "| | impulse on b (N s) | a after (m/s) | b after (m/s) | kinetic energy lost (J) |\n"
+       << "|---|---|---|---|---|\n";
+    for (const RenderReport::Variant& v : r.variants) {
+        if (!v.first) {
+            md << "| " << v.label << " | no collision | | | |\n";
+            continue;
+        }
+        const CollisionInstant& c = *v.first;
+        md << "| " << v.label << " (" << r.scene.bodies[c.a].name << " on " << r.scene.bodies[c.b].name
+           << ") | " << V(c.impulse) << " | " << V(c.va_after) << " | " << V(c.vb_after) << " | "
+           << notation::num_text(v.ke_before - v.ke_after) << " |\n";
+    }
+    return md.str();
+}
+
 // Returns the seconds spent on the frame sequence (rendering, encoding, writing).
+// The first collision's moments of a scene (a variant), or none when it has no collision.
+std::optional<Moments> first_moments(const Scene& scene, const std::vector<double>& times) {
+    const Run run = scene.dimension == 1   ? simulate<1>(scene, times)
+                    : scene.dimension == 2 ? simulate<2>(scene, times)
+                                           : simulate<3>(scene, times);
+    if (run.impacts.empty()) return std::nullopt;
+    return scene.dimension == 1   ? moments_of<1>(scene, run)
+           : scene.dimension == 2 ? moments_of<2>(scene, run)
+                                  : moments_of<3>(scene, run);
+}
+
 double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView& view,
                      const std::vector<double>& times, Run& run, const Moments* moments,
-                     const WorkedExample* worked,
-                     std::ostream& err) {
+                     const WorkedExample* worked, const Lesson* lesson,
+                     std::vector<RenderReport::Variant>* variant_results, std::ostream& err) {
     const Quality q = quality_of(o.quality);
     int width = 0, height = 0;
     parse_render_size(o.size, &width, &height);
@@ -414,15 +451,57 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
         if (view.directions && scene.dimension == 1) {
             // The page's captions: a (the left block) catches b before, and does not pass it
             // after. The arrows show the positive direction; the velocities may be negative.
+            // With the bodies' names (the page's a and b are the left and the right block).
             const std::size_t a = moments->instant.a, b = moments->instant.b;
+            const std::string A = scene.bodies[a].name, B = scene.bodies[b].name;
             const double va = moments->states[2].bodies[a].v.x(), vb = moments->states[2].bodies[b].v.x();
-            notes[0] += "     v_{ai} > v_{bi}";
-            notes[2] += va <= vb ? "     v_{af} \u2264 v_{bf}" : "     v_{af} > v_{bf}";
+            notes[0] += "     v_{" + A + "i} > v_{" + B + "i}";
+            notes[2] += "     v_{" + A + "f}" + (va <= vb ? " \u2264 " : " > ") + "v_{" + B + "f}";
         }
         const render::Image figure = render::compose_figure(
             *context, panels, {"before", "at collision", "after"}, notes, height);
         render::write_png_atomic(o.out_dir + "/figure.png", figure.width, figure.height,
                                  figure.rgba.data(), q.png);
+
+        // A lesson's variants: the same three moments of each, one row per scene, framed
+        // alike (the panels of the lesson's own scene set the size).
+        if (lesson && !lesson->variants.empty()) {
+            std::vector<render::Image> rows;
+            std::vector<std::pair<std::string, const Scene*>> scenes = {
+                {lesson->label.empty() ? "as above" : lesson->label, &scene}};
+            for (const LessonVariant& v : lesson->variants) scenes.push_back({v.label, &v.scene});
+            for (const auto& [label, s] : scenes) {
+                RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
+                const std::optional<Moments> m = s == &scene ? std::optional<Moments>(*moments)
+                                                             : first_moments(*s, times);
+                if (!m) {
+                    variant_results->push_back(result);
+                    continue;
+                }
+                result.first = m->instant;
+                result.ke_before = pair_kinetic_energy(*s, m->instant, false);
+                result.ke_after = pair_kinetic_energy(*s, m->instant, true);
+                variant_results->push_back(result);
+                std::vector<FrameState> three_v(m->states, m->states + 3);
+                render::Renderer r(*context, *s, panel);
+                r.prepare(three_v, m->states[1].impacts);
+                std::vector<render::Image> row;
+                for (int k = 0; k < 3; ++k) {
+                    render::Decor d;
+                    d.velocities = k != 1;
+                    d.trails = false;
+                    row.push_back(r.render(m->states[k], d));
+                }
+                rows.push_back(render::compose_figure(*context, row,
+                                                      {label + ": before", "at collision", "after"},
+                                                      {"t = " + fixed_text(m->before, decimals) + " s",
+                                                       "t = " + fixed_text(m->at, decimals) + " s",
+                                                       "t = " + fixed_text(m->after, decimals) + " s"},
+                                                      height));
+            }
+            const render::Image all = render::stack_vertically(rows);
+            render::write_png_atomic(o.out_dir + "/variants.png", all.width, all.height, all.rgba.data(), q.png);
+        }
     }
     return seconds;
 }
@@ -518,12 +597,14 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
         report.first_collision = moments->instant;
         report.world_note = worked->formula.note;
     }
+    report.seconds = write_outputs(o, scene, report.view, times, run, moments.get(), worked.get(),
+                                   report.lesson ? &*report.lesson : nullptr, &report.variants, err);
     if (report.lesson) {
         std::ostringstream md;
         write_lesson_markdown(*report.lesson, report.answers, md);
+        md << variants_markdown(report);
         render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
     }
-    report.seconds = write_outputs(o, scene, report.view, times, run, moments.get(), worked.get(), err);
     report.frames = static_cast<long>(times.size());
     report.width = width;
     report.height = height;
@@ -555,6 +636,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";
             out << ", data.csv, data.json, events.csv";
             if (r.lesson) out << ", lesson.md";
+            if (!r.variants.empty()) out << ", variants.png";
             if (!r.video.empty()) out << ", " << r.video;
             // Peak resident memory of the whole process (Linux: kilobytes).
             rusage usage{};

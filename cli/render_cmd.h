@@ -8,6 +8,7 @@
 //   DIR/events.csv                   the collision events
 //   DIR/worked-example.md            the first collision worked out (as `collide solve`)
 //   DIR/lesson.md                    for a lesson: its text, questions and computed answers
+//   DIR/variants.png                 for a lesson with variants: a row of panels for each
 //   DIR/animation.mp4 or .gif        with --format mp4 or gif (needs ffmpeg)
 #pragma once
 
@@ -50,6 +51,14 @@ struct RenderReport {
     std::optional<CollisionInstant> first_collision;
     std::string world_note;  // when the world resolved several points there (the formula box's note)
     std::vector<double> collision_times;       // s, every collision of the run
+    // A lesson's scene and its variants side by side (variants.png): the first collision of
+    // each (none when it has none).
+    struct Variant {
+        std::string label;
+        std::optional<CollisionInstant> first;
+        double ke_before = 0.0, ke_after = 0.0;  // J, the two bodies of that collision
+    };
+    std::vector<Variant> variants;
     std::vector<double> t;                     // every frame's time (s)
     std::vector<render::FrameTotals> totals;   // and its energies and momentum
     long frames = 0;

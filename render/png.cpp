@@ -228,4 +228,25 @@ Image shrink(const Image& im, int width) {
     return out;
 }
 
+Image stack_vertically(const std::vector<Image>& images) {
+    Image out;
+    for (const Image& im : images) {
+        out.width = std::max(out.width, im.width);
+        out.height += im.height;
+    }
+    out.rgba.assign(static_cast<std::size_t>(out.width) * out.height * 4, 255);
+    if (!images.empty() && !images[0].rgba.empty())  // the paper colour around narrower rows
+        for (std::size_t p = 0; p < out.rgba.size(); p += 4)
+            std::copy(images[0].rgba.begin(), images[0].rgba.begin() + 4, out.rgba.begin() + static_cast<long>(p));
+    int y0 = 0;
+    for (const Image& im : images) {
+        for (int y = 0; y < im.height; ++y)
+            std::copy(im.rgba.begin() + static_cast<long>(y) * im.width * 4,
+                      im.rgba.begin() + static_cast<long>(y + 1) * im.width * 4,
+                      out.rgba.begin() + (static_cast<long>(y0 + y) * out.width) * 4);
+        y0 += im.height;
+    }
+    return out;
+}
+
 }  // namespace collide::render

@@ -40,6 +40,10 @@ void write_file_atomic(const std::string& path, const std::string& data);
 // A box-filtered copy `width` pixels wide (never wider than the image), same aspect.
 Image shrink(const Image& image, int width);
 
+// The images one under another, left-aligned on the background colour of the widest's
+// first pixel (figures of one size stack exactly).
+Image stack_vertically(const std::vector<Image>& images);
+
 // Any PNG, converted to 8-bit RGBA. Throws std::runtime_error naming the path.
 Image read_png(const std::string& path);
 

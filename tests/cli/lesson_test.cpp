@@ -2,6 +2,8 @@
 // answers match closed forms; malformed lesson files are refused with their key.
 #include "cli/lesson.h"
 
+#include "engine/world1d.h"
+
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -56,6 +58,25 @@ TEST(Lessons, CatchUpAnswersAreTheClosedForms) {
     EXPECT_NEAR(a[2].value, vb + J / mb, 1e-12);
     EXPECT_NEAR(a[3].value, lost, 1e-12);
     EXPECT_GT(J, 0.0);  // A catches B: J > 0
+}
+
+TEST(Lessons, CatchUpVariantsGiveTheClosedFormImpulseForTheirRestitution) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    const Lesson& L = find(all, "catch-up");
+    ASSERT_EQ(L.variants.size(), 2u);
+    for (const LessonVariant& v : L.variants) {
+        SCOPED_TRACE(v.label);
+        const Scene& s = v.scene;
+        const double ma = s.bodies[0].body1.mass, mb = s.bodies[1].body1.mass;
+        const double dv = s.bodies[0].body1.v - s.bodies[1].body1.v;
+        const double e = s.pair_restitution(0, 1);
+        EXPECT_NE(e, L.scene.pair_restitution(0, 1));  // the variant changed it
+        World1 world(s);
+        std::vector<Event1> events;
+        world.advance_to(s.duration, &events);
+        ASSERT_FALSE(events.empty());
+        EXPECT_NEAR(events[0].impulse, (1 + e) * ma * mb * dv / (ma + mb), 1e-12);
+    }
 }
 
 TEST(Lessons, AnIdResolvesToItsFileAndAnUnknownOneGetsAHint) {
@@ -139,6 +160,12 @@ INSTANTIATE_TEST_SUITE_P(
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\n"
                   "quantity = \"impulse\"\nevent = 3\n",
                   "question[1].event", "the run has 1"},
+        BadLesson{"variant with e > 1",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[variant]]\nlabel = \"e = 2\"\nrestitution = 2.0\n",
+                  "variant[1].restitution", "in [0, 1]"},
+        BadLesson{"variant without a label",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[variant]]\nrestitution = 0.5\n",
+                  "variant[1].label", "missing key 'label'"},
         BadLesson{"unknown lesson key",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\ngoal = [\"g\"]\n",
                   "lesson.goal", "did you mean 'goals'?"}));
