@@ -11,6 +11,7 @@ packages=(
   libcli11-dev                      # command line
   libgtest-dev                      # tests
   libbenchmark-dev                  # collide-bench
+  libbox2d-dev                      # Box2D 2.4.1: the 2D reference of `collide compare`
 )
 
 missing=()
