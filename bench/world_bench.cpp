@@ -3,7 +3,9 @@
 //   gas/N:  discs / spheres (r = 0.05 m) at 5% area / volume fraction in a box of static planes,
 //           e = 1, no gravity, random directions at 0.5 .. 1.5 m/s (fixed seed);
 //   pile/N: discs / spheres dropped in columns of 5 (0.01 m gaps) onto a ground plane, columns
-//           3 radii apart, e = 0.5, gravity -9.81 m/s^2.
+//           3 radii apart, e = 0.5, gravity -9.81 m/s^2;
+//   world2d/gas/5000 and world2d/pyramid20 (20 rows of boxes at rest): beside Box2D's
+//           (bench/box2d_bench.cpp).
 // The scenes are built by tests/engine/world_scenes.h. Each iteration starts from a copy of the
 // same prepared world (copied with the timer paused). Counters: "events" (collisions in the
 // second) and "energy_drift" ((E(1 s) - E(0)) / E(0); kinetic for the gas, kinetic plus
@@ -63,18 +65,25 @@ void pile(benchmark::State& state) {
     simulate_one_second<D>(state, scenes::pile(D, p), true);
 }
 
+// 20 rows of boxes (210) resting on the ground (tests/engine/world_scenes.h, as Box2D's
+// pyramid benchmark), Coulomb friction 0.6, e = 0.
+void pyramid20(benchmark::State& state) {
+    simulate_one_second<2>(state, scenes::pyramid({}), true);
+}
+
 // Names "world2d/gas/100" etc.: the base name plus Google Benchmark's "/<arg>". The piles run
 // one iteration each and stop at N = 1000: once the columns rest, every island is re-solved
 // each 1 ms substep, and N = 10000 takes minutes per simulated second (an open issue).
 [[maybe_unused]] const bool registered = [] {
-    for (const auto& [name, fn] :
-         std::vector<std::pair<std::string, void (*)(benchmark::State&)>>{{"world2d/gas", gas<2>},
-                                                                          {"world3d/gas", gas<3>}})
-        benchmark::RegisterBenchmark(name.c_str(), fn)
-            ->Arg(100)
-            ->Arg(1000)
-            ->Arg(10000)
-            ->Unit(benchmark::kMillisecond);
+    // 2D also at N = 5000, beside box2d/gas/N (bench/box2d_bench.cpp).
+    for (int n : {100, 1000, 5000, 10000})
+        benchmark::RegisterBenchmark("world2d/gas", gas<2>)->Arg(n)->Unit(benchmark::kMillisecond);
+    for (int n : {100, 1000, 10000})
+        benchmark::RegisterBenchmark("world3d/gas", gas<3>)->Arg(n)->Unit(benchmark::kMillisecond);
+    // Beside box2d/pyramid20: one iteration (resting islands are slow, see the README).
+    benchmark::RegisterBenchmark("world2d/pyramid20", pyramid20)
+        ->Iterations(1)
+        ->Unit(benchmark::kMillisecond);
     for (const auto& [name, fn] :
          std::vector<std::pair<std::string, void (*)(benchmark::State&)>>{{"world2d/pile", pile<2>},
                                                                           {"world3d/pile", pile<3>}})

@@ -6,6 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/compare_cmd.h"
 #include "cli/input_error.h"
 #include "cli/interactive.h"
 #include "cli/lesson.h"
@@ -160,6 +161,40 @@ int main(int argc, char** argv) {
         "DIR/style.css (with print rules) and, per lesson, what collide render writes. The site is\n"
         "built beside DIR and renamed into place when complete.\n"
         "Example: collide material -o out/site && chromium out/site/index.html");
+    collide::CompareOptions compare_options;
+    CLI::App* compare = app.add_subcommand(
+        "compare", "Run a 2D scenario through collide and through Box2D 2.4.1 and compare their "
+                   "collisions");
+    compare->add_option("FILE", compare_options.file, "scenario (TOML), 2D; - reads stdin")
+        ->required();
+    compare->add_flag("--json", compare_options.json,
+                      "one JSON object: {\"events\": [{\"a\", \"b\", \"t\", \"collide\", "
+                      "\"box2d\", \"difference\", \"reason\"}, ..]}, velocities after each event");
+    compare->add_flag("--samples", compare_options.samples,
+                      "also both trajectories side by side at the scene's output_dt");
+    compare->add_flag("--box2d-defaults", compare_options.box2d_defaults,
+                      "Box2D's own material rules: restitution threshold 1 m/s, e = max(ea, eb), "
+                      "mu = sqrt(mua mub) (default: collide's rules, e = min(ea, eb), threshold 0, "
+                      "set per contact)");
+    compare->add_option("--dt", compare_options.dt, "Box2D's time step (s), > 0")
+        ->capture_default_str();
+    compare->add_option("--velocity-iterations", compare_options.velocity_iterations,
+                        "Box2D's velocity iterations per step, >= 1")
+        ->capture_default_str();
+    compare->add_option("--position-iterations", compare_options.position_iterations,
+                        "Box2D's position iterations per step, >= 0")
+        ->capture_default_str();
+    compare->footer(
+        "Events are matched by their pair of bodies and their order for that pair. difference:\n"
+        "the largest |v1 - v2| or R |w1 - w2| between the two engines' velocities after the\n"
+        "event (R: the body's bounding radius, so a spin counts as its rim speed), divided by\n"
+        "the pair's largest |v| or R |w| before or after in either engine; below 1e-4 they\n"
+        "agree. Otherwise the reasons that apply: speed cap, model, two-point contact,\n"
+        "restitution threshold, restitution mixing, step gravity, velocities before differ,\n"
+        "normal off by N degrees, other contacts in the same step, friction; or no matching\n"
+        "event.\n"
+        "Example: collide compare lessons/scenes/compare-slow-bounce.toml --box2d-defaults\n"
+        "See README.md, section 'collide compare'.");
 
     try {
         app.parse(argc, argv);
@@ -169,6 +204,7 @@ int main(int argc, char** argv) {
     }
     try {
         if (*solve) return run_solve(file, format, model);
+        if (*compare) return collide::run_compare(compare_options, std::cout, std::cerr);
         if (*step) {
             if (interactive && scene_file == "-") {
                 std::cerr << "collide: error: --interactive reads its commands from stdin; give "

@@ -18,6 +18,7 @@ packages=(
   libfreetype-dev                   # renderer: font rasterisation beside ImGui
   fonts-dejavu-core                 # renderer: the label font (DejaVu Sans, Greek, sub/superscripts)
   ffmpeg                            # collide render --format mp4|gif (optional for the build)
+  libbox2d-dev                      # Box2D 2.4.1: the 2D reference of `collide compare`
 )
 
 missing=()

@@ -1,6 +1,6 @@
-// Scenes for the 2D and 3D worlds built in code (tests/engine/world*_test.cpp and
-// bench/world_bench.cpp): single bodies, static planes, an elastic gas in a walled box and a
-// pile of falling columns. Scene and SceneBody are plain data (engine/scene.h); masses and
+// Scenes for the 2D and 3D worlds built in code (tests/engine/world*_test.cpp,
+// bench/world_bench.cpp and bench/box2d_bench.cpp): single bodies, static planes, an elastic gas
+// in a walled box, a pile of falling columns and a pyramid of boxes at rest. Scene and SceneBody are plain data (engine/scene.h); masses and
 // inertia come from engine/mass.h as the scene file reader (cli/scene_file.cpp) computes them.
 //
 // Random draws are reproducible on every standard library: a std::mt19937_64 with a fixed seed
@@ -247,6 +247,38 @@ inline Scene pile(int dimension, const PileSpec& p) {
             s.bodies.push_back(sphere(name, p.radius, p.mass, x));
         }
     }
+    return s;
+}
+
+// ---- A pyramid of boxes at rest ------------------------------------------------------------
+
+// `rows` rows of square boxes (edge `size`) resting on the ground plane y = 0, as in Box2D's
+// pyramid benchmark: row k (0 at the bottom) holds rows - k boxes `spacing` apart, shifted by
+// spacing / 2 per row, so that each box rests on two below it. The rows touch exactly (no
+// gaps) and every box starts at rest. Coulomb friction mu, restitution e, gravity (0, -g),
+// simultaneous policy. The ground comes first, then the boxes row by row from the bottom
+// (rows (rows + 1) / 2 of them: 210 for 20 rows).
+struct PyramidSpec {
+    int rows = 20;
+    double size = 1.0;       // m (Box2D's pyramid: half-extent 0.5 m)
+    double spacing = 1.125;  // m, centre to centre within a row
+    double mass = 1.0;       // kg
+    double mu = 0.6;
+    double e = 0.0;
+    double g = 9.81;         // m/s^2
+};
+
+inline Scene pyramid(const PyramidSpec& p) {
+    Scene s = empty_scene(2, Policy::simultaneous, p.e, Vec3(0.0, -p.g, 0.0));
+    s.model = Model::coulomb;
+    s.friction = p.mu;
+    s.bodies.push_back(half_plane("ground", Vec2(0, 1), 0.0));
+    for (int k = 0; k < p.rows; ++k)
+        for (int j = 0; j < p.rows - k; ++j) {
+            const Vec2 x((k * 0.5 + j) * p.spacing, (k + 0.5) * p.size);
+            s.bodies.push_back(rectangle("r" + std::to_string(k) + "b" + std::to_string(j), p.size,
+                                         p.size, p.mass, x));
+        }
     return s;
 }
 
