@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <utility>
 #include <ostream>
 
 #include <nlohmann/json.hpp>
@@ -28,9 +29,10 @@ namespace fs = std::filesystem;
 namespace {
 
 struct QuantityInfo {
-    const char* unit;     // for 1D and 2D; "spin" quantities are rad/s
+    const char* unit;
     bool needs_event;
     bool needs_body;
+    bool angular = false;  // spins and angular momenta: a number (z) in 2D, none in 1D
 };
 
 const std::map<std::string, QuantityInfo>& quantity_table() {
@@ -39,8 +41,18 @@ const std::map<std::string, QuantityInfo>& quantity_table() {
         {"impulse_normal", {"N s", true, false}},
         {"velocity_before", {"m/s", true, true}},
         {"velocity_after", {"m/s", true, true}},
-        {"spin_before", {"rad/s", true, true}},
-        {"spin_after", {"rad/s", true, true}},
+        {"spin_before", {"rad/s", true, true, true}},
+        {"spin_after", {"rad/s", true, true, true}},
+        {"point_velocity_before", {"m/s", true, true}},
+        {"point_velocity_after", {"m/s", true, true}},
+        {"normal_velocity_before", {"m/s", true, false}},
+        {"normal_velocity_after", {"m/s", true, false}},
+        {"momentum_before", {"kg m/s", true, false}},
+        {"momentum_after", {"kg m/s", true, false}},
+        {"angular_momentum_before", {"kg m^2/s", true, false, true}},
+        {"angular_momentum_after", {"kg m^2/s", true, false, true}},
+        {"spin_angular_momentum_before", {"kg m^2/s", true, true, true}},
+        {"spin_angular_momentum_after", {"kg m^2/s", true, true, true}},
         {"kinetic_energy_before", {"J", true, false}},
         {"kinetic_energy_after", {"J", true, false}},
         {"energy_lost", {"J", true, false}},
@@ -48,7 +60,7 @@ const std::map<std::string, QuantityInfo>& quantity_table() {
         {"collisions", {"", false, false}},
         {"last_collision_time", {"s", false, false}},
         {"final_velocity", {"m/s", false, true}},
-        {"final_spin", {"rad/s", false, true}},
+        {"final_spin", {"rad/s", false, true, true}},
         {"final_kinetic_energy", {"J", false, false}},
     };
     return table;
@@ -147,7 +159,7 @@ Lesson load_lesson(const std::string& path) {
             const std::string key = "question[" + std::to_string(i + 1) + "]";
             if (!t) root.fail("question", key + " is not a table; write [[question]]");
             const TableReader q(*t, name, key);
-            q.allow_only({"text", "quantity", "event", "body", "explain"});
+            q.allow_only({"text", "quantity", "event", "body", "explain", "at", "about"});
             LessonQuestion Q;
             Q.text = q.string("text", "the question (text)").value_or("");
             if (Q.text.empty()) q.fail("text", "missing key 'text'");
@@ -177,9 +189,14 @@ Lesson load_lesson(const std::string& path) {
             } else {
                 q.forbid("body", "'" + Q.quantity + "' is not about one body");
             }
-            if ((Q.quantity == "spin_before" || Q.quantity == "spin_after" || Q.quantity == "final_spin") &&
-                L.scene.dimension == 1)
-                q.fail("quantity", "bodies on a line do not spin");
+            if (info.angular && L.scene.dimension == 1)
+                q.fail("quantity", "bodies on a line do not spin (no angular quantities in 1D)");
+            const bool point_velocity = Q.quantity.rfind("point_velocity_", 0) == 0;
+            const bool about_point = Q.quantity.rfind("angular_momentum_", 0) == 0;
+            if (point_velocity) Q.at = read_vec(q, "at", L.scene.dimension, "m");
+            else q.forbid("at", "'at' (a point of the body) is for point_velocity_before and _after");
+            if (about_point) Q.about = read_vec(q, "about", L.scene.dimension, "m");
+            else q.forbid("about", "'about' (a fixed point) is for angular_momentum_before and _after");
             Q.explain = q.string("explain", "how to get there (text)").value_or("");
             L.questions.push_back(std::move(Q));
         }
@@ -254,6 +271,36 @@ struct Stepper<1> {
     using Event = Event1;
 };
 
+// The two bodies' total linear momentum and angular momentum about `about` (a fixed point),
+// with the velocities before or after the impulse; static bodies left out (diagnostics.h).
+std::pair<Vec3, Vec3> pair_momenta(const Scene& scene, const CollisionInstant& c, bool after, const Vec3& about) {
+    const SolveProblem p = collision_problem(scene, c);
+    const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
+    const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
+    if (scene.dimension == 1) {
+        Body1 a = p.a.b1, b = p.b.b1;
+        a.v = va.x();
+        b.v = vb.x();
+        return {Vec3(totals(std::vector<Body1>{a, b}).momentum, 0, 0), Vec3::Zero()};
+    }
+    if (scene.dimension == 2) {
+        Body2 a = p.a.b2, b = p.b.b2;
+        a.v = va.head<2>();
+        a.w = wa.z();
+        b.v = vb.head<2>();
+        b.w = wb.z();
+        const Totals2 t = totals(std::vector<Body2>{a, b}, about.head<2>());
+        return {Vec3(t.momentum.x(), t.momentum.y(), 0), Vec3(0, 0, t.angular_momentum)};
+    }
+    Body3 a = p.a.b3, b = p.b.b3;
+    a.v = va;
+    a.w = wa;
+    b.v = vb;
+    b.w = wb;
+    const Totals3 t = totals(std::vector<Body3>{a, b}, about);
+    return {t.momentum, t.angular_momentum};
+}
+
 Vec3 lift(double x) { return Vec3(x, 0, 0); }
 Vec3 lift(const Vec2& v) { return Vec3(v.x(), v.y(), 0); }
 Vec3 lift(const Vec3& v) { return v; }
@@ -297,7 +344,7 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
         const auto set_vector = [&](const Vec3& v) {
             if (D == 1) {
                 a.value = v.x();
-            } else if (D == 2 && info.unit == std::string("rad/s")) {
+            } else if (D == 2 && info.angular) {
                 a.value = v.z();
             } else {
                 a.vector = v;
@@ -328,6 +375,34 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
             else if (q.quantity == "energy_lost")
                 a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
             else if (q.quantity == "time") a.value = c.t;
+            else if (q.quantity == "point_velocity_before" || q.quantity == "point_velocity_after") {
+                const bool after = q.quantity == "point_velocity_after";
+                const CollisionInstant::Side& s = is_a ? c.before_a : c.before_b;
+                const Vec3 v = after ? (is_a ? c.va_after : c.vb_after) : s.v;
+                const Vec3 w = after ? (is_a ? c.wa_after : c.wb_after) : s.w;
+                set_vector(v + w.cross(q.at.value_or(c.point) - s.x));
+            } else if (q.quantity == "normal_velocity_before" || q.quantity == "normal_velocity_after") {
+                const bool after = q.quantity == "normal_velocity_after";
+                const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
+                const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
+                const Vec3 u = (vb + wb.cross(c.point - c.before_b.x)) - (va + wa.cross(c.point - c.before_a.x));
+                a.value = u.dot(c.normal);
+            } else if (q.quantity == "momentum_before" || q.quantity == "momentum_after") {
+                set_vector(pair_momenta(scene, c, q.quantity == "momentum_after", Vec3::Zero()).first);
+            } else if (q.quantity == "angular_momentum_before" || q.quantity == "angular_momentum_after") {
+                set_vector(pair_momenta(scene, c, q.quantity == "angular_momentum_after",
+                                        q.about.value_or(Vec3::Zero()))
+                               .second);
+            } else if (q.quantity == "spin_angular_momentum_before" ||
+                       q.quantity == "spin_angular_momentum_after") {
+                const bool after = q.quantity == "spin_angular_momentum_after";
+                const SolveProblem p = collision_problem(scene, c);
+                const Vec3 w = after ? (is_a ? c.wa_after : c.wb_after) : (is_a ? c.before_a.w : c.before_b.w);
+                const SolveBody& sb = is_a ? p.a : p.b;
+                if (scene.bodies[body].is_static()) set_vector(Vec3::Zero());
+                else if (D == 2) set_vector(Vec3(0, 0, sb.b2.inertia * w.z()));
+                else set_vector(sb.b3.inertia_world() * w);
+            }
         } else if (q.quantity == "collisions") {
             a.value = static_cast<double>(events.size());
         } else if (q.quantity == "last_collision_time") {

@@ -20,6 +20,9 @@ struct LessonQuestion {
     int event = 1;         // event quantities: which collision of the run, from 1
     std::string body;      // body quantities: the body's name
     std::string explain;   // optional: how to get there, shown with the answer
+    std::optional<Vec3> at;     // point_velocity_*: a point of the body (world frame at the
+                                // collision instant, m); unset: the contact point
+    std::optional<Vec3> about;  // angular_momentum_*: the fixed point (m); unset: the origin
 };
 
 // The same scene with other settings, shown side by side with it ("e = 1, 0.5, 0").
@@ -48,7 +51,18 @@ struct Lesson {
 // "velocity_before" / "velocity_after" and "spin_before" / "spin_after" (event, body),
 // "kinetic_energy_before" / "kinetic_energy_after" / "energy_lost" (event: the two bodies),
 // "time" (event), "collisions" (the count over the run), "last_collision_time",
-// "final_velocity" / "final_spin" (body, at the end of the run), "final_kinetic_energy".
+// "final_velocity" / "final_spin" (body, at the end of the run), "final_kinetic_energy";
+// "point_velocity_before" / "point_velocity_after" (event, body: vp = v + w x (p - x) of the
+// body's point p, the contact point unless the question gives `at`, a world point at the
+// collision instant), "normal_velocity_before" / "normal_velocity_after" (event: the relative
+// normal velocity of the contact points u_n = ((vb + wb x rb) - (va + wa x ra)) . n, negative
+// while approaching), "momentum_before" / "momentum_after" (event: the two bodies' total
+// linear momentum), "angular_momentum_before" / "angular_momentum_after" (event: the two
+// bodies' total angular momentum about a fixed point, the origin unless the question gives
+// `about`: sum of I w + (x - o) x m v; not in 1D), "spin_angular_momentum_before" /
+// "spin_angular_momentum_after" (event, body: I w, the body's angular momentum about its own
+// centre of mass; not in 1D). Static bodies count in none of the totals. In 2D angular
+// quantities are numbers (the z component, counter-clockwise +).
 const std::vector<std::string>& lesson_quantities();
 
 // Parses and validates a lesson file (the scenario part as parse_scene_text does). Throws
