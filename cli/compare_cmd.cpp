@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/input_error.h"
+#include "cli/lesson.h"
 #include "cli/notation.h"
 #include "cli/scene_file.h"
 #include "cli/step.h"
@@ -33,9 +34,13 @@ constexpr double kMaxSteps = 1e8;  // Box2D steps a run may take
 
 // Reads the scenario and refuses, at the offending key, what Box2D cannot run.
 Scene read_scene(const std::string& file) {
+    // A scenario file, a lesson file or a lesson id (`collide compare box2d`).
+    const std::string path = file == "-" ? file : resolve_lesson(file, lessons_dir());
     std::string name;
-    const std::string text = read_input_file(file, &name);
-    Scene scene = parse_scene_text(text, name);
+    const std::string text = read_input_file(path, &name);
+    Scene scene = parse_scene_text(text, name, nullptr, {"lesson", "question", "variant"});
+    if (scene.title.empty() && path != "-" && parse_toml_text(text, name).contains("lesson"))
+        scene.title = load_lesson(path).title;
     const auto why = compare::box2d_unsupported(scene);
     if (!why) return scene;
     const toml::table table = parse_toml_text(text, name);

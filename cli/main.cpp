@@ -165,7 +165,7 @@ int main(int argc, char** argv) {
     CLI::App* compare = app.add_subcommand(
         "compare", "Run a 2D scenario through collide and through Box2D 2.4.1 and compare their "
                    "collisions");
-    compare->add_option("FILE", compare_options.file, "scenario (TOML), 2D; - reads stdin")
+    compare->add_option("FILE", compare_options.file, "a 2D scenario (TOML), lesson file or lesson id; - reads stdin")
         ->required();
     compare->add_flag("--json", compare_options.json,
                       "one JSON object: {\"events\": [{\"a\", \"b\", \"t\", \"collide\", "

@@ -479,5 +479,23 @@ TEST(LessonAnswers, CentreOfPercussion) {
     EXPECT_LT(a[3].vector.y(), 0.0);  // near the tip: the handle jumps back
 }
 
+TEST(LessonAnswers, Box2dSlowElasticBounce) {
+    // A disc dropped from rest onto a plane with e = 1: it lands at v = sqrt(2 g h) after
+    // t1 = sqrt(2 h / g), leaves at +v, and lands again every 2 v / g; no energy is lost.
+    const Lesson& L = lesson("box2d");
+    const SceneBody& ball = body(L, "ball");
+    const double g = -L.scene.gravity.y();
+    const double h = ball.body2.position.y() - ball.shape2.radius;
+    const double v = std::sqrt(2 * g * h), t1 = std::sqrt(2 * h / g), period = 2 * v / g;
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(a.size(), 4u);
+    ASSERT_TRUE(a[0].is_vector);
+    EXPECT_NEAR(a[0].vector.x(), 0.0, 1e-12);
+    EXPECT_NEAR(a[0].vector.y(), v, 1e-9);  // contact found to 1e-10 m
+    EXPECT_NEAR(a[1].value, t1, 1e-9);
+    EXPECT_EQ(a[2].value, std::floor((L.scene.duration - t1) / period) + 1);
+    EXPECT_NEAR(a[3].value, 0.0, 1e-12);
+}
+
 }  // namespace
 }  // namespace collide
