@@ -479,6 +479,11 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             out << line;
         }
         return 0;
+    } catch (const Interrupted&) {
+        std::error_code ec;
+        if (!tmp.empty()) fs::remove_all(tmp, ec);
+        err << "collide: interrupted: " << opt.out_dir << " is untouched\n";
+        return 130;
     } catch (const InputError& e) {
         std::error_code ec;
         if (!tmp.empty()) fs::remove_all(tmp, ec);

@@ -4,8 +4,10 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -57,6 +59,36 @@ Quality quality_of(const std::string& name) {
     if (name == "high") return {0, 4, true, {6, false, false}, 2};  // smaller files, slower
     throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");
 }
+
+// ---- Stopping on SIGINT / SIGTERM ----
+
+// Set by the signal handler; the render loop checks it between frames.
+std::atomic<bool> g_interrupted{false};
+extern "C" void on_signal(int) { g_interrupted.store(true); }
+bool interrupted() { return g_interrupted.load(); }
+
+// While alive, SIGINT and SIGTERM ask the render to stop between frames instead of killing
+// the process in the middle of a file.
+class SignalGuard {
+public:
+    SignalGuard() {
+        g_interrupted.store(false);
+        struct sigaction sa {};
+        sa.sa_handler = on_signal;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, &old_int_);
+        sigaction(SIGTERM, &sa, &old_term_);
+    }
+    ~SignalGuard() {
+        sigaction(SIGINT, &old_int_, nullptr);
+        sigaction(SIGTERM, &old_term_, nullptr);
+    }
+    SignalGuard(const SignalGuard&) = delete;
+    SignalGuard& operator=(const SignalGuard&) = delete;
+
+private:
+    struct sigaction old_int_ {}, old_term_ {};
+};
 
 // ---- The run: states at every frame, the events ----
 
@@ -384,6 +416,11 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
     render::Decor decor;
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < run.frames.size(); ++k) {
+        if (interrupted()) {  // SIGINT / SIGTERM: the frames already handed over are finished
+            sink.finish();
+            progress.finish();
+            throw Interrupted(sink.written());
+        }
         FrameState f = run.frames[k];
         render::add_trails(run.frames, trail, &f);
         // A collision shows in the first frame at or after it.
@@ -528,6 +565,7 @@ bool parse_render_size(const std::string& text, int* width, int* height) {
 }
 
 RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
+    const SignalGuard signals;
     RenderReport report;
     // Options first: nothing is written when one is wrong.
     int width = 0, height = 0;
@@ -645,6 +683,10 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             out << "\n";
         }
         return 0;
+    } catch (const Interrupted& e) {
+        err << "collide: interrupted: " << e.frames << " complete frames written to " << o.out_dir
+            << "/frames (no partial file is left)\n";
+        return 130;
     } catch (const InputError& e) {
         if (e.file().empty()) err << "collide: error: " << e.key() << ": " << e.message() << "\n";
         else err << "collide: error: " << e.what() << "\n";

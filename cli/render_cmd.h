@@ -14,6 +14,7 @@
 
 #include <iosfwd>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -67,11 +68,20 @@ struct RenderReport {
     std::string video;                         // "animation.mp4" / ".gif", or ""
 };
 
+// Thrown when SIGINT or SIGTERM stopped a render between frames: every file written is
+// complete (the frames handed to the encoder were finished first).
+struct Interrupted : std::runtime_error {
+    explicit Interrupted(long frames_written)
+        : std::runtime_error("interrupted"), frames(frames_written) {}
+    long frames;
+};
+
 // Renders `options.scenario` into options.out_dir as the command does, without the summary.
-// Throws InputError (bad input: nothing written) or std::runtime_error.
+// Throws InputError (bad input: nothing written), Interrupted, or std::runtime_error.
 RenderReport render_scenario(const RenderOptions& options, std::ostream& err);
 
-// Runs the command. Returns the exit code: 0 done, 2 bad input (one "collide: error: ..."
+// Runs the command. Returns the exit code: 0 done, 130 interrupted (SIGINT / SIGTERM: the
+// files written are complete), 2 bad input (one "collide: error: ..."
 // line on err: the scenario file, an option, or an output directory that is not empty),
 // 1 any other failure. Progress goes to err when it is the process's stderr and a terminal.
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
