@@ -420,27 +420,19 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             b.thumb = fs::exists(lesson_dir / "thumb.png");
             // Plots.
             const RenderReport& r = b.report;
-            std::vector<double> ke, pe, total, px, py, pz;
-            for (const render::FrameTotals& s : r.totals) {
-                ke.push_back(s.kinetic);
-                pe.push_back(s.potential);
-                total.push_back(s.kinetic + s.potential);
-                px.push_back(s.momentum.x());
-                py.push_back(s.momentum.y());
-                pz.push_back(s.momentum.z());
-            }
-            std::vector<Series> energy = {{"kinetic", "#1d4ed8", ke}};
+            const render::TotalsColumns col = render::totals_columns(r.totals);
+            std::vector<Series> energy = {{"kinetic", "#1d4ed8", col.kinetic}};
             if (L.scene.gravity.norm() > 0) {
-                energy.push_back({"potential", "#0f766e", pe});
-                energy.push_back({"total", "#1c1c1e", total});
+                energy.push_back({"potential", "#0f766e", col.potential});
+                energy.push_back({"total", "#1c1c1e", col.total});
             }
             std::vector<Series> momentum;
             if (L.scene.dimension == 1) {
-                momentum.push_back({"p", "#1d4ed8", px});
+                momentum.push_back({"p", "#1d4ed8", col.px});
             } else {
-                momentum.push_back({"p_x", "#1d4ed8", px});
-                momentum.push_back({"p_y", "#ce2029", py});
-                if (L.scene.dimension == 3) momentum.push_back({"p_z", "#0f766e", pz});
+                momentum.push_back({"p_x", "#1d4ed8", col.px});
+                momentum.push_back({"p_y", "#ce2029", col.py});
+                if (L.scene.dimension == 3) momentum.push_back({"p_z", "#0f766e", col.pz});
             }
             render::write_file_atomic((lesson_dir / "energy.svg").string(),
                                       svg_plot("Energy (J)", r.t, energy, r.collision_times, L.scene.duration));

@@ -171,4 +171,17 @@ FrameTotals frame_totals(const Scene& scene, const FrameState& frame) {
     return t;
 }
 
+TotalsColumns totals_columns(const std::vector<FrameTotals>& totals) {
+    TotalsColumns c;
+    for (const FrameTotals& s : totals) {
+        c.kinetic.push_back(s.kinetic);
+        c.potential.push_back(s.potential);
+        c.total.push_back(s.kinetic + s.potential);
+        c.px.push_back(s.momentum.x());
+        c.py.push_back(s.momentum.y());
+        c.pz.push_back(s.momentum.z());
+    }
+    return c;
+}
+
 }  // namespace collide::render

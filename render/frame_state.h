@@ -74,4 +74,11 @@ struct FrameTotals {
 };
 FrameTotals frame_totals(const Scene& scene, const FrameState& frame);
 
+// A run's totals as columns, for plots: kinetic, potential and their sum (J), momentum
+// components (kg m/s).
+struct TotalsColumns {
+    std::vector<double> kinetic, potential, total, px, py, pz;
+};
+TotalsColumns totals_columns(const std::vector<FrameTotals>& totals);
+
 }  // namespace collide::render

@@ -124,30 +124,25 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
         const float y = H - m - strip - (strip > 0 ? gap * 0.5f : 0.0f) - row_h;
         if (plot_w > 0) {
             std::vector<double> t;
-            std::vector<double> ke, pe, total, px, py, pz;
+            std::vector<FrameTotals> sums;
             for (const FrameState& f : samples) {
-                const FrameTotals sums = frame_totals(scene_, f);
                 t.push_back(f.t);
-                ke.push_back(sums.kinetic);
-                pe.push_back(sums.potential);
-                total.push_back(sums.kinetic + sums.potential);
-                px.push_back(sums.momentum.x());
-                py.push_back(sums.momentum.y());
-                pz.push_back(sums.momentum.z());
+                sums.push_back(frame_totals(scene_, f));
             }
-            std::vector<Plot::Series> energy = {{"E_{k}", c.velocity, ke}};
+            const TotalsColumns col = totals_columns(sums);
+            std::vector<Plot::Series> energy = {{"E_{k}", c.velocity, col.kinetic}};
             if (scene_.gravity.norm() > 0) {
-                energy.push_back({"E_{p}", c.normal, pe});
-                energy.push_back({"E", c.ink, total});
+                energy.push_back({"E_{p}", c.normal, col.potential});
+                energy.push_back({"E", c.ink, col.total});
             }
             energy_plot_->prepare(fonts, "energy (J)", t, energy, ImVec2(plot_w, row_h));
             std::vector<Plot::Series> momentum;
             if (scene_.dimension == 1) {
-                momentum.push_back({"p", c.velocity, px});
+                momentum.push_back({"p", c.velocity, col.px});
             } else {
-                momentum.push_back({"p_{x}", c.velocity, px});
-                momentum.push_back({"p_{y}", c.impulse, py});
-                if (scene_.dimension == 3) momentum.push_back({"p_{z}", c.normal, pz});
+                momentum.push_back({"p_{x}", c.velocity, col.px});
+                momentum.push_back({"p_{y}", c.impulse, col.py});
+                if (scene_.dimension == 3) momentum.push_back({"p_{z}", c.normal, col.pz});
             }
             momentum_plot_->prepare(fonts, "momentum (kg m s\u207B\u00B9)", t, momentum,
                                     ImVec2(plot_w, row_h));

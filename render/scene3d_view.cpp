@@ -1051,20 +1051,31 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
                        I.style.lw(2.0f));
             }
         }
-    // Spin curls: three quarters of a circle around the spin arrow near its tip.
+    // Spin curls: three quarters of a circle (radius rc, in the plane e1, e2 about `centre`)
+    // around the spin arrow near its tip; false for bodies that show none.
+    struct Curl {
+        Vec3 centre, e1, e2;
+        double rc;
+    };
+    const auto curl_of = [&](std::size_t i, Curl* c) {
+        const BodyState& s = frame.bodies[i];
+        if (I.scene.bodies[i].is_static() || !(I.k_spin > 0) || s.w.norm() < 1e-9 * I.max_spin ||
+            s.w.norm() < 1e-12)
+            return false;
+        const Vec3 axis = s.w.normalized();
+        c->centre = s.x + axis * (0.5 * I.sizes[i] * 0.9 + 0.6 * I.k_spin * s.w.norm());
+        c->e1 = axis.cross(Vec3::UnitY());
+        if (c->e1.norm() < 1e-6) c->e1 = axis.cross(Vec3::UnitX());
+        c->e1.normalize();
+        c->e2 = axis.cross(c->e1);
+        c->rc = 0.22 * I.unit;
+        return true;
+    };
     if (decor.velocities)
         for (std::size_t i = 0; i < n; ++i) {
-            const BodyState& s = frame.bodies[i];
-            if (I.scene.bodies[i].is_static() || !(I.k_spin > 0) || s.w.norm() < 1e-9 * I.max_spin ||
-                s.w.norm() < 1e-12)
-                continue;
-            const Vec3 axis = s.w.normalized();
-            const Vec3 centre = s.x + axis * (0.5 * I.sizes[i] * 0.9 + 0.6 * I.k_spin * s.w.norm());
-            Vec3 e1 = axis.cross(Vec3::UnitY());
-            if (e1.norm() < 1e-6) e1 = axis.cross(Vec3::UnitX());
-            e1.normalize();
-            const Vec3 e2 = axis.cross(e1);
-            const double rc = 0.22 * I.unit;
+            Curl curl;
+            if (!curl_of(i, &curl)) continue;
+            const auto& [centre, e1, e2, rc] = curl;
             const int segs = 40;
             for (int k = 0; k < segs; ++k) {
                 const double a0 = 1.5 * kPi * k / segs, a1 = 1.5 * kPi * (k + 1) / segs;
@@ -1080,17 +1091,9 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
     gl.Enable(GL_DEPTH_TEST);
     if (decor.velocities)
         for (std::size_t i = 0; i < n; ++i) {
-            const BodyState& s = frame.bodies[i];
-            if (I.scene.bodies[i].is_static() || !(I.k_spin > 0) || s.w.norm() < 1e-9 * I.max_spin ||
-                s.w.norm() < 1e-12)
-                continue;
-            const Vec3 axis = s.w.normalized();
-            const Vec3 centre = s.x + axis * (0.5 * I.sizes[i] * 0.9 + 0.6 * I.k_spin * s.w.norm());
-            Vec3 e1 = axis.cross(Vec3::UnitY());
-            if (e1.norm() < 1e-6) e1 = axis.cross(Vec3::UnitX());
-            e1.normalize();
-            const Vec3 e2 = axis.cross(e1);
-            const double rc = 0.22 * I.unit;
+            Curl curl;
+            if (!curl_of(i, &curl)) continue;
+            const auto& [centre, e1, e2, rc] = curl;
             const double a = 1.5 * kPi;
             const Vec3 end = centre + rc * (std::cos(a) * e1 + std::sin(a) * e2);
             const Vec3 tangent = (-std::sin(a) * e1 + std::cos(a) * e2);
