@@ -1,7 +1,8 @@
 // Scenes for the 2D and 3D worlds built in code (tests/engine/world*_test.cpp and
-// bench/world_bench.cpp): single bodies, static planes, an elastic gas in a walled box and a
-// pile of falling columns. Scene and SceneBody are plain data (engine/scene.h); masses and
-// inertia come from engine/mass.h as the scene file reader (cli/scene_file.cpp) computes them.
+// bench/world_bench.cpp): single bodies, static planes, an elastic gas in a walled box, a
+// pile of falling columns and a pyramid of boxes. Scene and SceneBody are plain data
+// (engine/scene.h); masses and inertia come from engine/mass.h as the scene file reader
+// (cli/scene_file.cpp) computes them.
 //
 // Random draws are reproducible on every standard library: a std::mt19937_64 with a fixed seed
 // whose raw 64-bit output is turned into doubles by hand (as tests/engine/random_bodies.h does).
@@ -245,6 +246,40 @@ inline Scene pile(int dimension, const PileSpec& p) {
         } else {
             const Vec3 x((column % side) * p.spacing, y, (column / side) * p.spacing);
             s.bodies.push_back(sphere(name, p.radius, p.mass, x));
+        }
+    }
+    return s;
+}
+
+// ---- A pyramid of boxes (2D) ---------------------------------------------------------------
+
+// Box2D's pyramid benchmark in 2D: `rows` rows of square boxes (edge `size`, mass from
+// `density`) resting on the ground plane y = 0 (solid below), the bottom row of `rows` boxes
+// edge to edge, each row above one box shorter and shifted by half an edge, every box exactly
+// touching those below it, all at rest. Gravity (0, -g), Coulomb friction mu, restitution e,
+// simultaneous policy. The ground comes first, then the rows from the bottom, left to right:
+// rows (rows + 1) / 2 boxes (20 rows: 210).
+struct PyramidSpec {
+    int rows = 20;
+    double size = 1.0;      // m, edge length
+    double density = 1.0;   // kg/m^2
+    double mu = 0.6;
+    double e = 0.0;
+    double g = 9.81;        // m/s^2
+};
+
+inline Scene pyramid(const PyramidSpec& p) {
+    Scene s = empty_scene(2, Policy::simultaneous, p.e, Vec3(0.0, -p.g, 0.0));
+    s.model = Model::coulomb;
+    s.friction = p.mu;
+    s.bodies.push_back(half_plane("ground", Vec2(0, 1), 0.0));
+    const double h = 0.5 * p.size, mass = p.density * p.size * p.size;
+    int k = 0;
+    for (int row = 0; row < p.rows; ++row) {
+        const double y = (2 * row + 1) * h;
+        for (int col = 0; col < p.rows - row; ++col) {
+            const double x = (row + 2 * col + 1) * h - p.rows * h;  // centred on x = 0
+            s.bodies.push_back(rectangle("box" + std::to_string(k++), p.size, p.size, mass, Vec2(x, y)));
         }
     }
     return s;
