@@ -72,15 +72,15 @@ void pyramid20(benchmark::State& state) {
 }
 
 // Names "world2d/gas/100" etc.: the base name plus Google Benchmark's "/<arg>". The piles run
-// one iteration each and stop at N = 1000: once the columns rest, every island is re-solved
-// each 1 ms substep, and N = 10000 takes minutes per simulated second (an open issue).
+// one iteration each (most of their time is the columns' landing: about 113 collisions per
+// body; once at rest the islands sleep and cost nothing).
 [[maybe_unused]] const bool registered = [] {
     // 2D also at N = 5000, beside box2d/gas/N (bench/box2d_bench.cpp).
     for (int n : {100, 1000, 5000, 10000})
         benchmark::RegisterBenchmark("world2d/gas", gas<2>)->Arg(n)->Unit(benchmark::kMillisecond);
     for (int n : {100, 1000, 10000})
         benchmark::RegisterBenchmark("world3d/gas", gas<3>)->Arg(n)->Unit(benchmark::kMillisecond);
-    // Beside box2d/pyramid20: one iteration (resting islands are slow, see the README).
+    // Beside box2d/pyramid20: one iteration (the pyramid settles in one island solve and sleeps).
     benchmark::RegisterBenchmark("world2d/pyramid20", pyramid20)
         ->Iterations(1)
         ->Unit(benchmark::kMillisecond);
@@ -90,6 +90,7 @@ void pyramid20(benchmark::State& state) {
         benchmark::RegisterBenchmark(name.c_str(), fn)
             ->Arg(100)
             ->Arg(1000)
+            ->Arg(10000)
             ->Iterations(1)
             ->Unit(benchmark::kMillisecond);
     return true;

@@ -21,6 +21,13 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 // Projected Gauss-Seidel sweeps at most; a solve stops earlier when no impulse changes by more
 // than 1e-13 of the largest (redundant points, e.g. a box's four corners, converge slowest).
 constexpr int kMaxSweeps = 500;
+// The active-set polish of solve_points: tried after kPolishAfter sweeps and every
+// 4 kPolishAfter after, accepted when every goal is met to kPolishTolerance of the largest
+// initial miss (and impulses, friction cone, to that fraction of the largest impulse).
+constexpr int kPolishAfter = 8;
+constexpr double kPolishTolerance = 1e-12;
+constexpr int kPolishRounds = 8;
+constexpr double kPolishGrowth = 1e3;  // largest correction, in units of the problem's impulses
 
 // ---- What differs between 2D and 3D, as overloads ----
 
@@ -132,6 +139,15 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     }
     track_.resize(n);
     island_.assign(n, 0);
+    asleep_.assign(n, 0);
+    mark_.assign(n, 0);
+    searched_.assign(n, 0);
+    parent_.assign(n, 0);
+    before_.resize(n);
+    // The resting speeds (see "Resting contact" in world.h).
+    const double g = gravity().norm();
+    rest_smooth_ = 0.5 * kZenoTime * g;
+    rest_cornered_ = std::max(rest_smooth_, std::sqrt(4.0 * g * kTouch));
     seen_.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) set_free(i);
 }
@@ -148,6 +164,7 @@ void World<D>::set_free(std::size_t i) {
     k.alpha = zero<Spin>();
     ++k.version;
     island_[i] = 0;
+    asleep_[i] = 0;
 }
 
 template <int D>
@@ -162,7 +179,7 @@ template <int D>
 void World<D>::drift(std::size_t i, double t) {
     Track& k = track_[i];
     if (t <= k.t) return;
-    move(&bodies_[i], k, t - k.t);
+    if (!asleep_[i]) move(&bodies_[i], k, t - k.t);  // asleep: it does not move at all
     k.t = t;
 }
 
@@ -338,11 +355,8 @@ double World<D>::normal_speed(std::size_t a, std::size_t b, const Vec& p, const 
 
 template <int D>
 double World<D>::rest_speed(std::size_t i, std::size_t j) const {
-    const double g = gravity().norm();
-    double v = 0.5 * kZenoTime * g;
     const bool smooth = (round_[i] || plane_[i]) && (round_[j] || plane_[j]);
-    if (!smooth) v = std::max(v, std::sqrt(4.0 * g * kTouch));
-    return v;
+    return smooth ? rest_smooth_ : rest_cornered_;
 }
 
 // The tangential limit of the points of a group or an island, as PointGoal::mu: coulomb the
@@ -368,7 +382,8 @@ bool World<D>::same_island(std::size_t i, std::size_t j) const {
 
 template <int D>
 double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1) {
-    if (bodies_[i].is_static && bodies_[j].is_static) return kNever;
+    // Neither moves (static or asleep): nothing can happen between them.
+    if ((bodies_[i].is_static || asleep_[i]) && (bodies_[j].is_static || asleep_[j])) return kNever;
     if (t == stall_time_ && stalled_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j)))
         return kNever;
     drift(i, t);
@@ -434,7 +449,8 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     const double turn_rate = (round_[a] ? 0.0 : spin_a * radius_[a]) + (round_[b] ? 0.0 : spin_b * radius_[b]);
     // Touching already (resting on a corner, or parting): watch every point of the pair, not
     // only the nearest, so that a box rocking onto its other corner is caught when it lands.
-    const double margin = touching ? 2.0 * std::max(radius_[a], radius_[b]) + kTouch : kTouch;
+    const double wide = 2.0 * std::max(radius_[a], radius_[b]) + kTouch;
+    const double margin = touching ? wide : kTouch;
     double s = 0.0;
     // The gap that matters: the nearest point not already resting in contact; `lands` and
     // `leave` report touching points that approach or lift off.
@@ -444,17 +460,26 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
         Vec normal;
     };
     auto look = [&](const Body& pa, const Body& pb, bool start) {
-        const Manifold mm = collide(shapes_[a], pose_of(pa), shapes_[b], pose_of(pb), margin);
+        Manifold mm = collide(shapes_[a], pose_of(pa), shapes_[b], pose_of(pb), margin);
+        // Box against box, the separating-axis test prefers a face to an edge pair that is
+        // better by less than its tolerance (1e-6 of the size, far above kTouch): then the
+        // separation can be within kTouch while every clipped point of the face is farther.
+        // The points decide, as they do for the contact manifold of resolve(): their depths
+        // (from the wide manifold: same points, a larger margin) are the gap.
+        if (!touching && mm.count == 0 && mm.separation <= kTouch)
+            mm = collide(shapes_[a], pose_of(pa), shapes_[b], pose_of(pb), wide);
         Look l;
         l.normal = mm.normal;
         l.separation = mm.separation;
         if (mm.count == 0) l.gap = mm.separation;
+        bool near = false;  // a point within kTouch
         for (int k = 0; k < mm.count; ++k) {
             const double depth = mm.depths[k];
             if (depth > kTouch) {
                 l.gap = std::min(l.gap, depth);
                 continue;
             }
+            near = true;
             const Vec& p = mm.points[k];
             const double un = ((pb.v + spin_cross(pb.w, p - pb.position)) -
                                (pa.v + spin_cross(pa.w, p - pa.position))).dot(mm.normal);
@@ -469,7 +494,7 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
                 if (an < 0.0) l.leave = std::min(l.leave, 2.0 * un / -an);
             }
         }
-        if (!touching && mm.separation <= kTouch) l.lands = true;
+        if (!touching && (mm.count == 0 ? mm.separation <= kTouch : near)) l.lands = true;
         return l;
     };
     double previous_gap = kNever, previous_s = 0.0;
@@ -531,25 +556,36 @@ void World<D>::predict(std::size_t i, double t) {
 
 // ---- Contacts at one instant ----
 
+// Every touching pair of body i at time t, appended to out. Within one search (begin_search)
+// a pair is reported once: from whichever of its bodies is searched first (a plane searches
+// only planes, so its pairs are always reported from the other side).
 template <int D>
-void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out,
-                           std::unordered_set<std::uint64_t>* known) {
+void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
     drift(i, t);
+    searched_[i] = search_;
     for_each_neighbour(i, t, [&](std::size_t j) {
         if (bodies_[i].is_static && bodies_[j].is_static) return;
-        const std::size_t a = std::min(i, j), b = std::max(i, j);
-        const std::uint64_t key = static_cast<std::uint64_t>(a) << 32 | b;
-        if (known->count(key)) return;
+        if (searched_[j] == search_ && !plane_[j]) return;  // reported from j's side
         drift(j, t);
+        const std::size_t a = std::min(i, j), b = std::max(i, j);
         const Manifold m = manifold(a, b);
         if (m.separation > kTouch || m.count == 0) return;
-        known->insert(key);
         Contact c;
         c.a = a;
         c.b = b;
         c.m = m;
         out->push_back(c);
     });
+}
+
+// A fresh stamp for per-body marks (stamp vectors are cleared when the counter wraps).
+template <int D>
+std::uint32_t World<D>::fresh(std::vector<std::uint32_t>* marks, std::uint32_t* counter) {
+    if (++*counter == 0) {
+        std::fill(marks->begin(), marks->end(), 0);
+        *counter = 1;
+    }
+    return *counter;
 }
 
 template <int D>
@@ -660,7 +696,231 @@ void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<Po
         const Body& B = body_ref(c.b);
         return Vec((B.v + spin_cross(B.w, r.rb)) - (A.v + spin_cross(A.w, r.ra)));
     };
+    // The size of the problem: the largest initial miss of a goal (m/s), the yardstick of the
+    // polish's tolerances.
+    double miss = 0.0;
+    for (const Row& r : rows) {
+        if (!std::isfinite(r.goal.un)) continue;
+        const Vec u = rel(r);
+        const double un = u.dot(r.n) - r.goal.un;
+        miss = std::max(miss, r.goal.push_only ? -un : std::abs(un));
+        for (int q = 0; q < r.nt; ++q) miss = std::max(miss, std::abs((u - r.goal.ut).dot(r.t[q])));
+    }
+
+    // Active-set polish. Projected Gauss-Seidel finds which points push and which stick after
+    // a few sweeps but then converges slowly on stacks (the error of a tall pile decays like
+    // that of a long chain). With the active set fixed, the impulses are the solution of a
+    // linear system: every pushing point (impulse > 0 now) reaches its normal goal, every
+    // sticking point its tangential goal. W x = b (b: the goals' present misses; W = J M^-1 J^T
+    // over those rows: symmetric, positive semi-definite; singular for redundant points, e.g.
+    // a box's corners, but consistent) is solved for the correction x by conjugate gradients
+    // (Jacobi-preconditioned: diag W = 1/mn, 1/mt), matrix-free through the bodies. A point
+    // the correction would make pull (impulse < 0) is released and the rest solved again (at
+    // most kPolishRounds times): redundant points can share a load in many ways. Two variants:
+    // `frictionless` first drops every Coulomb tangential impulse and asks only the normal
+    // goals (a stack held by normal forces alone, e.g. a pyramid of aligned boxes: the friction
+    // the sweeps spread over it is one of many equally valid choices), else the sticking
+    // points' tangential impulses are unknowns too. The result is kept only if it solves the
+    // whole problem to kPolishTolerance of `miss` (impulses to that fraction of the largest):
+    // pushing points at their goals with impulses >= 0, tangential goals met inside the
+    // friction cone, idle points not approaching; otherwise everything is undone and the sweeps
+    // go on. Goals that no motion meets (W x = b inconsistent: the residual stalls while x
+    // grows) abandon the polish.
+    auto polish = [&](bool frictionless) -> bool {
+        struct Unknown {
+            std::size_t row;
+            int q;     // -1: normal, else the tangent
+            Vec d;     // the impulse direction
+            double target, precond;
+            int sa, sb;  // body slots, -1 for a static body
+        };
+        std::vector<std::size_t> slot_body;
+        std::unordered_map<std::size_t, int> slot;
+        auto slot_of = [&](std::size_t i) {
+            if (body_ref(i).is_static) return -1;
+            auto [it, fresh] = slot.emplace(i, static_cast<int>(slot_body.size()));
+            if (fresh) slot_body.push_back(i);
+            return it->second;
+        };
+        double lam_scale = 0.0;
+        for (const Row& r : rows) {
+            lam_scale = std::max(lam_scale, std::abs(r.lam));
+            if (!std::isfinite(r.goal.un)) continue;
+            const Contact& c = (*contacts)[r.c];
+            slot_of(c.a);
+            slot_of(c.b);
+        }
+        const double lam_tol = kPolishTolerance * std::max(lam_scale, 1e-300);
+        // What is undone if the polish fails.
+        std::vector<Row> saved_rows = rows;
+        std::vector<std::pair<Vec, Spin>> saved_bodies;
+        for (std::size_t i : slot_body) saved_bodies.emplace_back(body_ref(i).v, body_ref(i).w);
+        auto release = [&](Row& r, bool normal_too) {  // a row's impulses back to zero
+            Vec P = zero<Vec>();
+            for (int q = 0; q < r.nt; ++q) P -= r.lam_t[q] * r.t[q];
+            r.lam_t = {0.0, 0.0};
+            if (normal_too) {
+                P -= r.lam * r.n;
+                r.lam = 0.0;
+            }
+            apply(r, P);
+        };
+        if (frictionless)
+            for (Row& r : rows)
+                if (r.goal.mu > 0.0) release(r, false);
+        const std::size_t nb = slot_body.size();
+        std::vector<Vec> dv(nb);
+        std::vector<Spin> dw(nb);
+        const double tol = kPolishTolerance * miss;
+        double worst = kNever;
+        bool failed = false;
+        // The impulses the problem can ask for: those held, or those that cancel the largest
+        // miss at the stiffest point.
+        double impulse_scale = lam_scale;
+        for (const Row& r : rows) impulse_scale = std::max(impulse_scale, miss * std::max({r.mn, r.mt[0], r.mt[1]}));
+        std::vector<Unknown> act;
+        // Rounds: a pushing point the solve would have pull (impulse < 0) is released and the
+        // rest solved again (redundant points share a load in many ways).
+        for (int round = 0; round < kPolishRounds; ++round) {
+            act.clear();
+            for (std::size_t k = 0; k < rows.size(); ++k) {
+                const Row& r = rows[k];
+                if (!std::isfinite(r.goal.un) || (r.goal.push_only && !(r.lam > 0.0))) continue;
+                const Contact& c = (*contacts)[r.c];
+                const int sa = slot_of(c.a), sb = slot_of(c.b);
+                act.push_back(Unknown{k, -1, r.n, r.goal.un, r.mn, sa, sb});
+                if (frictionless && r.goal.mu > 0.0) continue;
+                for (int q = 0; q < r.nt; ++q)
+                    act.push_back(Unknown{k, q, r.t[q], r.goal.ut.dot(r.t[q]), r.mt[q], sa, sb});
+            }
+            if (act.empty()) break;
+            const std::size_t n = act.size();
+            // y = W x: the velocity change along each direction from the impulses x.
+            auto product = [&](const std::vector<double>& x, std::vector<double>* y) {
+                std::fill(dv.begin(), dv.end(), zero<Vec>());
+                std::fill(dw.begin(), dw.end(), zero<Spin>());
+                for (std::size_t k = 0; k < n; ++k) {
+                    const Unknown& u = act[k];
+                    const Row& r = rows[u.row];
+                    const Vec P = x[k] * u.d;
+                    if (u.sa >= 0) {
+                        dv[u.sa] -= P * body_ref(slot_body[u.sa]).inv_mass();
+                        dw[u.sa] -= r.inv_Ia * lever(r.ra, P);
+                    }
+                    if (u.sb >= 0) {
+                        dv[u.sb] += P * body_ref(slot_body[u.sb]).inv_mass();
+                        dw[u.sb] += r.inv_Ib * lever(r.rb, P);
+                    }
+                }
+                for (std::size_t k = 0; k < n; ++k) {
+                    const Unknown& u = act[k];
+                    const Row& r = rows[u.row];
+                    Vec rel_v = zero<Vec>();
+                    if (u.sb >= 0) rel_v += dv[u.sb] + spin_cross(dw[u.sb], r.rb);
+                    if (u.sa >= 0) rel_v -= dv[u.sa] + spin_cross(dw[u.sa], r.ra);
+                    (*y)[k] = rel_v.dot(u.d);
+                }
+            };
+            // Conjugate gradients, restarted from the true residual every kRestart iterations
+            // (a singular W lets round-off grow in its null space otherwise).
+            std::vector<double> x(n, 0.0), b(n), res(n), z(n), p(n), q(n);
+            for (std::size_t k = 0; k < n; ++k) b[k] = act[k].target - rel(rows[act[k].row]).dot(act[k].d);
+            constexpr int kRestart = 64;
+            const int max_iterations = static_cast<int>(std::min<std::size_t>(8 * n + 64, 20000));
+            double rz = 0.0, restarted = kNever;
+            for (int it = 0; it < max_iterations; ++it) {
+                if (it % kRestart == 0) {
+                    product(x, &q);
+                    worst = 0.0;
+                    rz = 0.0;
+                    for (std::size_t k = 0; k < n; ++k) {
+                        res[k] = b[k] - q[k];
+                        worst = std::max(worst, std::abs(res[k]));
+                        p[k] = act[k].precond * res[k];
+                        rz += res[k] * p[k];
+                    }
+                    if (worst <= 0.5 * tol) break;
+                    // Goals no motion of the bodies meets (e.g. a sliding face's corners asked
+                    // to stop in a twist): the residual stalls while x grows without bound.
+                    if (!(worst < 0.5 * restarted)) {
+                        failed = true;
+                        break;
+                    }
+                    restarted = worst;
+                }
+                product(p, &q);
+                double pq = 0.0;
+                for (std::size_t k = 0; k < n; ++k) pq += p[k] * q[k];
+                if (!(pq > 0.0)) {
+                    it += kRestart - 1 - it % kRestart;  // restart
+                    continue;
+                }
+                const double alpha = rz / pq;
+                double rz_new = 0.0;
+                worst = 0.0;
+                for (std::size_t k = 0; k < n; ++k) {
+                    x[k] += alpha * p[k];
+                    res[k] -= alpha * q[k];
+                    worst = std::max(worst, std::abs(res[k]));
+                    z[k] = act[k].precond * res[k];
+                    rz_new += res[k] * z[k];
+                }
+                if (worst <= 0.1 * tol) it += kRestart - 1 - it % kRestart;  // confirm by a restart
+                const double beta = rz_new / rz;
+                rz = rz_new;
+                for (std::size_t k = 0; k < n; ++k) p[k] = z[k] + beta * p[k];
+            }
+            double largest = 0.0;
+            for (std::size_t k = 0; k < n; ++k) largest = std::max(largest, std::abs(x[k]));
+            if (failed || !(largest <= kPolishGrowth * impulse_scale)) {
+                failed = true;
+                break;
+            }
+            for (std::size_t k = 0; k < n; ++k) {
+                Row& r = rows[act[k].row];
+                apply(r, x[k] * act[k].d);
+                (act[k].q < 0 ? r.lam : r.lam_t[act[k].q]) += x[k];
+            }
+            bool pulled = false;
+            for (Row& r : rows)
+                if (std::isfinite(r.goal.un) && r.goal.push_only && r.lam < -lam_tol) {
+                    release(r, true);
+                    pulled = true;
+                }
+            if (!pulled) break;
+        }
+        // The whole problem, checked afresh on the bodies' velocities.
+        bool ok = !failed;
+        for (std::size_t k = 0; k < rows.size() && ok; ++k) {
+            const Row& r = rows[k];
+            if (!std::isfinite(r.goal.un)) continue;
+            const Vec u = rel(r);
+            const double un = u.dot(r.n) - r.goal.un;
+            const bool pushing = !r.goal.push_only || r.lam != 0.0;
+            ok = pushing ? std::abs(un) <= tol && (!r.goal.push_only || r.lam >= -lam_tol) : un >= -tol;
+            if (!ok || r.nt == 0 || !pushing) continue;
+            double norm = 0.0;
+            for (int q2 = 0; q2 < r.nt; ++q2) {
+                norm += r.lam_t[q2] * r.lam_t[q2];
+                ok = ok && std::abs((u - r.goal.ut).dot(r.t[q2])) <= tol;
+            }
+            if (r.goal.mu > 0.0) ok = ok && std::sqrt(norm) <= r.goal.mu * std::max(0.0, r.lam) + lam_tol;
+        }
+        if (!ok) {
+            rows = std::move(saved_rows);
+            for (std::size_t s = 0; s < slot_body.size(); ++s) {
+                body_ref(slot_body[s]).v = saved_bodies[s].first;
+                body_ref(slot_body[s]).w = saved_bodies[s].second;
+            }
+        }
+        return ok;
+    };
+    bool coulomb_rows = false;
+    for (const Row& r : rows) coulomb_rows = coulomb_rows || (r.nt > 0 && r.goal.mu > 0.0);
     for (int it = 0; it < kMaxSweeps; ++it) {
+        if (miss > 0.0 && (it == kPolishAfter || (it > kPolishAfter && it % (4 * kPolishAfter) == 0)) &&
+            ((coulomb_rows && polish(true)) || polish(false)))
+            break;
         double change = 0.0, scale = 1e-300;
         for (Row& r : rows) {
             if (!std::isfinite(r.goal.un)) continue;  // a point left out of this solve
@@ -733,28 +993,33 @@ void World<D>::resolve_simultaneous(std::vector<Contact>* contacts) {
 }
 
 template <int D>
-void World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events) {
+bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events) {
+    bool impact = false;  // some touching point approached faster than the resting speed
     std::vector<Contact> contacts;
-    std::unordered_set<std::uint64_t> known;
     std::vector<std::size_t> group;  // dynamic bodies reached, in discovery order
-    std::unordered_map<std::size_t, typename Event<D>::Velocity> before;
+    const std::uint32_t reached = fresh(&mark_, &mark_id_);
+    fresh(&searched_, &search_);
     auto reach = [&](std::size_t k) {
-        if (bodies_[k].is_static || before.count(k)) return false;
+        if (bodies_[k].is_static || mark_[k] == reached) return false;
+        mark_[k] = reached;
         drift(k, t);
-        before[k] = {bodies_[k].v, bodies_[k].w};
+        before_[k] = {bodies_[k].v, bodies_[k].w};
         group.push_back(k);
         return true;
     };
     for (std::size_t k : {i, j}) reach(k);
-    for (std::size_t k : {i, j}) contacts_of(k, t, &contacts, &known);
+    for (std::size_t k : {i, j}) contacts_of(k, t, &contacts);
     auto by_pair = [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; };
 
     if (scene_.policy == Policy::simultaneous) {
         // The whole touching group: follow contacts through every dynamic body reached.
         for (std::size_t q = 0; q < contacts.size(); ++q)
             for (std::size_t k : {contacts[q].a, contacts[q].b})
-                if (reach(k)) contacts_of(k, t, &contacts, &known);
+                if (reach(k)) contacts_of(k, t, &contacts);
         std::sort(contacts.begin(), contacts.end(), by_pair);
+        for (const Contact& c : contacts)
+            for (int k = 0; k < c.m.count; ++k)
+                impact = impact || normal_speed(c.a, c.b, c.m.points[k], c.m.normal) < -rest_speed(c.a, c.b);
         resolve_simultaneous(&contacts);
     } else {
         const std::size_t max_passes = 64 * std::max<std::size_t>(1, bodies_.size());
@@ -767,8 +1032,9 @@ void World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
                 for (int k = 0; k < contacts[q].m.count; ++k) {
                     if (!resolve_point(&contacts[q], k)) continue;
                     settled = false;
+                    impact = true;
                     for (std::size_t body : {contacts[q].a, contacts[q].b})
-                        if (reach(body)) contacts_of(body, t, &contacts, &known);
+                        if (reach(body)) contacts_of(body, t, &contacts);
                 }
         }
         if (!settled) {
@@ -787,14 +1053,15 @@ void World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         ev.impulse = c.impulse;
         ev.point = c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0];
         auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
-        ev.before_a = before.count(c.a) ? before[c.a] : vel(c.a);
-        ev.before_b = before.count(c.b) ? before[c.b] : vel(c.b);
+        ev.before_a = mark_[c.a] == reached ? before_[c.a] : vel(c.a);
+        ev.before_b = mark_[c.b] == reached ? before_[c.b] : vel(c.b);
         ev.after_a = vel(c.a);
         ev.after_b = vel(c.b);
         events->push_back(ev);
         ++counters_.events;
     }
     settle(group, t);
+    return impact;
 }
 
 // After an instant: the bodies reached (and the islands they belonged to) get new motions:
@@ -802,32 +1069,45 @@ void World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
 template <int D>
 void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
     std::vector<std::size_t> bodies;
-    std::unordered_set<std::size_t> in;
+    const std::uint32_t in = fresh(&mark_, &mark_id_);
+    fresh(&searched_, &search_);
     // A body brings the other members of the island it was in: their forces change too.
-    std::function<void(std::size_t)> add = [&](std::size_t k) {
-        if (bodies_[k].is_static || in.count(k)) return;
-        in.insert(k);
-        bodies.push_back(k);
-        auto it = members_.find(island_[k]);
-        if (island_[k] == 0 || it == members_.end()) return;
-        const std::vector<std::size_t> others = std::move(it->second);
-        members_.erase(it);
-        for (std::size_t m : others) add(m);
+    std::vector<std::size_t> stack;
+    auto add = [&](std::size_t first) {
+        stack.assign(1, first);
+        while (!stack.empty()) {
+            const std::size_t k = stack.back();
+            stack.pop_back();
+            if (bodies_[k].is_static || mark_[k] == in) continue;
+            mark_[k] = in;
+            parent_[k] = k;
+            bodies.push_back(k);
+            if (island_[k] == 0) continue;
+            auto it = members_.find(island_[k]);
+            if (it == members_.end()) continue;
+            const std::vector<std::size_t> others = std::move(it->second);
+            members_.erase(it);
+            stack.insert(stack.end(), others.rbegin(), others.rend());
+        }
     };
     for (std::size_t k : reached) add(k);
-    // Islands: connected through resting contacts (touching, |un| <= v_rest at every point).
-    std::vector<Contact> contacts;
-    std::unordered_set<std::uint64_t> known;
-    std::unordered_map<std::size_t, std::size_t> parent;
-    std::function<std::size_t(std::size_t)> root = [&](std::size_t k) {
-        auto it = parent.find(k);
-        if (it == parent.end() || it->second == k) return k;
-        return it->second = root(it->second);
+    // Islands: connected through resting contacts (touching, |un| <= v_rest at every point),
+    // found by union-find over parent_.
+    auto root = [&](std::size_t k) {
+        std::size_t r = k;
+        while (parent_[r] != r) r = parent_[r];
+        while (parent_[k] != r) {
+            const std::size_t next = parent_[k];
+            parent_[k] = r;
+            k = next;
+        }
+        return r;
     };
+    std::vector<Contact> contacts;
     std::vector<Contact> resting;
     for (std::size_t q = 0; q < bodies.size(); ++q) {
         const std::size_t start = contacts.size();
-        contacts_of(bodies[q], t, &contacts, &known);
+        contacts_of(bodies[q], t, &contacts);
         for (std::size_t c = start; c < contacts.size(); ++c) {
             const Contact& ct = contacts[c];
             const double v_rest = rest_speed(ct.a, ct.b);
@@ -837,29 +1117,41 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
             if (!rests) continue;
             resting.push_back(ct);
             for (std::size_t k : {ct.a, ct.b}) add(k);
-            if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent[root(ct.a)] = root(ct.b);
+            if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent_[root(ct.a)] = root(ct.b);
         }
     }
-    std::unordered_map<std::size_t, std::vector<Contact>> by_root;
-    for (const Contact& c : resting) by_root[root(bodies_[c.a].is_static ? c.b : c.a)].push_back(c);
+    // The islands in the order of their roots, each's contacts by pair.
+    std::vector<std::pair<std::size_t, std::size_t>> order;  // (root, index in resting)
+    for (std::size_t c = 0; c < resting.size(); ++c)
+        order.emplace_back(root(bodies_[resting[c].a].is_static ? resting[c].b : resting[c].a), c);
+    std::sort(order.begin(), order.end(), [&](const auto& x, const auto& y) {
+        if (x.first != y.first) return x.first < y.first;
+        const Contact &p = resting[x.second], &q = resting[y.second];
+        return p.a != q.a ? p.a < q.a : p.b < q.b;
+    });
     for (std::size_t k : bodies) set_free(k);
-    std::vector<std::size_t> roots;
-    for (const auto& entry : by_root) roots.push_back(entry.first);
-    std::sort(roots.begin(), roots.end());
-    for (std::size_t r : roots) {
-        std::vector<Contact>& island = by_root[r];
-        std::sort(island.begin(), island.end(),
-                  [](const Contact& x, const Contact& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
-        std::vector<std::size_t> members;
-        for (const Contact& c : island)
-            for (std::size_t k : {c.a, c.b})
-                if (!bodies_[k].is_static && std::find(members.begin(), members.end(), k) == members.end())
+    const std::uint32_t member = fresh(&mark_, &mark_id_);
+    std::vector<Contact> island;
+    std::vector<std::size_t> members;
+    for (std::size_t first = 0; first < order.size();) {
+        std::size_t last = first;
+        while (last < order.size() && order[last].first == order[first].first) ++last;
+        island.clear();
+        members.clear();
+        for (std::size_t c = first; c < last; ++c) {
+            island.push_back(resting[order[c].second]);
+            for (std::size_t k : {island.back().a, island.back().b})
+                if (!bodies_[k].is_static && mark_[k] != member) {
+                    mark_[k] = member;
                     members.push_back(k);
+                }
+        }
         solve_island(&island, members, t);
+        first = last;
     }
     for (std::size_t k : bodies) {
         insert(k, t, substep_end_);
-        predict(k, t);
+        predict(k, t);  // also a new sleeper: its neighbours predicted it still moving
     }
 }
 
@@ -894,7 +1186,11 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
     if (!(h > 0.0)) return;
     // Velocities a step h later with gravity, then the impulses that keep every point from
     // approaching; their average over h is the force.
-    std::vector<Body> later = bodies_;
+    // (later_ is indexed like bodies_; only the island's bodies are copied into it.)
+    std::vector<Body>& later = later_;
+    if (later.size() != bodies_.size()) later = bodies_;
+    for (const Contact& c : *contacts)
+        for (std::size_t k : {c.a, c.b}) later[k] = bodies_[k];
     for (std::size_t k : members) later[k].v += gravity() * h;
     goals.clear();
     for (const Contact& c : *contacts) {
@@ -923,6 +1219,25 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         track_[k].a = (later[k].v - bodies_[k].v) / h;
         track_[k].alpha = (later[k].w - bodies_[k].w) / h;
     }
+    // Sleep (see "Sleeping islands" in the header): every surface point of every member moves
+    // slower than v_sleep = kZenoTime |g| / 2, the speed the world already counts as resting,
+    // and would still after a rest step: |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep.
+    const double v_sleep = 0.5 * kZenoTime * gravity().norm();
+    for (std::size_t k : members) {
+        const Track& tk = track_[k];
+        const double speed = bodies_[k].v.norm() + magnitude(bodies_[k].w) * radius_[k] +
+                             (tk.a.norm() + magnitude(tk.alpha) * radius_[k]) * kRestStep;
+        if (!(speed <= v_sleep)) return;
+    }
+    ++counters_.sleeps;
+    for (std::size_t k : members) {
+        bodies_[k].v = zero<Vec>();
+        bodies_[k].w = zero<Spin>();
+        track_[k].a = zero<Vec>();
+        track_[k].alpha = zero<Spin>();
+        ++track_[k].version;
+        asleep_[k] = 1;
+    }
 }
 
 // ---- Stepping ----
@@ -939,12 +1254,21 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
         // mean larger swept boxes, shorter ones more rebuilds), and at most kRestStep while
         // anything rests or falls.
         double h = t_end - t0;
+        // Nothing awake: nothing moves and nothing can happen until t_end.
+        bool awake = false;
+        for (std::size_t i = 0; i < bodies_.size() && !awake; ++i)
+            awake = !bodies_[i].is_static && !asleep_[i];
+        if (!awake) {
+            time_ = t_end;
+            for (std::size_t i = 0; i < bodies_.size(); ++i) track_[i].t = t_end;
+            break;
+        }
         bool any_rest = false;
         double speed = 0.0, size = 0.0;
         std::size_t moving = 0;
         for (std::size_t i = 0; i < bodies_.size(); ++i) {
             if (bodies_[i].is_static) continue;
-            any_rest = any_rest || island_[i] != 0;
+            any_rest = any_rest || (island_[i] != 0 && !asleep_[i]);
             speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
             size += radius_[i];
             ++moving;
@@ -958,15 +1282,18 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
         build_grid(t0, t1);
         heap_.clear();
         // Resting contacts are found afresh each substep; then every body predicts its next impact.
+        // Sleeping islands keep their (zero) motion and are neither re-solved nor predicted.
         std::vector<std::size_t> all;
         for (std::size_t i = 0; i < bodies_.size(); ++i)
-            if (!bodies_[i].is_static && (island_[i] != 0 || gravity().norm() > 0.0)) all.push_back(i);
-        members_.clear();
+            if (!bodies_[i].is_static && !asleep_[i] && (island_[i] != 0 || gravity().norm() > 0.0))
+                all.push_back(i);
+        for (auto it = members_.begin(); it != members_.end();)
+            it = asleep_[it->second.front()] ? std::next(it) : members_.erase(it);
         for (std::size_t i : all) set_free(i);
         if (!all.empty()) settle(all, t0);
         std::unordered_set<std::size_t> predicted(all.begin(), all.end());
         for (std::size_t i = 0; i < bodies_.size(); ++i)
-            if (!predicted.count(i)) predict(i, t0);
+            if (!asleep_[i] && !predicted.count(i)) predict(i, t0);
 
         double now = t0;
         std::uint64_t pops_at_now = 0;
@@ -980,11 +1307,11 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
                 pops_at_now = 0;
             }
             // Never hang: an instant that keeps producing work without time moving on is a
-            // failure to report (seen only with boxes resting on boxes, see world.h).
+            // failure to report (see "Known limits" in world.h).
             if (++pops_at_now > kMaxWorkPerInstant)
                 throw std::runtime_error("the simulation is stuck at t = " + std::to_string(now) + " s between " +
                                          scene_.bodies[p.i].name + " and " + scene_.bodies[p.j].name +
-                                         " (a known limit of resting contact between boxes)");
+                                         " (a known limit of resting contact, see engine/world.h)");
             const bool valid_i = track_[p.i].version == p.vi;
             const bool valid_j = track_[p.j].version == p.vj;
             if (!valid_i) continue;  // i predicted again when it changed
@@ -997,16 +1324,15 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
                 stalls_.clear();
                 stalled_.clear();
             }
-            const std::size_t recorded = events->size();
             if (++handled > kMaxEventsPerAdvance)
                 throw std::runtime_error("more than " + std::to_string(kMaxEventsPerAdvance) +
                                          " collisions before t = " + std::to_string(t_end) +
                                          " s: the scene does not settle");
-            resolve(p.i, p.j, now, events);
-            // A pair predicted to meet now whose instant changes nothing (the wide manifold of
-            // a prediction and the contact manifold disagree about a face's points) is left to
-            // the next substep's contact search instead of being predicted again and again.
-            if (events->size() == recorded) {
+            // A pair predicted to meet now whose instant has no impact (nothing approaches: the
+            // prediction saw a contact the contact manifold does not) more than 8 times is left
+            // to the next substep's contact search instead of being predicted again and again.
+            // (Round-off impulses of resting neighbours do not count as progress.)
+            if (!resolve(p.i, p.j, now, events)) {
                 const std::uint64_t key = static_cast<std::uint64_t>(std::min(p.i, p.j)) << 32 | std::max(p.i, p.j);
                 if (++stalls_[key] > 8) stalled_.insert(key);
             }

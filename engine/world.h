@@ -40,11 +40,27 @@
 // infinitely many bounces of e < 1 accumulate at a finite time and this merges the last ones
 // (at most kZenoTime / (1 - e) of them). It is a time tolerance, not a restitution threshold.
 // Shapes with corners (polygons, boxes) also rest when their bounce would not rise above
-// kTouch (v <= sqrt(4 |g| kTouch)).
-// Known limits: resting contact is integrated with constant forces per substep, so curved
-// bodies sliding over each other drift by micrometres and chatter (many tiny impacts); boxes
-// resting on boxes in 3D can stall at one instant, which advance_to reports as an error
-// (never a hang) after kMaxWorkPerInstant predictions.
+// kTouch (v <= sqrt(4 |g| kTouch)). The island's forces are found by projected Gauss-Seidel
+// finished by an exact solve on its active set (solve_points, "active-set polish"), so a
+// stack in balance gets forces that balance it to round-off.
+//
+// Sleeping islands. An island whose every surface point moves slower than v_sleep =
+// kZenoTime |g| / 2 (the speed already counted as resting) and would still after a rest step,
+// |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep, sleeps: v, w, a and alpha are set to
+// exactly zero and its bodies no longer move, are neither re-solved each substep nor
+// predicted (a pair of sleepers or a sleeper and a static body has nothing to meet). A body
+// still moving predicts against sleepers as against any body; when it reaches one (an impact
+// or a new resting contact) the sleeper's whole island wakes, is solved again with it and
+// may fall asleep again. A box on the ground, a settled column, a pyramid in balance cost
+// nothing once asleep; with nothing awake, advance_to jumps to its end.
+//
+// Known limits: resting contact is integrated with constant forces per substep, so bodies
+// sliding or spinning over each other in resting contact (a disc sliding off a disc, a box
+// spinning on a box) drift into each other by micrometres (documented bound 5e-5 m) and
+// curved ones chatter (many tiny impacts). An instant at which a pair is predicted to meet
+// again and again with no impact (a prediction that disagrees with the contact manifold) is
+// left to the next substep after 8 tries; one still stuck after kMaxWorkPerInstant
+// predictions is reported by advance_to as an error (never a hang).
 #pragma once
 
 #include <array>
@@ -123,12 +139,15 @@ public:
 
     // True while body i is held by a resting contact (an island).
     bool resting(std::size_t i) const { return island_[i] != 0; }
+    // True while body i's island sleeps: at rest, in balance, costing nothing until woken.
+    bool asleep(std::size_t i) const { return asleep_[i] != 0; }
 
     struct Counters {
         std::uint64_t events = 0;       // pair collisions recorded
         std::uint64_t predictions = 0;  // time-of-impact computations
         std::uint64_t substeps = 0;
         std::uint64_t island_solves = 0;
+        std::uint64_t sleeps = 0;       // islands put to sleep
     };
     const Counters& counters() const { return counters_; }
 
@@ -194,9 +213,9 @@ private:
     void predict(std::size_t i, double t);
 
     // Contacts at one instant.
-    void contacts_of(std::size_t i, double t, std::vector<Contact>* out,
-                     std::unordered_set<std::uint64_t>* known);
-    void resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events);
+    void contacts_of(std::size_t i, double t, std::vector<Contact>* out);
+    static std::uint32_t fresh(std::vector<std::uint32_t>* marks, std::uint32_t* counter);
+    bool resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events);  // true: an impact
     bool resolve_point(Contact* c, int k);
     void resolve_simultaneous(std::vector<Contact>* contacts);
     void solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
@@ -215,6 +234,15 @@ private:
     std::vector<std::size_t> planes_;     // indices of the plane bodies
     std::vector<Track> track_;
     std::vector<std::uint32_t> island_;   // 0: free; else the id of its island solve
+    std::vector<char> asleep_;            // 1: its island sleeps (v, w, a, alpha exactly 0)
+    double rest_smooth_ = 0.0, rest_cornered_ = 0.0;  // m/s: rest_speed() of the two kinds
+    // Per-body scratch of resolve() and settle(), valid where the stamp is current.
+    std::vector<std::uint32_t> mark_;     // reached / in the group / island member
+    std::uint32_t mark_id_ = 0;
+    std::vector<std::uint32_t> searched_; // contacts_of() ran for it in this search
+    std::uint32_t search_ = 0;
+    std::vector<std::size_t> parent_;     // settle()'s union-find
+    std::vector<typename Event<D>::Velocity> before_;  // resolve(): velocities before
     std::unordered_map<std::uint32_t, std::vector<std::size_t>> members_;
     std::uint32_t next_island_ = 1;
     double time_ = 0.0;
@@ -231,6 +259,8 @@ private:
     std::vector<std::uint32_t> seen_;
     std::vector<std::uint32_t> scratch_;
     std::uint32_t query_ = 0;
+
+    std::vector<Body> later_;  // solve_island's scratch: an island's bodies a step later
 
     std::vector<Pending> heap_;
     double stall_time_ = -1.0;                                  // see advance_to()

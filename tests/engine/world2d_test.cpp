@@ -248,6 +248,74 @@ TEST(World2d, RectangleDroppedFlatWithoutBounceRestsFlat) {
     EXPECT_TRUE(w.resting(1));
 }
 
+// ---- 7b. Sleeping islands ------------------------------------------------------------------------
+
+// Box2D's pyramid (tests/engine/world_scenes.h): 20 rows, 210 unit boxes exactly touching,
+// Coulomb mu = 0.6, e = 0, at rest on the ground. Vertical forces alone hold it (every box's
+// load lies over its supports), so nothing may move at all: for 1 s every box keeps its
+// position and angle to 1e-12 m / rad and has no velocity (1e-12), no event happens, and the
+// whole pyramid is resting and asleep (its contact forces found once, to kPolishTolerance).
+TEST(World2d, PyramidOfBoxesStaysStillAndSleeps) {
+    PyramidSpec p;
+    const Scene s = pyramid(p);
+    ASSERT_EQ(s.bodies.size(), 1u + 210u);
+    World2 w(s);
+    std::vector<Event2> events;
+    for (int k = 1; k <= 10; ++k) {
+        w.advance_to(0.1 * k, &events);
+        for (std::size_t i = 1; i < s.bodies.size(); ++i) {
+            const Body2& b = w.bodies()[i];
+            ASSERT_LE((b.position - s.bodies[i].body2.position).norm(), 1e-12) << i << ", t = " << w.time();
+            ASSERT_NEAR(b.angle, 0.0, 1e-12) << i;
+            ASSERT_LE(b.v.norm(), 1e-12) << i;
+            ASSERT_NEAR(b.w, 0.0, 1e-12) << i;
+            ASSERT_TRUE(w.resting(i) && w.asleep(i)) << i << ", t = " << w.time();
+        }
+    }
+    EXPECT_TRUE(events.empty());
+}
+
+// A rectangle (w x h) lies asleep on the ground; a disc dropped from rest with its lowest point
+// H above the rectangle's top, over its centre, lands at T = sqrt(2H/g) (1e-9 s: the sleeper
+// is found by the disc's prediction and has not moved). e = 0, frictionless, sequential: the
+// disc stops on the rectangle (its landing impulse m U = m g T up, less at most m v_rest) and the
+// rectangle, hit through its centre and held by the ground, does not move (1e-12 m, rad).
+// Afterwards both rest and, still, fall asleep again: disc centre r above the top (1e-9 m).
+TEST(World2d, ASleeperIsWokenByAnImpactAndSleepsAgain) {
+    const double width = 0.4, height = 0.2, r = 0.05, m = 0.5, H = 0.3;
+    Scene s = plane_scene(Policy::sequential, 0.0);
+    s.bodies.push_back(rectangle("box", width, height, 3.0, Vec2(0.7, 0.5 * height)));
+    const Vec2 top(0.7, height);
+    s.bodies.push_back(disc("ball", r, m, top + Vec2(0.0, H + r)));
+    // The disc is far above at first: let the rectangle fall asleep before anything arrives.
+    World2 w(s);
+    std::vector<Event2> events;
+    w.advance_to(0.01, &events);
+    ASSERT_TRUE(w.asleep(1));
+    ASSERT_FALSE(w.asleep(2));
+    const double T = std::sqrt(2 * H / kG);
+    w.advance_to(T + 0.05, &events);
+    const auto hit = std::find_if(events.begin(), events.end(),
+                                  [](const Event2& ev) { return ev.a == 1 && ev.b == 2; });
+    ASSERT_NE(hit, events.end());
+    EXPECT_NEAR(hit->t, T, 1e-9);
+    // The passes of the sequential policy stop once the disc approaches slower than the resting
+    // speed of a cornered pair, sqrt(4 g kTouch) (engine/world.h); the rest is the resting
+    // contact's.
+    const double v_rest = std::sqrt(4 * kG * World2::kTouch);
+    EXPECT_LE(hit->impulse.y(), m * kG * T * (1 + 1e-9));  // on the disc: up
+    EXPECT_GE(hit->impulse.y(), m * (kG * T - v_rest) * (1 - 1e-9));
+    w.advance_to(1.0, &events);
+    const Body2& box = w.bodies()[1];
+    const Body2& ball = w.bodies()[2];
+    EXPECT_LE((box.position - Vec2(0.7, 0.5 * height)).norm(), 1e-12);
+    EXPECT_NEAR(box.angle, 0.0, 1e-12);
+    EXPECT_NEAR(ball.position.y(), height + r, 1e-9);
+    EXPECT_NEAR(ball.position.x(), 0.7, 1e-12);
+    EXPECT_TRUE(w.asleep(1) && w.asleep(2));
+    EXPECT_EQ(box.v.norm() + std::abs(box.w) + ball.v.norm(), 0.0);  // asleep: exactly still
+}
+
 // ---- 10. Two-point contact: policy decides the spin ---------------------------------------------
 
 // The velocities right after a flat rectangle (w x h, mass m, I = m (w^2 + h^2)/12) lands on
