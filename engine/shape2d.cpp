@@ -90,27 +90,39 @@ std::pair<double, int> max_face_separation(const std::vector<Vec2>& va, const st
     return {best, face};
 }
 
-// Closest point to p on the segment a-b.
-Vec2 closest_on_segment(const Vec2& p, const Vec2& a, const Vec2& b) {
-    const Vec2 e = b - a;
-    const double t = std::clamp((p - a).dot(e) / e.squaredNorm(), 0.0, 1.0);
-    return a + t * e;
-}
-
 // Exact distance between two separated convex polygons (the nearest vertex-edge pair) and the
-// unit direction from A's nearest point to B's.
-double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& vb, Vec2* dir) {
+// unit direction from A's nearest point to B's. When the nearest point lies inside the edge, the
+// direction is the edge's outward normal (exact), not the difference of the two points (whose
+// rounding error grows as the distance shrinks).
+double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& na,
+                        const std::vector<Vec2>& vb, const std::vector<Vec2>& nb, Vec2* dir) {
     double d = kInf;
     for (int pass = 0; pass < 2; ++pass) {
         const auto& p = pass == 0 ? va : vb;
         const auto& q = pass == 0 ? vb : va;
+        const auto& qn = pass == 0 ? nb : na;
+        const double sign = pass == 0 ? -1.0 : 1.0;  // q's outward normal, turned from A into B
         for (const Vec2& x : p)
             for (std::size_t j = 0; j < q.size(); ++j) {
-                const Vec2 y = closest_on_segment(x, q[j], q[(j + 1) % q.size()]);
+                const Vec2& a = q[j];
+                const Vec2& b = q[(j + 1) % q.size()];
+                const Vec2 e = b - a;
+                const double t = (x - a).dot(e) / e.squaredNorm();
+                if (t > 0.0 && t < 1.0) {
+                    // A vertex behind the edge's line (outside through another edge) is nearer
+                    // to that other edge: its |distance| here is never the smallest.
+                    const double dj = std::abs(qn[j].dot(x - a));
+                    if (dj < d) {
+                        d = dj;
+                        *dir = sign * qn[j];
+                    }
+                    continue;
+                }
+                const Vec2& y = t <= 0.0 ? a : b;
                 const double dj = (x - y).norm();
-                if (dj < d && dj > 0) {
+                if (dj < d) {  // (two corners on each other: the distance 0, no direction)
                     d = dj;
-                    *dir = pass == 0 ? Vec2((y - x) / dj) : Vec2((x - y) / dj);
+                    if (dj > 0) *dir = pass == 0 ? Vec2((y - x) / dj) : Vec2((x - y) / dj);
                 }
             }
     }
@@ -138,8 +150,21 @@ Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, c
     Manifold2 m;
     m.normal = ref_is_a ? rn[rf] : Vec2(-rn[rf]);
     m.separation = sat;
-    // Apart: the exact distance, along the line between the nearest points.
-    if (sat > 0) m.separation = polygon_distance(va, vb, &m.normal);
+    // Rounding error of a separation or of a point at these coordinates (a few ulps, kept wide).
+    double scale = 1.0;
+    for (const Vec2& p : va) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    for (const Vec2& p : vb) scale = std::max(scale, p.cwiseAbs().maxCoeff());
+    const double tol = 1e-12 * scale;
+    // Apart: the exact distance, along the line between the nearest points. Touching (apart by a
+    // rounding error, as at the instant of a hit) there is no such line to resolve, the nearest
+    // features themselves are in doubt (a corner at the end of a face): keep the separating axis,
+    // as for an overlap, so that the normal is the reference face's, as the points are.
+    if (sat > 0) {
+        Vec2 dir = m.normal;
+        const double d = polygon_distance(va, na, vb, nb, &dir);
+        if (std::isfinite(d)) m.separation = std::max(d, sat);
+        if (std::isfinite(d) && d > tol) m.normal = dir;
+    }
     if (sat >= margin) return m;
 
     // Incident edge: the edge of the other polygon most anti-parallel to the reference normal.
@@ -155,16 +180,24 @@ Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, c
     std::array<Vec2, 2> clip = {iv[ie], iv[(ie + 1) % iv.size()]};
     const Vec2 r1 = rv[rf], r2 = rv[(rf + 1) % rv.size()];
     const Vec2 tangent = (r2 - r1).normalized();
-    // Clip the segment to the slab between the reference face's side planes.
+    // Clip the segment to the slab between the reference face's side planes. A corner touching
+    // a corner (or a face's end) is on a side plane: a rounding error beyond it, it is kept.
     auto clip_side = [&](const Vec2& dir, double offset) {
         const double d0 = dir.dot(clip[0]) - offset, d1 = dir.dot(clip[1]) - offset;
-        if (d0 > 0 && d1 > 0) return false;
+        if (d0 > tol && d1 > tol) return false;
+        if (d0 > 0 && d1 > 0) {  // only an end within the rounding error: that end alone
+            clip[0] = clip[1] = d0 <= d1 ? clip[0] : clip[1];
+            return true;
+        }
         if (d0 > 0) clip[0] = clip[0] + (d0 / (d0 - d1)) * (clip[1] - clip[0]);
         else if (d1 > 0) clip[1] = clip[1] + (d1 / (d1 - d0)) * (clip[0] - clip[1]);
         return true;
     };
     if (!clip_side(-tangent, -tangent.dot(r1)) || !clip_side(tangent, tangent.dot(r2))) return m;
-    for (const Vec2& p : clip) {
+    // A segment clipped down to a point (corner on corner): one contact point, not two alike.
+    const int ends = (clip[1] - clip[0]).norm() <= tol ? 1 : 2;
+    for (int k = 0; k < ends; ++k) {
+        const Vec2& p = clip[k];
         const double depth = rn[rf].dot(p - r1);
         if (depth < margin && m.count < 2) {
             m.points[m.count] = p - 0.5 * depth * rn[rf];

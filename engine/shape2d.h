@@ -3,7 +3,8 @@
 // Every query returns the contact normal pointing from shape A into shape B (docs/conventions.md)
 // and a signed separation: positive when apart (the exact distance, the normal then along the
 // line between the nearest points), negative when overlapping (minus the depth along the
-// separating axis of least overlap).
+// separating axis of least overlap). Touching (apart or overlapping by a rounding error, as at
+// the instant of a hit) the normal is that of the separating face, as for an overlap.
 //
 // Polygons are convex, counter-clockwise, in body coordinates about the centre of mass:
 //

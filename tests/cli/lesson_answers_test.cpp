@@ -189,12 +189,8 @@ TEST(LessonAnswers, Restitution) {
 
 TEST(LessonAnswers, General2d) {
     // A does not turn before the hit: its right-most corner strikes B's left face.
-    // Skipped until the engine's 2D polygon contact is fixed: at the exact instant of contact
-    // (separation ~1e-17 m) collide() in engine/shape2d returns the normal (0.894, -0.447) with
-    // no points, so a run with one advance_to (the lesson's answers, the render's worked
-    // example) applies the impulse (0.513, -0.256) N s instead of (0.861, 0); `collide step`,
-    // advancing in output steps, gets (1, 0) and the closed form below.
-    GTEST_SKIP() << "engine bug: 2D polygon manifold at exact contact (see the comment)";
+    // At the instant of contact the two are ~1e-17 m apart: the normal must still be B's face
+    // normal (1, 0) (engine/shape2d, Shape2d.CornerTouchingFaceExactlyLesson6).
     const Lesson& L = lesson("general-2d");
     const std::vector<LessonAnswer> a = answer_questions(L);
     const SceneBody &A = body(L, "A"), &B = body(L, "B");

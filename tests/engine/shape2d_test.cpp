@@ -92,6 +92,156 @@ TEST(Shape2d, SeparatedCornersReportExactDistance) {
     EXPECT_EQ(m.count, 0);
 }
 
+// ---- Exact touching (separation within rounding of 0) --------------------------------------
+// At the instant of a hit the separation is a rounding error (~1e-17 m, either sign). The normal
+// must still be the face's, and a touching feature must still give contact points. The world
+// asks with the margin World::kTouch = 1e-10 m.
+constexpr double kTouchMargin = 1e-10;
+
+Vec2 rotated(const Vec2& v, double angle) {
+    return Vec2(std::cos(angle) * v.x() - std::sin(angle) * v.y(),
+                std::sin(angle) * v.x() + std::cos(angle) * v.y());
+}
+
+// Lesson 6 (lessons/06-general-2d.toml) at the instant of its hit: A (0.4 x 0.2, 45 degrees)
+// has its right-most corner on B's (0.2 x 0.6, upright at (0.3, 0.25)) left face x = 0.2,
+// ~1e-17 m away. It came back with the normal (0.894, -0.447): the direction of the rounding
+// noise between the two nearest points.
+TEST(Shape2d, CornerTouchingFaceExactlyLesson6) {
+    const Pose2 pa = at(-0.012132034355964327, 0, M_PI / 4);
+    const Pose2 pb = at(0.3, 0.25);
+    const Vec2 corner = pa.apply(rect(0.4, 0.2).polygon.vertices[0]);  // (w, -h): right-most
+    ASSERT_NEAR(corner.x(), 0.2, 1e-15);
+    for (const double margin : {kTouchMargin, 0.0}) {
+        SCOPED_TRACE(margin);
+        const Manifold2 m = collide(rect(0.4, 0.2), pa, rect(0.2, 0.6), pb, margin);
+        EXPECT_LE((m.normal - Vec2(1, 0)).norm(), 1e-12);  // B's face normal, from A into B
+        EXPECT_NEAR(m.separation, 0.0, 1e-15);
+        if (margin == 0.0) continue;  // reported apart by a rounding error: no points (contract)
+        ASSERT_EQ(m.count, 1);
+        EXPECT_LE((m.points[0] - corner).norm(), 1e-15);
+        EXPECT_NEAR(m.depths[0], 0.0, 1e-15);
+    }
+    // B against A: the same contact, the normal flipped.
+    const Manifold2 s = collide(rect(0.2, 0.6), pb, rect(0.4, 0.2), pa, kTouchMargin);
+    EXPECT_LE((s.normal - Vec2(-1, 0)).norm(), 1e-12);
+    ASSERT_EQ(s.count, 1);
+    EXPECT_LE((s.points[0] - corner).norm(), 1e-15);
+}
+
+// A (0.4 x 0.2) turned by many angles, its right-most corner placed on the left face of B
+// (0.2 x 0.6) at several heights, 0, +-1e-15 or +-1e-12 m from it. The whole scene is also
+// turned by quarter turns (other faces of B) and by an arbitrary angle, and A and B swapped.
+TEST(Shape2d, CornerTouchingFaceSweep) {
+    const Shape2 a = rect(0.4, 0.2), b = rect(0.2, 0.6);
+    const Vec2 xb(0.3, 0.25);
+    int cases = 0;
+    for (double theta = 0.05; theta <= 1.5 + 1e-9; theta += 0.01)
+        for (const double height : {-0.04, 0.0707, 0.25, 0.5})  // corner height on B's face
+            for (const double gap : {0.0, 1e-15, -1e-15, 1e-12, -1e-12})
+                for (const double turn : {0.0, M_PI / 2, M_PI, 1.5 * M_PI, 0.3})
+                    for (const bool swap : {false, true}) {
+                        // In B's frame: the corner (w, -h) of A, turned by theta, at (0.2 - gap, height).
+                        const Vec2 c_local = rotated(Vec2(0.2, -0.1), theta);
+                        const Vec2 xa = Vec2(0.2 - gap, height) - c_local;
+                        const Pose2 pa{rotated(xa, turn), theta + turn};
+                        const Pose2 pb{rotated(xb, turn), turn};
+                        const Vec2 corner = pa.apply(a.polygon.vertices[0]);
+                        const Vec2 face_normal = rotated(Vec2(-1, 0), turn);  // B's, outward
+                        const Vec2 on_face = rotated(Vec2(0.2, 0.0), turn);
+                        const Manifold2 m = swap ? collide(b, pb, a, pa, kTouchMargin)
+                                                 : collide(a, pa, b, pb, kTouchMargin);
+                        SCOPED_TRACE(testing::Message() << "theta " << theta << " height " << height
+                                                        << " gap " << gap << " turn " << turn
+                                                        << " swap " << swap);
+                        const Vec2 expected = swap ? face_normal : Vec2(-face_normal);
+                        ASSERT_LE((m.normal - expected).norm(), 1e-9);
+                        ASSERT_NEAR(m.separation, gap, 1e-14);
+                        ASSERT_GE(m.count, 1);
+                        // The point nearest the corner is at it and on B's face.
+                        int k = 0;
+                        if (m.count == 2 && (m.points[1] - corner).norm() < (m.points[0] - corner).norm()) k = 1;
+                        EXPECT_LE((m.points[k] - corner).norm(), 1e-9);
+                        EXPECT_LE(std::abs(face_normal.dot(m.points[k] - on_face)), 1e-9);
+                        EXPECT_NEAR(m.depths[k], gap, 1e-14);
+                        ++cases;
+                    }
+    EXPECT_GT(cases, 1000);
+}
+
+// Two faces flat against each other, 0, +-1e-15 or +-1e-12 m apart: two points, the ends of
+// the overlap, in any orientation of the scene.
+TEST(Shape2d, FaceOnFaceTouchingExactly) {
+    int cases = 0;
+    for (double turn = 0.0; turn < 2 * M_PI; turn += 0.05)
+        for (const double gap : {0.0, 1e-15, -1e-15, 1e-12, -1e-12})
+            for (const double shift : {-0.3, 0.0, 0.45}) {
+                // Before the turn: A 1 x 1 at the origin, B 2 x 0.5 above it, its bottom face at
+                // y = 0.5 + gap; the scene then turned about A's centre and moved to (0.1, -0.2).
+                const Pose2 pa{Vec2(0.1, -0.2), turn};
+                const Pose2 pb{Vec2(0.1, -0.2) + rotated(Vec2(shift, 0.75 + gap), turn), turn};
+                const Manifold2 m = collide(rect(1, 1), pa, rect(2, 0.5), pb, kTouchMargin);
+                SCOPED_TRACE(testing::Message() << "turn " << turn << " gap " << gap << " shift " << shift);
+                ASSERT_LE((m.normal - rotated(Vec2(0, 1), turn)).norm(), 1e-9);
+                ASSERT_NEAR(m.separation, gap, 1e-14);
+                ASSERT_EQ(m.count, 2);
+                // B (2 wide) covers all of A's top face [-0.5, 0.5]: the points are its corners.
+                for (int k = 0; k < 2; ++k) {
+                    const Vec2 local = rotated(m.points[k] - pa.x, -turn);
+                    EXPECT_NEAR(std::abs(local.x()), 0.5, 1e-9);
+                    EXPECT_NEAR(local.y(), 0.5, 1e-9);
+                    EXPECT_NEAR(m.depths[k], gap, 1e-14);
+                }
+                ++cases;
+            }
+    EXPECT_GT(cases, 1000);
+}
+
+// Corner on corner, a rounding error apart (B placed so that one of its corners is on one of
+// A's, both turned): the line between the nearest points is rounding noise, so the normal must
+// be an axis that separates the two shapes (every vertex of A behind it, every one of B in
+// front, both through the shared corner), and the separation ~0.
+TEST(Shape2d, CornerTouchingCornerExactly) {
+    const Shape2 a = rect(1, 0.5), b = rect(0.6, 0.8);
+    int cases = 0;
+    for (double ta = 0.0; ta < 2 * M_PI; ta += 0.1)
+        for (double tb = 0.0; tb < 2 * M_PI; tb += 0.1) {
+            // A's corner i and B's corner j pointing at each other: the pair with A's corner
+            // furthest along d and B's furthest along -d, d the direction from A to B.
+            const Vec2 d = rotated(Vec2(1, 0), 0.5 * (ta + tb) + 0.25);
+            const Pose2 pa = at(0.2, -0.1, ta);
+            int i = 0, j = 0;
+            for (int k = 1; k < 4; ++k) {
+                if (d.dot(pa.rotate(a.polygon.vertices[k])) > d.dot(pa.rotate(a.polygon.vertices[i]))) i = k;
+                if (-d.dot(rotated(b.polygon.vertices[k], tb)) > -d.dot(rotated(b.polygon.vertices[j], tb))) j = k;
+            }
+            const Vec2 c = pa.apply(a.polygon.vertices[i]);
+            const Pose2 pb{c - rotated(b.polygon.vertices[j], tb), tb};
+            // The pair is a corner-corner touch only if the two corners' outer cones overlap.
+            bool separable = false;
+            for (const Vec2& n : {pa.rotate(a.polygon.normals[i]), pa.rotate(a.polygon.normals[(i + 3) % 4]),
+                                  Vec2(-pb.rotate(b.polygon.normals[j])), Vec2(-pb.rotate(b.polygon.normals[(j + 3) % 4]))}) {
+                bool ok = true;
+                for (int k = 0; k < 4; ++k) {
+                    ok = ok && n.dot(pa.apply(a.polygon.vertices[k]) - c) <= 1e-12;
+                    ok = ok && n.dot(pb.apply(b.polygon.vertices[k]) - c) >= -1e-12;
+                }
+                separable = separable || ok;
+            }
+            if (!separable) continue;
+            const Manifold2 m = collide(a, pa, b, pb, kTouchMargin);
+            SCOPED_TRACE(testing::Message() << "ta " << ta << " tb " << tb);
+            EXPECT_NEAR(m.separation, 0.0, 1e-14);
+            for (int k = 0; k < 4; ++k) {
+                EXPECT_LE(m.normal.dot(pa.apply(a.polygon.vertices[k]) - c), 1e-9);
+                EXPECT_GE(m.normal.dot(pb.apply(b.polygon.vertices[k]) - c), -1e-9);
+            }
+            EXPECT_GE(m.count, 1);
+            ++cases;
+        }
+    EXPECT_GT(cases, 500);
+}
+
 TEST(Shape2d, PolygonValidation) {
     Polygon p;
     std::string err;
