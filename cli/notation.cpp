@@ -1,5 +1,6 @@
 #include "cli/notation.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -59,13 +60,9 @@ std::string to_tex(const std::string& text) {
 std::string to_rich(const std::string& text) {
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
-        if (text[i] == '_') {
-            const std::size_t j = subscript_end(text, i);
-            out += "_{" + text.substr(i + 1, j - i - 1) + "}";
-            i = j;
-            continue;
-        }
-        out += text[i++];
+        const std::size_t j = text[i] == '_' ? subscript_end(text, i) : i;
+        out += j > i ? "_{" + text.substr(i + 1, j - i - 1) + "}" : std::string(1, text[i]);
+        i = std::max(j, i + 1);
     }
     return out;
 }

@@ -22,6 +22,13 @@ std::string vec_text(const Vec3& v, int dims, int decimals) {
 }
 
 
+// The background of an overlay: a white rounded panel with a thin border.
+void draw_panel(ImDrawList* dl, const Style& style, ImVec2 at, ImVec2 size) {
+    const Palette& c = style.colours;
+    dl->AddRectFilled(at, ImVec2(at.x + size.x, at.y + size.y), c.panel, style.px(6.0f));
+    dl->AddRect(at, ImVec2(at.x + size.x, at.y + size.y), c.panel_border, style.px(6.0f), 0, style.lw(1.0f));
+}
+
 }  // namespace
 
 std::vector<std::string> DataTable::cells(std::size_t i, const FrameState& f) const {
@@ -111,9 +118,7 @@ void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const Fram
     if (rows_.empty()) return;
     const Palette& c = style_.colours;
     ImFont* font = fonts.table;
-    dl->AddRectFilled(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel, style_.px(6.0f));
-    dl->AddRect(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel_border, style_.px(6.0f), 0,
-                style_.lw(1.0f));
+    draw_panel(dl, style_, at, size_);
     const float col_gap = style_.px(16.0f);
     const float text_dy = std::round(0.5f * (row_height_ - font->FontSize));
     const float x_first = at.x + pad_ + swatch_ + style_.px(6.0f);
@@ -245,9 +250,7 @@ void FormulaBox::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at) const {
     if (text_.empty()) return;
     const Palette& c = style_.colours;
     const float pad = style_.px(10.0f);
-    dl->AddRectFilled(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel, style_.px(6.0f));
-    dl->AddRect(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel_border, style_.px(6.0f), 0,
-                style_.lw(1.0f));
+    draw_panel(dl, style_, at, size_);
     float y = at.y + pad;
     draw_rich_text(dl, fonts, fonts.bold, ImVec2(at.x + pad, y), c.ink, text_.heading);
     y += fonts.bold->FontSize * 1.4f;
@@ -294,9 +297,7 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
     if (series_.empty() || times_.empty()) return;
     const Palette& c = style_.colours;
     const float pad = style_.px(8.0f);
-    dl->AddRectFilled(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel, style_.px(6.0f));
-    dl->AddRect(at, ImVec2(at.x + size_.x, at.y + size_.y), c.panel_border, style_.px(6.0f), 0,
-                style_.lw(1.0f));
+    draw_panel(dl, style_, at, size_);
     // Title and the series' keys on the first line.
     float x = at.x + pad;
     const float y0 = at.y + pad * 0.6f;
