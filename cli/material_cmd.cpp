@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -41,11 +42,24 @@ std::string escape(const std::string& s) {
     return out;
 }
 
-// Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>.
+// Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>, and the plain
+// superscripts lesson texts write (I^-1, R^T) as <sup>.
 std::string math(const std::string& text) {
     const std::string rich = notation::to_rich(text);  // v_{pa}
     std::string out;
     for (std::size_t i = 0; i < rich.size();) {
+        if (rich[i] == '^' && i + 1 < rich.size()) {
+            std::size_t j = i + 1;
+            if (rich[j] == '-') ++j;
+            while (j < rich.size() && std::isalnum(static_cast<unsigned char>(rich[j]))) ++j;
+            if (j > i + 1 && std::isalnum(static_cast<unsigned char>(rich[j - 1]))) {
+                std::string sup = rich.substr(i + 1, j - i - 1);
+                if (sup[0] == '-') sup = "\u2212" + sup.substr(1);
+                out += "<sup>" + escape(sup) + "</sup>";
+                i = j;
+                continue;
+            }
+        }
         if (rich.compare(i, 2, "_{") == 0) {
             const std::size_t close = rich.find('}', i + 2);
             if (close != std::string::npos) {
