@@ -101,6 +101,51 @@ double inverse_smallest_moment(const Body3& b) {
     return least > 0.0 ? 1.0 / least : 0.0;
 }
 
+// Stuck bodies (world.h): two bodies as one rigid body, combined_body's parallel-axis sums with
+// momentum and angular momentum kept. The compound's frame is the world's at this instant
+// (2D angle 0; 3D orientation identity, so its body-frame inertia is the world one).
+Body2 compound(const Body2& a, const Body2& b) {
+    const Vec2 p = a.position;  // the reference point of the sums (any point will do)
+    const Combined2 c = combined_body(at_contact(a, p), at_contact(b, p));
+    Body2 r;
+    r.mass = c.M;
+    r.inertia = c.I;
+    r.position = p + c.xc;
+    r.v = c.v;
+    r.w = c.w;
+    return r;
+}
+Body3 compound(const Body3& a, const Body3& b) {
+    const Vec3 p = a.position;
+    const Combined3 c = combined_body(at_contact(a, p), at_contact(b, p));
+    Body3 r;
+    r.mass = c.M;
+    r.inertia = c.I;
+    r.position = p + c.xc;
+    r.v = c.v;
+    r.w = c.w;
+    return r;
+}
+// A member's pose in the frame of a compound just formed (compound()).
+Pose2 relative_pose(const Body2& c, const Body2& b) { return Pose2{b.position - c.position, b.angle - c.angle}; }
+Pose3 relative_pose(const Body3& c, const Body3& b) {
+    return Pose3{c.orientation.conjugate() * (b.position - c.position), c.orientation.conjugate() * b.orientation};
+}
+// A member placed on its compound c: x = xc + R d, its own frame turned with c's, and the rigid
+// motion v = vc + wc x (x - xc), w = wc.
+void place_on(const Body2& c, const Pose2& rel, Body2* b) {
+    b->angle = c.angle + rel.angle;
+    b->position = pose_of(c).apply(rel.x);
+    b->w = c.w;
+    b->v = c.v + spin_cross(c.w, b->position - c.position);
+}
+void place_on(const Body3& c, const Pose3& rel, Body3* b) {
+    b->orientation = (c.orientation * rel.q).normalized();
+    b->position = pose_of(c).apply(rel.x);
+    b->w = c.w;
+    b->v = c.v + spin_cross(c.w, b->position - c.position);
+}
+
 // Unit tangents spanning the contact plane: 2D one, 3D two.
 int tangents(const Vec2& n, std::array<Vec2, 2>* t) {
     (*t)[0] = perp(n);
@@ -138,6 +183,7 @@ World<D>::World(const Scene& scene) : scene_(scene) {
         if (plane_[i]) planes_.push_back(i);
     }
     track_.resize(n);
+    weld_of_.assign(n, -1);
     island_.assign(n, 0);
     asleep_.assign(n, 0);
     mark_.assign(n, 0);
@@ -179,13 +225,134 @@ template <int D>
 void World<D>::drift(std::size_t i, double t) {
     Track& k = track_[i];
     if (t <= k.t) return;
-    if (!asleep_[i]) move(&bodies_[i], k, t - k.t);  // asleep: it does not move at all
+    if (weld_of_[i] >= 0) {
+        weld_to(&welds_[weld_of_[i]], t);
+        place(i);
+    } else if (!asleep_[i]) {
+        move(&bodies_[i], k, t - k.t);  // asleep: it does not move at all
+    }
     k.t = t;
+}
+
+template <int D>
+typename World<D>::Mover World<D>::mover(std::size_t i) const {
+    Mover m;
+    m.i = i;
+    m.body = bodies_[i];
+    if (weld_of_[i] >= 0) m.compound = welds_[weld_of_[i]].body;
+    return m;
+}
+
+template <int D>
+void World<D>::step(Mover* m, double dt) const {
+    if (weld_of_[m->i] < 0) {
+        move(&m->body, track_[m->i], dt);
+        return;
+    }
+    const Weld& w = welds_[weld_of_[m->i]];
+    Track free;
+    free.a = gravity();
+    free.alpha = zero<Spin>();
+    move(&m->compound, free, dt);
+    const auto at = std::find(w.members.begin(), w.members.end(), m->i) - w.members.begin();
+    place_on(m->compound, w.rel[at], &m->body);
+}
+
+// ---- Welds (the stick model: "Stuck bodies" in the header) ----
+
+template <int D>
+bool World<D>::same_weld(std::size_t i, std::size_t j) const {
+    return weld_of_[i] >= 0 && weld_of_[i] == weld_of_[j];
+}
+
+template <int D>
+void World<D>::weld_to(Weld* w, double t) {
+    if (t == w->t) return;
+    if (t < w->t) {  // (not expected: clocks only go forward) again from the anchor
+        w->body = w->anchor;
+        w->t = w->anchor_t;
+    }
+    Track free;
+    free.a = gravity();
+    free.alpha = zero<Spin>();
+    move(&w->body, free, t - w->t);
+    w->t = t;
+}
+
+template <int D>
+void World<D>::place(std::size_t i) {
+    const Weld& w = welds_[weld_of_[i]];
+    const auto at = std::find(w.members.begin(), w.members.end(), i) - w.members.begin();
+    place_on(w.body, w.rel[at], &bodies_[i]);
+}
+
+template <int D>
+typename World<D>::Body* World<D>::mobile(std::size_t i) {
+    if (weld_of_[i] < 0) return &bodies_[i];
+    Weld& w = welds_[weld_of_[i]];
+    weld_to(&w, track_[i].t);
+    return &w.body;
+}
+
+template <int D>
+void World<D>::moved(std::size_t i) {
+    if (weld_of_[i] < 0) return;
+    Weld& w = welds_[weld_of_[i]];
+    w.anchor = w.body;
+    w.anchor_t = w.t;
+    for (std::size_t m : w.members) {
+        place(m);
+        track_[m].t = w.t;
+    }
+}
+
+template <int D>
+void World<D>::weld(std::size_t a, std::size_t b, double t) {
+    // Everything already stuck to a or b comes along.
+    std::vector<std::size_t> members;
+    for (std::size_t k : {a, b}) {
+        if (weld_of_[k] < 0) {
+            members.push_back(k);
+            continue;
+        }
+        Weld& old = welds_[weld_of_[k]];
+        members.insert(members.end(), old.members.begin(), old.members.end());
+        for (std::size_t m : old.members) weld_of_[m] = -1;
+        old.members.clear();
+    }
+    for (std::size_t m : members) drift(m, t);
+    Weld w;
+    w.body = bodies_[members[0]];
+    for (std::size_t q = 1; q < members.size(); ++q) w.body = compound(w.body, bodies_[members[q]]);
+    w.t = w.anchor_t = t;
+    w.anchor = w.body;
+    w.inv_min_moment = inverse_smallest_moment(w.body);
+    w.members = members;
+    for (std::size_t m : members) {
+        w.rel.push_back(relative_pose(w.body, bodies_[m]));
+        w.reach.push_back(w.rel.back().x.norm() + radius_[m]);
+        weld_of_[m] = static_cast<int>(welds_.size());
+    }
+    welds_.push_back(std::move(w));
+    for (std::size_t m : members) {
+        place(m);  // the compound's rigid motion (the stick response gave it already, to round-off)
+        track_[m].t = t;
+    }
+    ++counters_.welds;
+}
+
+template <int D>
+void World<D>::unweld(std::size_t i) {
+    if (weld_of_[i] < 0) return;
+    Weld& w = welds_[weld_of_[i]];
+    for (std::size_t m : w.members) weld_of_[m] = -1;
+    w.members.clear();
 }
 
 template <int D>
 void World<D>::set_body(std::size_t i, const Body& body) {
     for (std::size_t j = 0; j < bodies_.size(); ++j) drift(j, time_);
+    unweld(i);  // its new state is its own
     bodies_[i] = body;
     track_[i].t = time_;
     // Whatever rested on or under it is re-examined at the start of the next substep.
@@ -198,24 +365,32 @@ void World<D>::set_body(std::size_t i, const Body& body) {
 
 template <int D>
 void World<D>::swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const {
-    const Body& b = bodies_[i];
-    const Track& k = track_[i];
-    const double s0 = t0 - k.t, s1 = t1 - k.t;
+    // A welded body stays within its reach of its compound's centre.
+    const bool welded = weld_of_[i] >= 0;
+    const Weld* w = welded ? &welds_[weld_of_[i]] : nullptr;
+    const Body& b = welded ? w->body : bodies_[i];
+    const Vec acc = welded ? gravity() : track_[i].a;
+    const double clock = welded ? w->t : track_[i].t;
+    const double s0 = t0 - clock, s1 = t1 - clock;
     // The centre follows x + v s + a s^2 / 2: the box of both ends and of the turning point.
-    Vec a0 = b.position + b.v * s0 + 0.5 * s0 * s0 * k.a;
-    Vec a1 = b.position + b.v * s1 + 0.5 * s1 * s1 * k.a;
+    Vec a0 = b.position + b.v * s0 + 0.5 * s0 * s0 * acc;
+    Vec a1 = b.position + b.v * s1 + 0.5 * s1 * s1 * acc;
     *lo = a0.cwiseMin(a1);
     *hi = a0.cwiseMax(a1);
     for (int d = 0; d < D; ++d) {
-        if (k.a[d] == 0.0) continue;
-        const double s = -b.v[d] / k.a[d];
+        if (acc[d] == 0.0) continue;
+        const double s = -b.v[d] / acc[d];
         if (s > s0 && s < s1) {
-            const double x = b.position[d] + b.v[d] * s + 0.5 * s * s * k.a[d];
+            const double x = b.position[d] + b.v[d] * s + 0.5 * s * s * acc[d];
             (*lo)[d] = std::min((*lo)[d], x);
             (*hi)[d] = std::max((*hi)[d], x);
         }
     }
-    const double margin = radius_[i] + kTouch;
+    double margin = radius_[i] + kTouch;
+    if (welded) {
+        const auto at = std::find(w->members.begin(), w->members.end(), i) - w->members.begin();
+        margin = w->reach[at] + kTouch;
+    }
     for (int d = 0; d < D; ++d) {
         (*lo)[d] -= margin;
         (*hi)[d] += margin;
@@ -384,6 +559,7 @@ template <int D>
 double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1) {
     // Neither moves (static or asleep): nothing can happen between them.
     if ((bodies_[i].is_static || asleep_[i]) && (bodies_[j].is_static || asleep_[j])) return kNever;
+    if (same_weld(i, j)) return kNever;  // stuck together
     if (t == stall_time_ && stalled_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j)))
         return kNever;
     drift(i, t);
@@ -393,12 +569,11 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     const double v_rest = rest_speed(a, b);
     const Track& ka = track_[a];
     const Track& kb = track_[b];
-    const Body& A = bodies_[a];
-    const Body& B = bodies_[b];
     // A round body q against a plane or a round body p moving alike: closed forms.
     std::size_t p = a, q = b;
     if (!round_[q]) std::swap(p, q);
-    const bool closed = round_[q] && (plane_[p] || (round_[p] && track_[p].a == track_[q].a));
+    const bool closed = round_[q] && (plane_[p] || (round_[p] && track_[p].a == track_[q].a)) &&
+                        weld_of_[p] < 0 && weld_of_[q] < 0;  // (a welded body's centre circles)
     const Body& P = bodies_[p];
     const Body& Q = bodies_[q];
     const double gap = !closed      ? 0.0
@@ -442,11 +617,20 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
         return t + s <= t1 ? t + s : kNever;
     }
     // Conservative advancement (engine/toi2d.h): copies of both bodies moved forward.
-    Body ca = A, cb = B;
+    Mover ma = mover(a), mb = mover(b);
+    const Body& ca = ma.body;
+    const Body& cb = mb.body;
     const double horizon = t1 - t;
-    const double spin_a = spin_bound(A, inv_min_moment_[a]) + magnitude(ka.alpha) * horizon;
-    const double spin_b = spin_bound(B, inv_min_moment_[b]) + magnitude(kb.alpha) * horizon;
-    const double turn_rate = (round_[a] ? 0.0 : spin_a * radius_[a]) + (round_[b] ? 0.0 : spin_b * radius_[b]);
+    // How fast a body's surface can turn towards the other: spin times reach; a welded body's
+    // centre also circles its compound's, so its velocity changes by up to 2 |w| |d|.
+    auto turning = [&](std::size_t k, const Track& tk) {
+        if (weld_of_[k] < 0)
+            return round_[k] ? 0.0 : (spin_bound(bodies_[k], inv_min_moment_[k]) + magnitude(tk.alpha) * horizon) * radius_[k];
+        const Weld& w = welds_[weld_of_[k]];
+        const auto at = std::find(w.members.begin(), w.members.end(), k) - w.members.begin();
+        return spin_bound(w.body, w.inv_min_moment) * (2.0 * w.rel[at].x.norm() + radius_[k]);
+    };
+    const double turn_rate = turning(a, ka) + turning(b, kb);
     // Touching already (resting on a corner, or parting): watch every point of the pair, not
     // only the nearest, so that a box rocking onto its other corner is caught when it lands.
     const double wide = 2.0 * std::max(radius_[a], radius_[b]) + kTouch;
@@ -517,10 +701,10 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
                 const double closing = l.gap < previous_gap ? l.gap * last / (previous_gap - l.gap) : kNever;
                 const double jump = std::min({0.5 * closing, 2.0 * last, horizon - s});
                 if (jump > step) {
-                    Body ja = ca, jb = cb;
-                    move(&ja, ka, jump);
-                    move(&jb, kb, jump);
-                    const Look lj = look(ja, jb, false);
+                    Mover ja = ma, jb = mb;
+                    this->step(&ja, jump);
+                    this->step(&jb, jump);
+                    const Look lj = look(ja.body, jb.body, false);
                     if (!lj.lands && lj.gap > kTouch) step = jump;
                 }
             }
@@ -528,8 +712,8 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
         if (s + step > horizon) return kNever;
         previous_gap = l.gap;
         previous_s = s;
-        move(&ca, ka, step);
-        move(&cb, kb, step);
+        this->step(&ma, step);
+        this->step(&mb, step);
         s += step;
     }
     return t + s;  // not converged: look again from there (never a silent miss)
@@ -566,6 +750,7 @@ void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
     for_each_neighbour(i, t, [&](std::size_t j) {
         if (bodies_[i].is_static && bodies_[j].is_static) return;
         if (searched_[j] == search_ && !plane_[j]) return;  // reported from j's side
+        if (same_weld(i, j)) return;                        // stuck together: no contact
         drift(j, t);
         const std::size_t a = std::min(i, j), b = std::max(i, j);
         const Manifold m = manifold(a, b);
@@ -593,13 +778,18 @@ bool World<D>::resolve_point(Contact* c, int k) {
     const Vec& p = c->m.points[k];
     const Vec& n = c->m.normal;
     if (!(normal_speed(c->a, c->b, p, n) < -rest_speed(c->a, c->b))) return false;
-    Body& A = bodies_[c->a];
-    Body& B = bodies_[c->b];
+    // A welded body answers with its compound's mass and inertia. (Round: see below; the stick
+    // model's couple turns a round body too, so there its spin is the model's.)
+    Body& A = *mobile(c->a);
+    Body& B = *mobile(c->b);
+    const bool plain = scene_.model != Model::stick;
+    const bool round_a = plain && round_[c->a] && weld_of_[c->a] < 0;
+    const bool round_b = plain && round_[c->b] && weld_of_[c->b] < 0;
     auto ia = at_contact(A, p), ib = at_contact(B, p);
     // A round body's surface normal passes through its centre: r is along n exactly (the
     // computed point is off by round-off, which would give a frictionless hit a spin of 1e-14).
-    if (round_[c->a]) ia.r = ia.r.dot(n) * n;
-    if (round_[c->b]) ib.r = ib.r.dot(n) * n;
+    if (round_a) ia.r = ia.r.dot(n) * n;
+    if (round_b) ib.r = ib.r.dot(n) * n;
     const double e = scene_.pair_restitution(c->a, c->b);
     auto r = frictionless(ia, ib, n, e);
     switch (scene_.model) {
@@ -614,12 +804,14 @@ bool World<D>::resolve_point(Contact* c, int k) {
     const Vec Pt = scene_.model == Model::frictionless ? zero<Vec>() : Vec(r.P - r.P.dot(n) * n);
     if (!A.is_static) {
         A.v = r.va;
-        A.w = round_[c->a] ? Spin(A.w - ia.inv_I * lever(ia.r, Pt)) : r.wa;
+        A.w = round_a ? Spin(A.w - ia.inv_I * lever(ia.r, Pt)) : r.wa;
     }
     if (!B.is_static) {
         B.v = r.vb;
-        B.w = round_[c->b] ? Spin(B.w + ib.inv_I * lever(ib.r, Pt)) : r.wb;
+        B.w = round_b ? Spin(B.w + ib.inv_I * lever(ib.r, Pt)) : r.wb;
     }
+    moved(c->a);
+    moved(c->b);
     c->impulse += r.P;
     c->weight += std::max(0.0, r.P.dot(n));
     c->moment += std::max(0.0, r.P.dot(n)) * p;
@@ -645,6 +837,13 @@ void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<Po
         std::array<double, 2> lam_t{};
         PointGoal goal;
     };
+    for (const Contact& c : *contacts)
+        for (std::size_t k : {c.a, c.b})
+            if (weld_of_[k] >= 0)
+                throw std::runtime_error(
+                    scene_.bodies[k].name + ", stuck to another body by the stick model, is in resting or "
+                    "simultaneous contact with " + scene_.bodies[k == c.a ? c.b : c.a].name +
+                    ": not modelled (see \"Stuck bodies\" in engine/world.h)");
     auto body_ref = [&](std::size_t i) -> Body& { return (*state)[i]; };
     std::vector<Row> rows;
     std::size_t g = 0;
@@ -1001,10 +1200,14 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     fresh(&searched_, &search_);
     auto reach = [&](std::size_t k) {
         if (bodies_[k].is_static || mark_[k] == reached) return false;
-        mark_[k] = reached;
-        drift(k, t);
-        before_[k] = {bodies_[k].v, bodies_[k].w};
-        group.push_back(k);
+        // A welded body brings its weld: an impulse on it moves them all.
+        const std::vector<std::size_t> alone{k};
+        for (std::size_t m : weld_of_[k] >= 0 ? welds_[weld_of_[k]].members : alone) {
+            mark_[m] = reached;
+            drift(m, t);
+            before_[m] = {bodies_[m].v, bodies_[m].w};
+            group.push_back(m);
+        }
         return true;
     };
     for (std::size_t k : {i, j}) reach(k);
@@ -1042,6 +1245,12 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
             resolve_simultaneous(&contacts);
         }
     }
+
+    // The stick model welds what it stuck (see "Stuck bodies" in the header).
+    if (scene_.model == Model::stick)
+        for (const Contact& c : contacts)
+            if (c.weight > 0.0 && !bodies_[c.a].is_static && !bodies_[c.b].is_static && !same_weld(c.a, c.b))
+                weld(c.a, c.b, t);
 
     for (const Contact& c : contacts) {
         if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;

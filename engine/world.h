@@ -54,7 +54,19 @@
 // may fall asleep again. A box on the ground, a settled column, a pyramid in balance cost
 // nothing once asleep; with nothing awake, advance_to jumps to its end.
 //
-// Known limits: resting contact is integrated with constant forces per substep, so bodies
+// Stuck bodies (the stick model). An impact resolved by the stick model between two dynamic
+// bodies welds them: from then on they move as one rigid body (a weld), whose mass, centre and
+// inertia are the parallel-axis sums of its members' (combined_body in engine/response.h) and
+// whose velocity and spin keep the members' total momentum and angular momentum. The compound
+// moves like any free body (ballistic centre, torque-free turning with the gyroscopic term), and
+// each member is placed from it: x = xc + R d, v = vc + w x (x - xc), w = wc. So a stuck pair
+// orbits its common centre of mass instead of flying apart. Members of one weld never collide
+// with each other; an impact of a member with any other body is resolved with the compound's
+// mass and inertia (and, under the stick model, welds that body too). A static partner is not
+// welded: the stick response already stops the body against it.
+//
+// Known limits: a weld in resting contact or in a simultaneous group of several points with
+// another body is not modelled (advance_to throws a clear error). Resting contact is integrated with constant forces per substep, so bodies
 // sliding or spinning over each other in resting contact (a disc sliding off a disc, a box
 // spinning on a box) drift into each other by micrometres (documented bound 5e-5 m) and
 // curved ones chatter (many tiny impacts). An instant at which a pair is predicted to meet
@@ -141,6 +153,8 @@ public:
     bool resting(std::size_t i) const { return island_[i] != 0; }
     // True while body i's island sleeps: at rest, in balance, costing nothing until woken.
     bool asleep(std::size_t i) const { return asleep_[i] != 0; }
+    // True while body i is stuck to other bodies (see "Stuck bodies").
+    bool welded(std::size_t i) const { return weld_of_[i] >= 0; }
 
     struct Counters {
         std::uint64_t events = 0;       // pair collisions recorded
@@ -148,6 +162,7 @@ public:
         std::uint64_t substeps = 0;
         std::uint64_t island_solves = 0;
         std::uint64_t sleeps = 0;       // islands put to sleep
+        std::uint64_t welds = 0;        // pairs stuck together (the stick model)
     };
     const Counters& counters() const { return counters_; }
 
@@ -185,8 +200,26 @@ private:
         Vec ut = Vec::Zero();       // tangential velocity to reach
     };
 
+    struct Weld {                   // bodies stuck together, moving as one rigid body
+        std::vector<std::size_t> members;
+        std::vector<typename Space<D>::Pose> rel;  // each member's pose in the compound's frame
+        std::vector<double> reach;  // each member's |d| + its bounding radius (m)
+        Body body;                  // the compound at time t (its frame: the world's at welding)
+        double t = 0.0;
+        Body anchor;                // the compound when its velocity last changed, at anchor_t
+        double anchor_t = 0.0;
+        double inv_min_moment = 0.0;
+    };
+    // A body's motion for conservative advancement: a copy of it and, when welded, of its weld.
+    struct Mover {
+        std::size_t i = 0;
+        Body body, compound;
+    };
+
     // Motion.
     static void move(Body* b, const Track& k, double dt);
+    Mover mover(std::size_t i) const;
+    void step(Mover* m, double dt) const;
     void drift(std::size_t i, double t);  // bodies_[i] to time t along its motion
     void set_free(std::size_t i);         // gravity only
     Vec gravity() const;
@@ -208,6 +241,15 @@ private:
     double normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const;
     double rest_speed(std::size_t i, std::size_t j) const;
     bool same_island(std::size_t i, std::size_t j) const;
+    bool same_weld(std::size_t i, std::size_t j) const;
+
+    // Welds.
+    void weld(std::size_t a, std::size_t b, double t);
+    void unweld(std::size_t i);
+    void weld_to(Weld* w, double t);        // its compound to time t
+    void place(std::size_t i);              // bodies_[i] from its weld's compound
+    Body* mobile(std::size_t i);            // what an impulse on body i moves: it or its compound
+    void moved(std::size_t i);              // after mobile(i) changed: its members placed again
     double friction_limit(std::size_t a, std::size_t b) const;
     double predict_pair(std::size_t i, std::size_t j, double t, double t1);
     void predict(std::size_t i, double t);
@@ -235,6 +277,8 @@ private:
     std::vector<Track> track_;
     std::vector<std::uint32_t> island_;   // 0: free; else the id of its island solve
     std::vector<char> asleep_;            // 1: its island sleeps (v, w, a, alpha exactly 0)
+    std::vector<Weld> welds_;             // (dissolved welds stay, with no members)
+    std::vector<int> weld_of_;            // index into welds_; -1: not welded
     double rest_smooth_ = 0.0, rest_cornered_ = 0.0;  // m/s: rest_speed() of the two kinds
     // Per-body scratch of resolve() and settle(), valid where the stamp is current.
     std::vector<std::uint32_t> mark_;     // reached / in the group / island member
