@@ -138,6 +138,22 @@ double DiagramView::reach(std::size_t i) const {
     return r;
 }
 
+float DiagramView::spin_radius(std::size_t i, double scale) const {
+    // A long body (its reach more than twice its nearest side) gets an arc of twice that
+    // side or 36 px, whichever is larger, but never more than its reach.
+    double inner = reach(i);
+    if (kind(i) != Kind::round) {
+        const std::vector<Vec2> o = outline(i, BodyState{});
+        for (std::size_t k = 0; k < o.size(); ++k) {
+            const Vec2 e = o[(k + 1) % o.size()] - o[k];
+            if (e.norm() > 0) inner = std::min(inner, std::abs(e.x() * o[k].y() - e.y() * o[k].x()) / e.norm());
+        }
+    }
+    double r = reach(i) * scale;
+    if (reach(i) > 2.0 * inner) r = std::min(r, std::max(2.0 * inner * scale, static_cast<double>(style_.px(36.0f))));
+    return static_cast<float>(r) + style_.px(10.0f);
+}
+
 std::vector<Vec2> DiagramView::outline(std::size_t i, const BodyState& s) const {
     const SceneBody& b = scene_.bodies[i];
     const Vec2 c = xy(s.x);
@@ -287,7 +303,7 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
             }
             if (std::abs(f.bodies[i].w.z()) > 0) {  // the spin arc
                 const Vec2 c = xy(f.bodies[i].x);
-                const double r = reach(i) + style_.px(14.0f) / s0;
+                const double r = (spin_radius(i, s0) + style_.px(4.0f)) / s0;
                 lo = lo.cwiseMin(c - Vec2(r, r));
                 hi = hi.cwiseMax(c + Vec2(r, r));
             }
@@ -551,7 +567,7 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             if (max_spin_ > 0 && std::abs(w) > 1e-9 * max_spin_ && std::abs(w) > 1e-9) {
                 Vec2 l(1e300, 1e300), h(-1e300, -1e300);
                 extent(i, s, &l, &h);
-                const float r = static_cast<float>(reach(i) * scale_) + style_.px(10.0f);
+                const float r = spin_radius(i, scale_);
                 const double sweep = std::max(35.0, 240.0 * std::abs(w) / max_spin_) * kPi / 180.0;
                 const double mid = 0.5 * kPi;  // centred above the body
                 const double sign = w > 0 ? 1.0 : -1.0;

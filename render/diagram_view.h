@@ -76,6 +76,9 @@ private:
     Kind kind(std::size_t i) const;
     double radius(std::size_t i) const;                                // round bodies
     double reach(std::size_t i) const;  // largest distance of the surface from the centre (m)
+    // The radius of body i's spin arc in pixels at `scale` (px per m): just outside a small
+    // body, a fixed size around the centre of a long one (a bar's arc would span the frame).
+    float spin_radius(std::size_t i, double scale) const;
     std::vector<Vec2> outline(std::size_t i, const BodyState& s) const;  // polygons, CCW
     void plane_of(std::size_t i, Vec2* normal, double* offset) const;
     void extent(std::size_t i, const BodyState& s, Vec2* lo, Vec2* hi) const;

@@ -364,6 +364,38 @@ TEST(LessonAnswers, MatrixMethod) {
     EXPECT_NEAR(a[4].value, 0.5 * m * u.squaredNorm() - 0.5 * m * v.squaredNorm() - 0.5 * I * w * w, 1e-12);
 }
 
+TEST(LessonAnswers, Stick) {
+    // Clay hits a resting rod and sticks: one rigid body. Momentum gives the common centre's
+    // velocity vc = m v / (m + M); angular momentum about the centre of mass at the hit,
+    // L = m (d x v), gives w = L / Ic with Ic = I_rod + M |d_rod|^2 + I_clay + m |d_clay|^2.
+    const Lesson& L = lesson("stick");
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(a.size(), 6u);
+    const SceneBody &clay = body(L, "clay"), &rod = body(L, "rod");
+    const double m = clay.body2.mass, M = rod.body2.mass, R = clay.shape2.radius;
+    ASSERT_EQ(rod.body2.v, Vec2::Zero());
+    ASSERT_EQ(clay.body2.v.x(), 0.0);  // straight up onto the rod's lower face
+    // Where the clay touches: its centre R below the face.
+    const Vec2 x_clay(clay.body2.position.x(), rod.body2.position.y() - half_size(rod).y() - R);
+    const Vec2 x_rod = rod.body2.position;
+    const Vec2 xc = (m * x_clay + M * x_rod) / (m + M);
+    const Vec2 vc = m * clay.body2.v / (m + M);
+    const Vec2 d_clay = x_clay - xc, d_rod = x_rod - xc;
+    const double Lc = m * cross2(d_clay, clay.body2.v);
+    const double Ic = rectangle_inertia(M, half_size(rod)) + M * d_rod.squaredNorm() +
+                      0.5 * m * R * R + m * d_clay.squaredNorm();
+    const double w = Lc / Ic;
+    expect_vec2(a[0], vc + spin_x(w, d_clay), 1e-12);
+    EXPECT_NEAR(a[1].value, w, 1e-12);
+    expect_vec2(a[2], vc + spin_x(w, d_rod), 1e-12);
+    const double before = 0.5 * m * clay.body2.v.squaredNorm();
+    EXPECT_NEAR(a[3].value, before - (0.5 * (m + M) * vc.squaredNorm() + 0.5 * Ic * w * w), 1e-12);
+    ASSERT_TRUE(L.questions[4].about.has_value());
+    EXPECT_NEAR((L.questions[4].about->head<2>() - xc).norm(), 0.0, 1e-15);  // the text's point
+    EXPECT_NEAR(a[4].value, Lc, 1e-12);
+    EXPECT_NEAR(a[5].value, w, 1e-12);  // nothing else touches it: the spin stays
+}
+
 TEST(LessonAnswers, Superball) {
     // Dropped from rest: it lands at sqrt(2 g h) and leaves at the same speed (e = 1, no
     // sliding). Thrown: u = (v_x, -sqrt(2 g h)), K = diag(1/m + R^2/I, 1/m), P = -2 K^-1 u.
