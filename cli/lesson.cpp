@@ -141,12 +141,17 @@ Lesson load_lesson(const std::string& path) {
                 for (SceneBody& b : V.scene.bodies) b.friction.reset();
             }
             if (v.has("model"))
-                parse_model(read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick"}, "model", ""),
+                parse_model(read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing"}, "model", ""),
                             &V.scene.model);
             if (v.has("policy"))
                 V.scene.policy = read_choice(v, "policy", {"sequential", "simultaneous"}, "policy", "") == "sequential"
                                      ? Policy::sequential
                                      : Policy::simultaneous;
+            if (V.scene.model == Model::page_listing &&
+                (V.scene.dimension != 3 || V.scene.policy != Policy::sequential))
+                v.fail(v.has("model") ? "model" : "policy",
+                       "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs only "
+                       "in 3D scenes with policy = \"sequential\"");
             L.variants.push_back(std::move(V));
         }
     }

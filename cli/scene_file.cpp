@@ -233,13 +233,16 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
     if (sc->has("output_dt")) s.output_dt = read_positive(*sc, "output_dt", "the output interval in s");
     if (s.duration / s.output_dt > kMaxOutputSteps)
         sc->fail("output_dt", "duration / output_dt gives more than 10^6 output steps");
-    parse_model(read_choice(*sc, "model", {"frictionless", "coulomb", "matrix", "stick"}, "model",
-                            "frictionless"),
+    parse_model(read_choice(*sc, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing"},
+                            "model", "frictionless"),
                 &s.model);
     s.policy = read_choice(*sc, "policy", {"sequential", "simultaneous"}, "policy", "sequential") ==
                        "sequential"
                    ? Policy::sequential
                    : Policy::simultaneous;
+    if (s.model == Model::page_listing && (s.dimension != 3 || s.policy != Policy::sequential))
+        sc->fail("model", "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs "
+                          "only in 3D scenes with policy = \"sequential\"");
     std::optional<double> e, mu;
     read_material(*sc, &e, &mu);
     s.restitution = e.value_or(1.0);

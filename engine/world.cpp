@@ -11,6 +11,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "engine/page.h"
 #include "engine/rotation.h"
 
 namespace collide {
@@ -146,6 +147,23 @@ void place_on(const Body3& c, const Pose3& rel, Body3* b) {
     b->v = c.v + spin_cross(c.w, b->position - c.position);
 }
 
+// The page's listing as written (engine/page.h, errata 5-8) as a response: the velocities it
+// computes, and as P the impulse b actually receives, mb (vbf - vbi) (erratum 7: not the
+// opposite of a's). 3D only: the listing is 3D code (the World constructor checks).
+Response3 listing_response(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
+    const page::Listing3 L = page::listing(a, b, n, e);
+    Response3 r;
+    r.va = L.vaf;
+    r.vb = L.vbf;
+    r.wa = L.waf;
+    r.wb = L.wbf;
+    r.P = b.is_static() ? Vec3::Zero() : Vec3((L.vbf - b.v) / b.inv_m);
+    return r;
+}
+Response2 listing_response(const ImpactBody2&, const ImpactBody2&, const Vec2&, double) {
+    throw std::logic_error("the page's listing runs in 3D worlds only");
+}
+
 // Unit tangents spanning the contact plane: 2D one, 3D two.
 int tangents(const Vec2& n, std::array<Vec2, 2>* t) {
     (*t)[0] = perp(n);
@@ -168,8 +186,9 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     if (scene.dimension != D)
         throw std::invalid_argument("World<" + std::to_string(D) + "> needs a " +
                                     std::to_string(D) + "D scene");
-    if (scene.model == Model::page_listing)
-        throw std::invalid_argument("the page's listing is a worked example, not a world model");
+    if (scene.model == Model::page_listing && (D != 3 || scene.policy != Policy::sequential))
+        throw std::invalid_argument("the page's listing (model page-listing) is 3D code resolving one point at "
+                                    "a time: it runs only in 3D scenes with policy sequential");
     const std::size_t n = scene.bodies.size();
     for (const SceneBody& sb : scene.bodies) {
         bodies_.push_back(scene_body(sb, static_cast<const Body*>(nullptr)));
@@ -259,6 +278,11 @@ void World<D>::step(Mover* m, double dt) const {
 }
 
 // ---- Welds (the stick model: "Stuck bodies" in the header) ----
+
+template <int D>
+bool World<D>::passed(std::size_t i, std::size_t j) const {
+    return !passed_.empty() && passed_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j));
+}
 
 template <int D>
 bool World<D>::same_weld(std::size_t i, std::size_t j) const {
@@ -560,6 +584,7 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     // Neither moves (static or asleep): nothing can happen between them.
     if ((bodies_[i].is_static || asleep_[i]) && (bodies_[j].is_static || asleep_[j])) return kNever;
     if (same_weld(i, j)) return kNever;  // stuck together
+    if (passed(i, j)) return kNever;     // let through each other by the page's listing
     if (t == stall_time_ && stalled_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j)))
         return kNever;
     drift(i, t);
@@ -750,7 +775,7 @@ void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
     for_each_neighbour(i, t, [&](std::size_t j) {
         if (bodies_[i].is_static && bodies_[j].is_static) return;
         if (searched_[j] == search_ && !plane_[j]) return;  // reported from j's side
-        if (same_weld(i, j)) return;                        // stuck together: no contact
+        if (same_weld(i, j) || passed(i, j)) return;        // stuck together, or let through
         drift(j, t);
         const std::size_t a = std::min(i, j), b = std::max(i, j);
         const Manifold m = manifold(a, b);
@@ -777,12 +802,13 @@ template <int D>
 bool World<D>::resolve_point(Contact* c, int k) {
     const Vec& p = c->m.points[k];
     const Vec& n = c->m.normal;
+    if (passed(c->a, c->b)) return false;  // the page's listing has answered this pair
     if (!(normal_speed(c->a, c->b, p, n) < -rest_speed(c->a, c->b))) return false;
     // A welded body answers with its compound's mass and inertia. (Round: see below; the stick
     // model's couple turns a round body too, so there its spin is the model's.)
     Body& A = *mobile(c->a);
     Body& B = *mobile(c->b);
-    const bool plain = scene_.model != Model::stick;
+    const bool plain = scene_.model != Model::stick && scene_.model != Model::page_listing;
     const bool round_a = plain && round_[c->a] && weld_of_[c->a] < 0;
     const bool round_b = plain && round_[c->b] && weld_of_[c->b] < 0;
     auto ia = at_contact(A, p), ib = at_contact(B, p);
@@ -796,9 +822,12 @@ bool World<D>::resolve_point(Contact* c, int k) {
         case Model::coulomb: r = coulomb(ia, ib, n, e, scene_.pair_friction(c->a, c->b)); break;
         case Model::matrix: r = matrix(ia, ib, n, e); break;
         case Model::stick: r = stick(ia, ib, n); break;
+        case Model::page_listing: r = listing_response(ia, ib, n, e); break;
         default: break;
     }
     if (r.separating) return false;
+    if (scene_.model == Model::page_listing)  // one answer per pair: its J may push them together
+        passed_.insert(static_cast<std::uint64_t>(c->a) << 32 | c->b);
     // Only the tangential part of P turns a round body (its normal part passes through the
     // centre); computed so, a frictionless hit leaves w exactly as it was.
     const Vec Pt = scene_.model == Model::frictionless ? zero<Vec>() : Vec(r.P - r.P.dot(n) * n);

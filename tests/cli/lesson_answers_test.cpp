@@ -396,6 +396,51 @@ TEST(LessonAnswers, Stick) {
     EXPECT_NEAR(a[5].value, w, 1e-12);  // nothing else touches it: the spin stays
 }
 
+TEST(LessonAnswers, ErrataListingAsWritten) {
+    // The page's listing on a ball hitting a resting bar straight up (n = +y) at p, worked here
+    // by hand (not with engine/page.h): scalar = 1/ma + 1/mb minus the bar's rotational term
+    // (rb x n).Ib^-1(rb x n) (erratum 5: the listing's crosses subtract it), Jmod =
+    // (e + 1)|va - vb| / scalar (erratum 6), vaf = va - Jmod n/ma, vbf = vb - Jmod n/mb
+    // (erratum 7), wbf = wb - Ib^-1 (n x rb) (erratum 8: per unit impulse). The ball's r is
+    // along n, so it gets no spin term.
+    const Lesson& L = lesson("errata");
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(a.size(), 6u);
+    const SceneBody &ball = body(L, "ball"), &bar = body(L, "bar");
+    const double ma = ball.body3.mass, mb = bar.body3.mass, e = L.scene.restitution;
+    const double half_y = bar.shape3.half.y();  // the bar's lower face is at -half_y
+    ASSERT_EQ(bar.body3.v, Vec3::Zero());
+    ASSERT_EQ(ball.body3.v.x(), 0.0);
+    ASSERT_EQ(ball.body3.v.z(), 0.0);
+    const Vec3 n(0, 1, 0);
+    const Vec3 p(ball.body3.position.x(), bar.body3.position.y() - half_y, 0.0);
+    const Vec3 rb = p - bar.body3.position;
+    // The bar's world inertia is its body inertia (not turned); its inverse is diagonal.
+    const Mat3 inv_Ib = bar.body3.inertia.inverse();
+    const Vec3 change_b = inv_Ib * n.cross(rb);  // angularVelChangeb
+    const double scalar = 1 / ma + 1 / mb + change_b.cross(rb).dot(n);
+    const double rotational = rb.cross(n).dot(inv_Ib * rb.cross(n));
+    EXPECT_NEAR(scalar, 1 / ma + 1 / mb - rotational, 1e-15);  // erratum 5, as the text says
+    const double Jmod = (e + 1) * (ball.body3.v - bar.body3.v).norm() / scalar;
+    const Vec3 vaf = ball.body3.v - Jmod * n / ma, vbf = bar.body3.v - Jmod * n / mb;
+    const Vec3 wbf = -change_b;
+    expect_vec3(a[0], vbf, 1e-12);
+    expect_vec3(a[1], vaf, 1e-12);
+    expect_vec3(a[2], wbf, 1e-12);
+    expect_vec3(a[3], ma * vaf + mb * vbf, 1e-12);
+    EXPECT_LT(a[3].vector.y(), 0.0);  // momentum reversed: not conserved
+    const double energy = 0.5 * ma * vaf.squaredNorm() + 0.5 * mb * vbf.squaredNorm() +
+                          0.5 * wbf.dot(bar.body3.inertia * wbf);
+    EXPECT_NEAR(a[4].value, energy, 1e-12);
+    EXPECT_GT(a[4].value, 0.5 * ma * ball.body3.v.squaredNorm());  // energy out of nothing
+    const double un = (vbf + wbf.cross(rb) - vaf).dot(n);
+    EXPECT_NEAR(a[5].value, un, 1e-12);
+    EXPECT_LT(a[5].value, 0.0);  // still approaching: they pass through each other
+    // The corrected variant gives the frictionless answer: j = (1 + e) |un| / (1/ma + 1/mb + rotational).
+    ASSERT_EQ(L.variants.size(), 1u);
+    EXPECT_EQ(L.variants[0].scene.model, Model::frictionless);
+}
+
 TEST(LessonAnswers, Superball) {
     // Dropped from rest: it lands at sqrt(2 g h) and leaves at the same speed (e = 1, no
     // sliding). Thrown: u = (v_x, -sqrt(2 g h)), K = diag(1/m + R^2/I, 1/m), P = -2 K^-1 u.

@@ -604,5 +604,32 @@ TEST(World3d, SphereSlidingOffASphereElasticKeepsEnergy) {
                                            << " J of E0 = " << x.E0 << " J";
 }
 
+// The page's listing as written (model page-listing, the errata lesson): one answer per pair,
+// then the pair passes through. Two equal spheres (m = 1 kg) head on, r along n, so no
+// rotational terms: scalar = 2/m, Jmod = (1 + e) |va - vb| / scalar = 2 N s with e = 1,
+// va = (2, 0, 0) m/s, vb = 0; both get -Jmod n / m (erratum 7): A stops, B leaves at -2 m/s,
+// into and through A. Momentum goes from +2 to -2 kg m/s.
+TEST(World3d, PageListingAnswersAPairOnceThenLetsItThrough) {
+    Scene s = empty_scene(3, Policy::sequential, 1.0);
+    s.model = Model::page_listing;
+    s.bodies.push_back(sphere("a", 0.1, 1.0, Vec3(-1.0, 0, 0), Vec3(2.0, 0, 0)));
+    s.bodies.push_back(sphere("b", 0.1, 1.0, Vec3(0.0, 0, 0)));
+    World3 world(s);
+    std::vector<Event3> events;
+    world.advance_to(2.0, &events);
+    ASSERT_EQ(events.size(), 1u);
+    EXPECT_NEAR(events[0].t, 0.4, 1e-12);
+    EXPECT_NEAR((world.bodies()[0].v - Vec3::Zero()).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((world.bodies()[1].v - Vec3(-2.0, 0, 0)).norm(), 0.0, 1e-12);
+    // B went straight through A (no second answer): from x = 0 at -2 m/s for the last 1.6 s.
+    EXPECT_NEAR(world.bodies()[1].position.x(), 0.0 - 2.0 * 1.6, 1e-9);
+
+    Scene flat = empty_scene(2, Policy::sequential, 1.0);
+    flat.model = Model::page_listing;
+    EXPECT_THROW(World2{flat}, std::invalid_argument);  // the listing is 3D code
+    s.policy = Policy::simultaneous;
+    EXPECT_THROW(World3{s}, std::invalid_argument);     // it answers one point at a time
+}
+
 }  // namespace
 }  // namespace collide
