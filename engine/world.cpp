@@ -555,7 +555,13 @@ double World<D>::normal_speed(std::size_t a, std::size_t b, const Vec& p, const 
 template <int D>
 double World<D>::rest_speed(std::size_t i, std::size_t j) const {
     const bool smooth = (round_[i] || plane_[i]) && (round_[j] || plane_[j]);
-    return smooth ? rest_smooth_ : rest_cornered_;
+    // Round-off: a normal speed below 1e-12 of the pair's own speeds is no approach. (Without
+    // gravity the resting speeds are zero, and a contact left at u_n = 0 by e = 0 or by a
+    // sticking impulse would otherwise be answered again and again for its -1e-18 m/s.)
+    const Body& A = bodies_[i];
+    const Body& B = bodies_[j];
+    const double scale = A.v.norm() + B.v.norm() + magnitude(A.w) * radius_[i] + magnitude(B.w) * radius_[j];
+    return std::max(smooth ? rest_smooth_ : rest_cornered_, 1e-12 * scale);
 }
 
 // The tangential limit of the points of a group or an island, as PointGoal::mu: coulomb the
