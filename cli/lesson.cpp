@@ -235,6 +235,20 @@ std::vector<Lesson> load_lessons(const std::string& dir) {
 std::string resolve_lesson(const std::string& id_or_file, const std::string& dir) {
     std::error_code ec;
     if (fs::is_regular_file(id_or_file, ec) || id_or_file == "-") return id_or_file;
+    // The file named after the id (NN-id.toml) when it holds that lesson: then one file is
+    // read, and a mistake in another lesson does not stop this one.
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+        const std::string stem = e.path().stem().string();
+        const bool named = stem == id_or_file ||
+                           (stem.size() > id_or_file.size() &&
+                            stem.compare(stem.size() - id_or_file.size() - 1, std::string::npos, "-" + id_or_file) == 0);
+        if (!named || e.path().extension() != ".toml") continue;
+        try {
+            if (load_lesson(e.path().string()).id == id_or_file) return e.path().string();
+        } catch (const InputError&) {
+            return e.path().string();  // its own error will name it
+        }
+    }
     std::vector<std::string> ids;
     for (const Lesson& L : load_lessons(dir)) {
         if (L.id == id_or_file) return L.file;
@@ -322,8 +336,11 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
     std::vector<Event> events;
     world.advance_to(scene.duration, &events);
 
-    // Event k with the bodies where they touch (a fresh world run up to its instant).
-    const auto instant = [&](std::size_t k) {
+    // Event k with the bodies where they touch (a fresh world run up to its instant, once per
+    // event however many questions ask about it).
+    std::map<std::size_t, CollisionInstant> instants;
+    const auto instant = [&](std::size_t k) -> const CollisionInstant& {
+        if (auto it = instants.find(k); it != instants.end()) return it->second;
         World w(scene);
         std::vector<Event> upto;
         w.advance_to(events[k].t, &upto);
@@ -331,7 +348,7 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
             World probe = w;
             probe.advance_to(std::min(scene.duration, events[k].t + 1e-9 * std::max(1.0, events[k].t)), &upto);
         }
-        return collision_instant(upto.at(k), w.bodies());
+        return instants.emplace(k, collision_instant(upto.at(k), w.bodies())).first->second;
     };
     const auto body_index = [&](const std::string& name) {
         for (std::size_t i = 0; i < scene.bodies.size(); ++i)
@@ -363,7 +380,7 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
                                  std::to_string(events.size()));
         std::size_t body = info.needs_body ? body_index(q.body) : 0;
         if (info.needs_event) {
-            const CollisionInstant c = instant(static_cast<std::size_t>(q.event - 1));
+            const CollisionInstant& c = instant(static_cast<std::size_t>(q.event - 1));
             if (info.needs_body && body != c.a && body != c.b)
                 throw InputError(L.file, {}, where + ".body",
                                  "'" + q.body + "' takes no part in collision " + std::to_string(q.event) +

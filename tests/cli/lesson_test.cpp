@@ -6,6 +6,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -88,6 +89,24 @@ TEST(Lessons, AnIdResolvesToItsFileAndAnUnknownOneGetsAHint) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("did you mean 'catch-up'?"), std::string::npos) << e.what();
     }
+}
+
+// A lesson found by its file name (NN-id.toml) is read alone: another lesson's mistake in
+// the same folder does not stop it; a lesson whose file is named otherwise is still found.
+TEST(Lessons, AnIdIsFoundBesideABrokenLesson) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(::testing::TempDir()) / "lessons-beside-broken";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    fs::copy_file(find(load_lessons(kDir), "catch-up").file, dir / "01-catch-up.toml");
+    fs::copy_file(find(load_lessons(kDir), "reversed").file, dir / "renamed.toml");
+    std::ofstream(dir / "03-broken.toml") << "[lesson]\nid = \"broken\"\nthis is not toml\n";
+    EXPECT_EQ(resolve_lesson("catch-up", dir.string()), (dir / "01-catch-up.toml").string());
+    EXPECT_THROW(load_lessons(dir.string()), InputError);           // listing them all still fails
+    EXPECT_THROW(resolve_lesson("reversed", dir.string()), InputError);  // found only by scanning all
+    fs::remove(dir / "03-broken.toml");
+    EXPECT_EQ(resolve_lesson("reversed", dir.string()), (dir / "renamed.toml").string());
+    fs::remove_all(dir);
 }
 
 struct BadLesson {
