@@ -115,6 +115,8 @@ uniform mat4 view_projection;
 uniform vec2 viewport;
 uniform float depth_bias;
 out vec4 f_colour;
+out float f_across;  // pixels from the centre line
+out float f_half;    // half the width, pixels
 void main() {
     vec4 ca = view_projection * vec4(a, 1.0);
     vec4 cb = view_projection * vec4(b, 1.0);
@@ -125,8 +127,12 @@ void main() {
     d = len > 1e-6 ? d / len : vec2(1.0, 0.0);
     vec2 n = vec2(-d.y, d.x);
     vec4 c = corner.x < 0.5 ? ca : cb;
-    // Half the width across, and half beyond each end (square caps close the corners).
-    vec2 offset = n * corner.y * 0.5 * width + d * (corner.x < 0.5 ? -0.5 : 0.5) * width;
+    // Half the width across plus a pixel of fringe (faded in the fragment shader: the edges
+    // are anti-aliased without multisampling), and half the width beyond each end (square caps
+    // close the corners).
+    f_half = 0.5 * width;
+    f_across = corner.y * (f_half + 1.0);
+    vec2 offset = n * f_across + d * (corner.x < 0.5 ? -0.5 : 0.5) * width;
     c.xy += offset / (viewport * 0.5) * c.w;
     c.z -= depth_bias * c.w;
     f_colour = colour;
@@ -135,8 +141,14 @@ void main() {
 
 const char* kLineFragment = R"(#version 330 core
 in vec4 f_colour;
+in float f_across;
+in float f_half;
 out vec4 colour;
-void main() { colour = f_colour; })";
+void main() {
+    // Coverage of this pixel by the line: 1 inside, falling to 0 over the last pixel.
+    float cover = clamp(f_half + 0.5 - abs(f_across), 0.0, 1.0);
+    colour = vec4(f_colour.rgb, f_colour.a * cover);
+})";
 
 // The ground: a grid drawn per pixel (anti-aliased with fwidth), fading with distance. The
 // bodies' soft round shadows are small quads of their own, darkening it (a loop over the
@@ -664,6 +676,8 @@ struct Scene3dView::Impl {
         else gl.Disable(GL_DEPTH_TEST);
         gl.Enable(GL_BLEND);
         gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        // Lines do not write depth: their faded fringes would punch holes in what is drawn later.
+        gl.DepthMask(GL_FALSE);
         gl.BindVertexArray(line_vao);
         gl.BindBuffer(GL_ARRAY_BUFFER, line_vbo);
         gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(LineVertex)),
@@ -671,6 +685,7 @@ struct Scene3dView::Impl {
         gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines.size()));
         gl.BindVertexArray(0);
         gl.Disable(GL_BLEND);
+        gl.DepthMask(GL_TRUE);
         lines.clear();
     }
 
