@@ -38,7 +38,7 @@ Scene read_scene(const std::string& file) {
     const std::string path = file == "-" ? file : resolve_lesson(file, lessons_dir());
     std::string name;
     const std::string text = read_input_file(path, &name);
-    Scene scene = parse_scene_text(text, name, nullptr, {"lesson", "question", "variant"});
+    Scene scene = parse_scene_text(text, name, nullptr, lesson_tables());
     if (scene.title.empty() && path != "-" && parse_toml_text(text, name).contains("lesson"))
         scene.title = load_lesson(path).title;
     const auto why = compare::box2d_unsupported(scene);

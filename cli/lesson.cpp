@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/lesson_penalty.h"
 #include "cli/notation.h"
 #include "cli/toml_reader.h"
 #include "engine/diagnostics.h"
@@ -33,6 +34,7 @@ struct QuantityInfo {
     bool needs_event;
     bool needs_body;
     bool angular = false;  // spins and angular momenta: a number (z) in 2D, none in 1D
+    bool penalty = false;  // answered by the [penalty] contact
 };
 
 const std::map<std::string, QuantityInfo>& quantity_table() {
@@ -62,6 +64,13 @@ const std::map<std::string, QuantityInfo>& quantity_table() {
         {"final_velocity", {"m/s", false, true}},
         {"final_spin", {"rad/s", false, true, true}},
         {"final_kinetic_energy", {"J", false, false}},
+        {"penalty_damping_ratio", {"", false, false, false, true}},
+        {"penalty_damping", {"N s/m", false, false, false, true}},
+        {"penalty_contact_time", {"s", false, false, false, true}},
+        {"penalty_peak_force", {"N", false, false, false, true}},
+        {"penalty_max_overlap", {"m", false, false, false, true}},
+        {"penalty_impulse", {"N s", false, false, false, true}},
+        {"penalty_restitution", {"", false, false, false, true}},
     };
     return table;
 }
@@ -81,6 +90,11 @@ std::vector<std::string> strings(const TableReader& t, const std::string& key, c
 
 }  // namespace
 
+const std::vector<std::string>& lesson_tables() {
+    static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty"};
+    return tables;
+}
+
 const std::vector<std::string>& lesson_quantities() {
     static const std::vector<std::string> names = [] {
         std::vector<std::string> v;
@@ -95,7 +109,7 @@ Lesson load_lesson(const std::string& path) {
     const std::string text = read_input_file(path, &name);
     Lesson L;
     L.file = path;
-    L.scene = parse_scene_text(text, name, &L.view, {"lesson", "question", "variant"});
+    L.scene = parse_scene_text(text, name, &L.view, lesson_tables());
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
     const auto lt = root.table("lesson");
@@ -156,6 +170,33 @@ Lesson load_lesson(const std::string& path) {
         }
     }
 
+    // [penalty]: the first collision again with a spring-damper contact (1D).
+    if (root.has("penalty")) {
+        const auto pt = root.table("penalty");
+        if (!pt) root.fail("penalty", "expected a table [penalty]");
+        if (L.scene.dimension != 1)
+            pt->fail("", "the penalty contact is on a line: [penalty] needs dimension = 1");
+        pt->allow_only({"stiffness", "damping_ratios", "time_step"});
+        LessonPenalty P;
+        if (!pt->has("stiffness")) pt->fail("stiffness", "missing key 'stiffness' (the spring's k, N/m)");
+        P.stiffness = *pt->number("stiffness", "a stiffness (N/m)");
+        if (!(P.stiffness > 0)) pt->fail("stiffness", "expected a stiffness > 0 N/m, got " + show(P.stiffness));
+        P.damping_ratios = pt->numbers("damping_ratios", 0, "a list of damping ratios")
+                               .value_or(std::vector<double>{0.0, 0.1, 0.2, 0.4, 0.7});
+        for (double z : P.damping_ratios)
+            if (z < 0 || z >= 1)
+                pt->fail("damping_ratios", "expected damping ratios in [0, 1) (under-damped), got " + show(z));
+        P.time_step = pt->number("time_step", "a time step (s)").value_or(0.0);
+        if (pt->has("time_step") && !(P.time_step > 0))
+            pt->fail("time_step", "expected a time step > 0 s, got " + show(P.time_step));
+        P.pos = P.step_pos = pt->table_pos();
+        if (pt->has("time_step")) {
+            P.step_pos = pt->pos("time_step");
+            P.step_key = "penalty.time_step";
+        }
+        L.penalty = P;
+    }
+
     if (const toml::node* list = root.node("question")) {
         const toml::array* qs = list->as_array();
         if (!qs) root.fail("question", "expected [[question]] tables");
@@ -194,6 +235,8 @@ Lesson load_lesson(const std::string& path) {
             } else {
                 q.forbid("body", "'" + Q.quantity + "' is not about one body");
             }
+            if (info.penalty && !L.penalty)
+                q.fail("quantity", "'" + Q.quantity + "' is answered by the penalty contact: add a [penalty] table");
             if (info.angular && L.scene.dimension == 1)
                 q.fail("quantity", "bodies on a line do not spin (no angular quantities in 1D)");
             const bool point_velocity = Q.quantity.rfind("point_velocity_", 0) == 0;
@@ -356,6 +399,7 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
         return scene.bodies.size();
     };
 
+    std::optional<PenaltyStudy> study;  // [penalty]: once, when a question asks
     std::vector<LessonAnswer> out;
     for (std::size_t qi = 0; qi < L.questions.size(); ++qi) {
         const LessonQuestion& q = L.questions[qi];
@@ -436,6 +480,16 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
             set_vector(spin_of(world.bodies()[body]));
         } else if (q.quantity == "final_kinetic_energy") {
             a.value = totals(world.bodies()).kinetic_energy;
+        } else if (info.penalty) {
+            if (!study) study = penalty_study(L);
+            const PenaltyRun& r = study->matched;
+            if (q.quantity == "penalty_damping_ratio") a.value = study->zeta;
+            else if (q.quantity == "penalty_damping") a.value = study->damping;
+            else if (q.quantity == "penalty_contact_time") a.value = r.contact_time;
+            else if (q.quantity == "penalty_peak_force") a.value = r.peak_force;
+            else if (q.quantity == "penalty_max_overlap") a.value = r.max_overlap;
+            else if (q.quantity == "penalty_impulse") a.value = r.impulse;
+            else if (q.quantity == "penalty_restitution") a.value = r.restitution;
         }
         // The text: the number (or vector) to 6 significant digits, then the unit.
         const auto n = [](double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); };

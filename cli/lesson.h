@@ -31,6 +31,16 @@ struct LessonVariant {
     Scene scene;              // the lesson's scene with the variant's settings
 };
 
+// [penalty] (1D lessons, README.md "Lessons"): the first collision again with a penalty
+// (spring-damper) contact instead of the impulse (engine/penalty.h, cli/lesson_penalty.h).
+struct LessonPenalty {
+    double stiffness = 0.0;              // k, N/m
+    std::vector<double> damping_ratios;  // zeta in [0, 1): the table and the force plot
+    double time_step = 0.0;              // s; 0: the engine's default (2000 steps a contact)
+    SourcePos pos, step_pos;             // of the table and of its time_step (for errors found
+    std::string step_key = "penalty";    // when the contact is run)
+};
+
 struct Lesson {
     std::string file;         // as given or found
     std::string id;           // e.g. "catch-up": `collide render catch-up`
@@ -43,8 +53,12 @@ struct Lesson {
     Scene scene;
     std::string label;        // the scene's own label beside its variants (e.g. "e = 0.5")
     std::vector<LessonVariant> variants;
+    std::optional<LessonPenalty> penalty;
     SceneView view;
 };
+
+// The top-level tables a lesson file adds to a scenario's.
+const std::vector<std::string>& lesson_tables();
 
 // The quantities a question can ask for, each with its unit and whether it needs an event
 // and a body: "impulse" (event: P on b), "impulse_normal" (event: j = P . n),
@@ -61,8 +75,11 @@ struct Lesson {
 // bodies' total angular momentum about a fixed point, the origin unless the question gives
 // `about`: sum of I w + (x - o) x m v; not in 1D), "spin_angular_momentum_before" /
 // "spin_angular_momentum_after" (event, body: I w, the body's angular momentum about its own
-// centre of mass; not in 1D). Static bodies count in none of the totals. In 2D angular
-// quantities are numbers (the z component, counter-clockwise +).
+// centre of mass; not in 1D). Static bodies count in none of the totals. With a [penalty]
+// table, "penalty_damping_ratio", "penalty_damping", "penalty_contact_time",
+// "penalty_peak_force", "penalty_max_overlap", "penalty_impulse", "penalty_restitution": the
+// first collision with the penalty contact matched to its e (no pull; cli/lesson_penalty.h).
+// In 2D angular quantities are numbers (the z component, counter-clockwise +).
 const std::vector<std::string>& lesson_quantities();
 
 // Parses and validates a lesson file (the scenario part as parse_scene_text does). Throws

@@ -132,7 +132,9 @@ int main(int argc, char** argv) {
     render->footer(
         "Writes DIR/frames/frame_00000.png ..., DIR/before.png, DIR/at.png, DIR/after.png,\n"
         "DIR/figure.png (the three side by side), DIR/worked-example.md, DIR/data.csv,\n"
-        "DIR/data.json, DIR/events.csv, and DIR/animation.mp4 or .gif with --format.\n"
+        "DIR/data.json, DIR/events.csv, and DIR/animation.mp4 or .gif with --format; for a\n"
+        "lesson also DIR/lesson.md, DIR/variants.png (its variants) and DIR/penalty.svg,\n"
+        "DIR/penalty-overlap.svg, DIR/penalty.csv (its [penalty] contact).\n"
         "Every file is written under a temporary name and renamed when complete.\n"
         "Example: collide render lessons/scenes/billiards-2d.toml -o out/billiards");
 

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "cli/html.h"
 #include "cli/input_error.h"
 #include "cli/lesson.h"
 #include "cli/notation.h"
@@ -26,73 +27,11 @@ namespace {
 
 constexpr int kBadInput = 2;
 
-// ---- HTML text ----
-
-std::string escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
-        }
-    }
-    return out;
-}
-
-// Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>, and the plain
-// superscripts lesson texts write (I^-1, R^T) as <sup>.
-std::string math(const std::string& text) {
-    const std::string rich = notation::to_rich(text);  // v_{pa}
-    std::string out;
-    for (std::size_t i = 0; i < rich.size();) {
-        if (rich[i] == '^' && i + 1 < rich.size()) {
-            std::size_t j = i + 1;
-            if (rich[j] == '-') ++j;
-            while (j < rich.size() && std::isalnum(static_cast<unsigned char>(rich[j]))) ++j;
-            if (j > i + 1 && std::isalnum(static_cast<unsigned char>(rich[j - 1]))) {
-                std::string sup = rich.substr(i + 1, j - i - 1);
-                if (sup[0] == '-') sup = "\u2212" + sup.substr(1);
-                out += "<sup>" + escape(sup) + "</sup>";
-                i = j;
-                continue;
-            }
-        }
-        if (rich.compare(i, 2, "_{") == 0) {
-            const std::size_t close = rich.find('}', i + 2);
-            if (close != std::string::npos) {
-                out += "<sub>" + escape(rich.substr(i + 2, close - i - 2)) + "</sub>";
-                i = close + 1;
-                continue;
-            }
-        }
-        out += escape(std::string(1, rich[i]));
-        ++i;
-    }
-    return out;
-}
-
-// Paragraphs separated by blank lines.
-std::string paragraphs(const std::string& text) {
-    std::string out, para;
-    std::istringstream in(text);
-    const auto flush = [&] {
-        if (!para.empty()) out += "<p>" + math(para) + "</p>\n";
-        para.clear();
-    };
-    for (std::string line; std::getline(in, line);) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
-            flush();
-        } else {
-            if (!para.empty()) para += ' ';
-            para += line;
-        }
-    }
-    flush();
-    return out;
-}
+using html::escape;
+using html::math;
+using html::paragraphs;
+using html::Series;
+using html::svg_plot;
 
 std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
 std::string vec(const Vec3& v, int dim) {
@@ -100,86 +39,6 @@ std::string vec(const Vec3& v, int dim) {
     return "(" + n(v.x()) + ", " + n(v.y()) + (dim == 3 ? ", " + n(v.z()) : "") + ")";
 }
 std::string spin(const Vec3& w, int dim) { return dim == 2 ? n(w.z()) : vec(w, 3); }
-
-// ---- Plots (SVG) ----
-
-struct Series {
-    std::string label;
-    std::string colour;
-    std::vector<double> values;
-};
-
-std::string svg_plot(const std::string& title, const std::vector<double>& t, const std::vector<Series>& series,
-                     const std::vector<double>& collisions, double duration) {
-    const double W = 560, H = 230, left = 64, right = 16, top = 34, bottom = 34;
-    double lo = 0, hi = 0;
-    bool first = true;
-    for (const Series& s : series)
-        for (double v : s.values) {
-            lo = first ? v : std::min(lo, v);
-            hi = first ? v : std::max(hi, v);
-            first = false;
-        }
-    const double data_lo = lo, data_hi = hi;  // labelled where they are
-    if (lo > 0 && lo < 0.5 * hi) lo = 0;
-    if (hi < 0 && hi > 0.5 * lo) hi = 0;
-    const double span = hi - lo;
-    const double pad = span > 1e-12 * std::max(1.0, std::abs(hi)) ? 0.08 * span : std::max(0.05 * std::abs(hi), 1e-3);
-    lo -= pad;
-    hi += pad;
-    const double T = duration > 0 ? duration : 1;
-    const auto X = [&](double x) { return left + (W - left - right) * x / T; };
-    const auto Y = [&](double y) { return top + (H - top - bottom) * (hi - y) / (hi - lo); };
-    char buf[256];
-    std::ostringstream o;
-    o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
-      << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title) << "\">\n";
-    o << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
-    o << "<text x=\"" << left << "\" y=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
-    // Keys, right-aligned on the title line.
-    double kx = W - right;
-    for (auto it = series.rbegin(); it != series.rend(); ++it) {
-        kx -= 8.0 * static_cast<double>(it->label.size()) + 34;
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"14\" x2=\"%.1f\" y2=\"14\" stroke=\"%s\" stroke-width=\"3\"/>",
-                      kx, kx + 20, it->colour.c_str());
-        o << buf << "<text x=\"" << kx + 25 << "\" y=\"18\">" << math(it->label) << "</text>\n";
-    }
-    // Axes, zero, collisions.
-    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1f V%.1f H%.1f\" fill=\"none\" stroke=\"#999\"/>\n", left, top, H - bottom, W - right);
-    o << buf;
-    if (lo < 0 && hi > 0) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\" stroke-dasharray=\"4 4\"/>\n",
-                      left, Y(0), W - right, Y(0));
-        o << buf;
-    }
-    for (double c : collisions) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ce2029\" stroke-opacity=\"0.25\"/>\n",
-                      X(c), top, X(c), H - bottom);
-        o << buf;
-    }
-    // The largest and smallest values, at their heights (one label when they are equal).
-    o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_hi) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_hi)) << "</text>\n";
-    if (Y(data_lo) - Y(data_hi) > 14)
-        o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_lo) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_lo)) << "</text>\n";
-    o << "<text x=\"" << left << "\" y=\"" << H - bottom + 18 << "\" fill=\"#555\">0</text>\n";
-    o << "<text x=\"" << W - right << "\" y=\"" << H - bottom + 18 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(T)) << " s</text>\n";
-    o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\" fill=\"#555\">time (s)</text>\n";
-    for (const Series& s : series) {
-        o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
-        const std::size_t stride = std::max<std::size_t>(1, t.size() / 600);
-        for (std::size_t k = 0; k < t.size(); k += stride) {
-            std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(t[k]), Y(s.values[k]));
-            o << buf;
-        }
-        if (!t.empty()) {
-            std::snprintf(buf, sizeof buf, "%.1f,%.1f", X(t.back()), Y(s.values.back()));
-            o << buf;
-        }
-        o << "\"/>\n";
-    }
-    o << "</svg>\n";
-    return o.str();
-}
 
 // ---- Pages ----
 
@@ -333,6 +192,7 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         }
         o << "</table>\n";
     }
+    if (r.penalty) o << penalty_html(*r.penalty);
     o << "<h2>Energy and momentum against time</h2>\n<div class=\"plots\">"
          "<img src=\"energy.svg\" alt=\"Energy against time\"><img src=\"momentum.svg\" alt=\"Momentum against time\"></div>\n"
          "<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "

@@ -20,6 +20,7 @@
 #include "cli/event_problem.h"
 #include "cli/input_error.h"
 #include "cli/lesson.h"
+#include "cli/lesson_penalty.h"
 #include "cli/notation.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
@@ -329,7 +330,7 @@ void prepare_directory(const RenderOptions& o) {
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
     for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "variants.png", "worked-example.md",
-                             "lesson.md", "animation.mp4", "animation.gif"})
+                             "lesson.md", "penalty.svg", "penalty-overlap.svg", "penalty.csv", "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
 }
 
@@ -598,6 +599,7 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
     const Scene& scene = report.scene;
     // A lesson's answers come first: a question the run cannot answer is bad input.
     if (report.lesson) report.answers = answer_questions(*report.lesson);
+    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson);
     Scene timing = scene;
     timing.output_dt = 1.0 / o.fps;
     const std::vector<double> times = output_times(timing);
@@ -642,6 +644,12 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
         std::ostringstream md;
         write_lesson_markdown(*report.lesson, report.answers, md);
         md << variants_markdown(report);
+        if (report.penalty) {
+            write_penalty_markdown(*report.penalty, md);
+            render::write_file_atomic(o.out_dir + "/penalty.svg", penalty_svg(*report.penalty));
+            render::write_file_atomic(o.out_dir + "/penalty-overlap.svg", penalty_overlap_svg(*report.penalty));
+            render::write_file_atomic(o.out_dir + "/penalty.csv", penalty_csv(*report.penalty));
+        }
         render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
     }
     report.frames = static_cast<long>(times.size());
@@ -676,6 +684,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             out << ", data.csv, data.json, events.csv";
             if (r.lesson) out << ", lesson.md";
             if (!r.variants.empty()) out << ", variants.png";
+            if (r.penalty) out << ", penalty.svg, penalty-overlap.svg, penalty.csv";
             if (!r.video.empty()) out << ", " << r.video;
             // Peak resident memory of the whole process (Linux: kilobytes).
             rusage usage{};

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "cli/lesson.h"
+#include "cli/lesson_penalty.h"
 #include "cli/solve.h"
 #include "render/frame_state.h"
 
@@ -60,6 +61,7 @@ struct RenderReport {
         double ke_before = 0.0, ke_after = 0.0;  // J, the two bodies of that collision
     };
     std::vector<Variant> variants;
+    std::optional<PenaltyStudy> penalty;       // a lesson's [penalty] (penalty.svg, penalty.csv)
     std::vector<double> t;                     // every frame's time (s)
     std::vector<render::FrameTotals> totals;   // and its energies and momentum
     long frames = 0;

@@ -223,7 +223,8 @@ std::optional<std::vector<double>> TableReader::numbers(const std::string& key, 
     if (!n) return std::nullopt;
     const toml::array* arr = n->as_array();
     if (!arr) fail(key, "expected " + what + ", got " + type_name(*n));
-    if (arr->size() != count)
+    if (count == 0 && arr->empty()) fail(key, "expected " + what + " (at least one number), got none");
+    if (count != 0 && arr->size() != count)
         fail(key, "expected " + what + " (" + std::to_string(count) + " numbers), got " +
                       std::to_string(arr->size()) + (arr->size() == 1 ? " number" : " numbers"));
     std::vector<double> out;

@@ -76,6 +76,8 @@ PenaltyRun penalty_collision(const PenaltySetup& s) {
     const double t_ref = kPi * std::sqrt(m / k);  // the undamped contact time
     const double h = s.time_step > 0 ? s.time_step : t_ref / 2000.0;
     require(std::isfinite(h) && h <= t_ref, "the time step must be at most pi sqrt(m/k)");
+    // A floor on the step keeps the run (and its samples) to at most 100 000 steps a contact.
+    require(h >= t_ref * 1e-5, "the time step must be at least pi sqrt(m/k) / 100000");
 
     // State y = (delta, delta', J): delta'' = -F/m, J' = F, F = k delta + c delta'.
     using State = std::array<double, 3>;

@@ -51,7 +51,7 @@ struct PenaltySetup {
     double stiffness = 1e4;                     // k, N/m
     double damping = 0.0;                       // c, N s/m
     bool pull = false;                          // may the spring pull the blocks together?
-    double time_step = 0.0;                     // s; 0: pi sqrt(m/k) / 2000
+    double time_step = 0.0;                     // s; 0: pi sqrt(m/k) / 2000 (in [1e-5, 1] of it)
 };
 
 struct PenaltySample {

@@ -570,5 +570,57 @@ TEST(LessonAnswers, Box2dSlowElasticBounce) {
     EXPECT_NEAR(a[3].value, 0.0, 1e-12);
 }
 
+TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
+    // Two blocks on a line, A (m_a, v_a) onto B at rest, with e. The impulse model gives
+    // P = (1 + e) m v_0, m = m_a m_b / (m_a + m_b). The spring-damper k, c = 2 zeta sqrt(k m):
+    // the overlap obeys m delta'' + c delta' + k delta = 0 from delta = 0, delta' = v_0, so
+    // delta = (v_0 / w_d) exp(-s t) sin(w_d t), s = zeta w_0, w_0 = sqrt(k/m), w_d = w_0 sqrt(1 - zeta^2);
+    // the blocks let go when F = k delta + c delta' = 0, at t_c = (pi - 2 asin zeta) / w_d, and
+    // then e = exp(-zeta (pi - 2 asin zeta) / sqrt(1 - zeta^2)). The answered zeta must give the
+    // lesson's e through that formula. Tolerances: 1e-12 for the closed forms; 1e-9 for what
+    // the run integrates (RK4, step pi sqrt(m/k) / 2000, end found by bisection); 1e-6 for the
+    // peak force and overlap, maxima sampled at the steps ((w h)^2 / 8 = 3e-7 at most).
+    Lesson L = lesson("penalty");
+    ASSERT_TRUE(L.penalty);
+    const double ma = body(L, "A").body1.mass, mb = body(L, "B").body1.mass;
+    const double v0 = body(L, "A").body1.v - body(L, "B").body1.v;
+    const double e = L.scene.restitution, k = L.penalty->stiffness;
+    const double m = ma * mb / (ma + mb);
+    L.questions.clear();
+    for (const char* q : {"penalty_damping_ratio", "penalty_damping", "penalty_contact_time", "penalty_peak_force",
+                          "penalty_max_overlap", "penalty_impulse", "penalty_restitution", "impulse"}) {
+        LessonQuestion Q;
+        Q.text = q;
+        Q.quantity = q;
+        L.questions.push_back(Q);
+    }
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(a.size(), 8u);
+    const double zeta = a[0].value;
+    ASSERT_GT(zeta, 0.0);
+    ASSERT_LT(zeta, 1.0);
+    EXPECT_NEAR(std::exp(-zeta * (M_PI - 2 * std::asin(zeta)) / std::sqrt(1 - zeta * zeta)), e, 1e-12);
+    const double c = 2 * zeta * std::sqrt(k * m);
+    EXPECT_NEAR(a[1].value, c, 1e-12 * c);
+    const double w0 = std::sqrt(k / m), wd = w0 * std::sqrt(1 - zeta * zeta), sg = zeta * w0;
+    const double tc = (M_PI - 2 * std::asin(zeta)) / wd;
+    EXPECT_NEAR(a[2].value, tc, 1e-9 * tc);
+    // The maxima of the closed forms over the contact, densely sampled (error < 1e-9 relative).
+    double peak = 0, deepest = 0;
+    for (int i = 0; i <= 400000; ++i) {
+        const double t = tc * i / 400000;
+        const double delta = v0 / wd * std::exp(-sg * t) * std::sin(wd * t);
+        const double rate = v0 * std::exp(-sg * t) * (std::cos(wd * t) - sg / wd * std::sin(wd * t));
+        peak = std::max(peak, k * delta + c * rate);
+        deepest = std::max(deepest, delta);
+    }
+    EXPECT_NEAR(a[3].value, peak, 1e-6 * peak);
+    EXPECT_NEAR(a[4].value, deepest, 1e-6 * deepest);
+    const double P = (1 + e) * m * v0;
+    EXPECT_NEAR(a[5].value, P, 1e-9 * P);
+    EXPECT_NEAR(a[6].value, e, 1e-9);
+    EXPECT_NEAR(a[7].value, P, 1e-12 * P);
+}
+
 }  // namespace
 }  // namespace collide

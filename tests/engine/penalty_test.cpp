@@ -176,6 +176,9 @@ TEST(Penalty, RefusesWhatIsNotAContact) {
     s = PenaltySetup{};
     s.time_step = 1.0;  // longer than the contact
     EXPECT_THROW(penalty_collision(s), std::invalid_argument);
+    s = PenaltySetup{};  // m = 1/2 kg, k = 1e4 N/m: pi sqrt(m/k) = 0.0222 s
+    s.time_step = 1e-9;  // 22 million steps a contact: refused, not run
+    EXPECT_THROW(penalty_collision(s), std::invalid_argument);
 }
 
 }  // namespace

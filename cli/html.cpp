@@ -1,0 +1,168 @@
+#include "cli/html.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "cli/notation.h"
+
+namespace collide::html {
+
+namespace {
+
+std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
+
+}  // namespace
+
+std::string escape(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+// Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>, and the plain
+// superscripts lesson texts write (I^-1, R^T) as <sup>.
+std::string math(const std::string& text) {
+    const std::string rich = notation::to_rich(text);  // v_{pa}
+    std::string out;
+    for (std::size_t i = 0; i < rich.size();) {
+        if (rich[i] == '^' && i + 1 < rich.size()) {
+            std::size_t j = i + 1;
+            if (rich[j] == '-') ++j;
+            while (j < rich.size() && std::isalnum(static_cast<unsigned char>(rich[j]))) ++j;
+            if (j > i + 1 && std::isalnum(static_cast<unsigned char>(rich[j - 1]))) {
+                std::string sup = rich.substr(i + 1, j - i - 1);
+                if (sup[0] == '-') sup = "\u2212" + sup.substr(1);
+                out += "<sup>" + escape(sup) + "</sup>";
+                i = j;
+                continue;
+            }
+        }
+        if (rich.compare(i, 2, "_{") == 0) {
+            const std::size_t close = rich.find('}', i + 2);
+            if (close != std::string::npos) {
+                out += "<sub>" + escape(rich.substr(i + 2, close - i - 2)) + "</sub>";
+                i = close + 1;
+                continue;
+            }
+        }
+        out += escape(std::string(1, rich[i]));
+        ++i;
+    }
+    return out;
+}
+
+// Paragraphs separated by blank lines.
+std::string paragraphs(const std::string& text) {
+    std::string out, para;
+    std::istringstream in(text);
+    const auto flush = [&] {
+        if (!para.empty()) out += "<p>" + math(para) + "</p>\n";
+        para.clear();
+    };
+    for (std::string line; std::getline(in, line);) {
+        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+            flush();
+        } else {
+            if (!para.empty()) para += ' ';
+            para += line;
+        }
+    }
+    flush();
+    return out;
+}
+
+std::string svg_plot(const std::string& title, const std::vector<double>& t, const std::vector<Series>& series,
+                     const std::vector<double>& collisions, double duration, const std::string& x_unit) {
+    // The keys go right-aligned on the title line, or on a line of their own below it when
+    // they do not fit there (the plot starts lower).
+    const auto text_width = [](const std::string& text) {  // about 8 px a character (not a byte)
+        double chars = 0;
+        for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
+        return 8.0 * chars;
+    };
+    double keys_width = 0;
+    for (const Series& s : series) keys_width += text_width(s.label) + 34;
+    const double W = 560, left = 64, right = 16, bottom = 34;
+    const bool keys_below = left + text_width(title) + 16 + keys_width > W - right;
+    const double top = keys_below ? 52 : 34, H = keys_below ? 248 : 230;
+    double lo = 0, hi = 0;
+    bool first = true;
+    for (const Series& s : series)
+        for (double v : s.values) {
+            lo = first ? v : std::min(lo, v);
+            hi = first ? v : std::max(hi, v);
+            first = false;
+        }
+    const double data_lo = lo, data_hi = hi;  // labelled where they are
+    if (lo > 0 && lo < 0.5 * hi) lo = 0;
+    if (hi < 0 && hi > 0.5 * lo) hi = 0;
+    const double span = hi - lo;
+    const double pad = span > 1e-12 * std::max(1.0, std::abs(hi)) ? 0.08 * span : std::max(0.05 * std::abs(hi), 1e-3);
+    lo -= pad;
+    hi += pad;
+    const double T = duration > 0 ? duration : 1;
+    const auto X = [&](double x) { return left + (W - left - right) * x / T; };
+    const auto Y = [&](double y) { return top + (H - top - bottom) * (hi - y) / (hi - lo); };
+    char buf[256];
+    std::ostringstream o;
+    o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
+      << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title) << "\">\n";
+    o << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
+    o << "<text x=\"" << left << "\" y=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
+    double kx = keys_below ? std::max(8.0, W - right - keys_width) : W - right - keys_width;
+    const double ky = keys_below ? 38 : 18;
+    for (const Series& key : series) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"3\"/>",
+                      kx, ky - 4, kx + 20, ky - 4, key.colour.c_str());
+        o << buf << "<text x=\"" << kx + 25 << "\" y=\"" << ky << "\">" << math(key.label) << "</text>\n";
+        kx += text_width(key.label) + 34;
+    }
+    // Axes, zero, collisions.
+    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1f V%.1f H%.1f\" fill=\"none\" stroke=\"#999\"/>\n", left, top, H - bottom, W - right);
+    o << buf;
+    if (lo < 0 && hi > 0) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\" stroke-dasharray=\"4 4\"/>\n",
+                      left, Y(0), W - right, Y(0));
+        o << buf;
+    }
+    for (double c : collisions) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ce2029\" stroke-opacity=\"0.25\"/>\n",
+                      X(c), top, X(c), H - bottom);
+        o << buf;
+    }
+    // The largest and smallest values, at their heights (one label when they are equal).
+    o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_hi) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_hi)) << "</text>\n";
+    if (Y(data_lo) - Y(data_hi) > 14)
+        o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_lo) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_lo)) << "</text>\n";
+    o << "<text x=\"" << left << "\" y=\"" << H - bottom + 18 << "\" fill=\"#555\">0</text>\n";
+    o << "<text x=\"" << W - right << "\" y=\"" << H - bottom + 18 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(T)) << " " << escape(x_unit) << "</text>\n";
+    o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\" fill=\"#555\">time (" << escape(x_unit) << ")</text>\n";
+    for (const Series& s : series) {
+        o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
+        const std::size_t stride = std::max<std::size_t>(1, t.size() / 600);
+        for (std::size_t k = 0; k < t.size(); k += stride) {
+            std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(t[k]), Y(s.values[k]));
+            o << buf;
+        }
+        if (!t.empty()) {
+            std::snprintf(buf, sizeof buf, "%.1f,%.1f", X(t.back()), Y(s.values.back()));
+            o << buf;
+        }
+        o << "\"/>\n";
+    }
+    o << "</svg>\n";
+    return o.str();
+}
+
+}  // namespace collide::html
