@@ -176,7 +176,7 @@ Lesson load_lesson(const std::string& path) {
         if (!pt) root.fail("penalty", "expected a table [penalty]");
         if (L.scene.dimension != 1)
             pt->fail("", "the penalty contact is on a line: [penalty] needs dimension = 1");
-        pt->allow_only({"stiffness", "damping_ratios", "time_step"});
+        pt->allow_only({"stiffness", "damping_ratios", "stiffnesses", "time_step"});
         LessonPenalty P;
         if (!pt->has("stiffness")) pt->fail("stiffness", "missing key 'stiffness' (the spring's k, N/m)");
         P.stiffness = *pt->number("stiffness", "a stiffness (N/m)");
@@ -186,6 +186,10 @@ Lesson load_lesson(const std::string& path) {
         for (double z : P.damping_ratios)
             if (z < 0 || z >= 1)
                 pt->fail("damping_ratios", "expected damping ratios in [0, 1) (under-damped), got " + show(z));
+        P.stiffnesses = pt->numbers("stiffnesses", 0, "a list of stiffnesses (N/m)")
+                            .value_or(std::vector<double>{P.stiffness / 4, P.stiffness, 4 * P.stiffness});
+        for (double k : P.stiffnesses)
+            if (!(k > 0)) pt->fail("stiffnesses", "expected stiffnesses > 0 N/m, got " + show(k));
         P.time_step = pt->number("time_step", "a time step (s)").value_or(0.0);
         if (pt->has("time_step") && !(P.time_step > 0))
             pt->fail("time_step", "expected a time step > 0 s, got " + show(P.time_step));

@@ -36,6 +36,7 @@ struct LessonVariant {
 struct LessonPenalty {
     double stiffness = 0.0;              // k, N/m
     std::vector<double> damping_ratios;  // zeta in [0, 1): the table and the force plot
+    std::vector<double> stiffnesses;     // N/m, > 0: the matched spring at each (default k/4, k, 4k)
     double time_step = 0.0;              // s; 0: the engine's default (2000 steps a contact)
     SourcePos pos, step_pos;             // of the table and of its time_step (for errors found
     std::string step_key = "penalty";    // when the contact is run)

@@ -18,13 +18,14 @@ namespace {
 
 std::string n(double x) { return notation::num_text(std::abs(x) < 1e-15 ? 0.0 : x); }
 
-PenaltyRun run(const PenaltyStudy& s, const Lesson& L, double inv_a, double inv_b, double damping, bool pull) {
+PenaltyRun run(const PenaltyStudy& s, const Lesson& L, double inv_a, double inv_b, double damping, bool pull,
+               double stiffness = 0.0) {
     PenaltySetup p;
     p.inv_mass_a = inv_a;
     p.inv_mass_b = inv_b;
     p.va = s.va;
     p.vb = s.vb;
-    p.stiffness = s.stiffness;
+    p.stiffness = stiffness > 0 ? stiffness : s.stiffness;
     p.damping = damping;
     p.pull = pull;
     p.time_step = L.penalty->time_step;
@@ -52,6 +53,12 @@ std::vector<std::string> summary(const PenaltyStudy& s) {
             " N and goes " + n(r.max_overlap * 1e3) + " mm deep. Its impulse ∫F dt = " + n(r.impulse) + " N s; " + s.a +
             " leaves at " + n(r.va_after) + " m/s, " + s.b + " at " + n(r.vb_after) + " m/s: e = " + n(r.restitution) + ".",
     };
+}
+
+std::string stiffness_intro(const PenaltyStudy& s) {
+    return "The stiffness does not change e: the same ζ = " + n(s.zeta) +
+           " at each k (so c = 2 ζ √(k m) grows with √k). A stiffer spring gives the same bounce in a shorter, "
+           "harder and shallower contact: contact time and depth go as 1 / √k, the peak force as √k.";
 }
 
 const char* kColours[] = {"#1d4ed8", "#0f766e", "#b45309", "#7c3aed", "#4b5563", "#0891b2", "#65a30d"};
@@ -97,6 +104,15 @@ PenaltyStudy penalty_study(const Lesson& L) {
         row.push = run(s, L, inv_a, inv_b, row.damping, false);
         row.pull = run(s, L, inv_a, inv_b, row.damping, true);
         s.rows.push_back(std::move(row));
+    }
+    // The time step is the table's for every stiffness (when set): a stiffer spring with the
+    // same step shows the step's error growing.
+    for (double k : L.penalty->stiffnesses) {
+        PenaltyStudy::Stiff st;
+        st.stiffness = k;
+        st.damping = penalty_damping(s.mass, k, s.zeta);
+        st.run = run(s, L, inv_a, inv_b, st.damping, false, k);
+        s.stiffer.push_back(std::move(st));
     }
     return s;
 }
@@ -154,17 +170,18 @@ std::string penalty_overlap_svg(const PenaltyStudy& s) {
 std::string penalty_csv(const PenaltyStudy& s) {
     std::ostringstream o;
     o.precision(17);
-    o << "run,zeta,pull,t_s,overlap_m,rate_m_per_s,force_N,impulse_N_s\n";
-    const auto rows = [&](const std::string& name, double zeta, bool pull, const PenaltyRun& r) {
+    o << "run,k_N_per_m,zeta,pull,t_s,overlap_m,rate_m_per_s,force_N,impulse_N_s\n";
+    const auto rows = [&](const char* name, double k, double zeta, bool pull, const PenaltyRun& r) {
         for (const PenaltySample& p : r.samples)
-            o << name << ',' << zeta << ',' << (pull ? 1 : 0) << ',' << p.t << ',' << p.overlap << ',' << p.rate << ','
-              << p.force << ',' << p.impulse << '\n';
+            o << name << ',' << k << ',' << zeta << ',' << (pull ? 1 : 0) << ',' << p.t << ',' << p.overlap << ','
+              << p.rate << ',' << p.force << ',' << p.impulse << '\n';
     };
-    rows("matched", s.zeta, false, s.matched);
+    rows("matched", s.stiffness, s.zeta, false, s.matched);
     for (const PenaltyStudy::Row& r : s.rows) {
-        rows("table", r.zeta, false, r.push);
-        rows("table", r.zeta, true, r.pull);
+        rows("damping", s.stiffness, r.zeta, false, r.push);
+        rows("damping", s.stiffness, r.zeta, true, r.pull);
     }
+    for (const PenaltyStudy::Stiff& r : s.stiffer) rows("stiffness", r.stiffness, s.zeta, false, r.run);
     return o.str();
 }
 
@@ -178,7 +195,13 @@ void write_penalty_markdown(const PenaltyStudy& s, std::ostream& out) {
         out << "| " << n(r.zeta) << " | " << n(r.damping) << " | " << n(r.e_push) << " | " << n(r.push.restitution)
             << " | " << n(r.e_pull) << " | " << n(r.pull.restitution) << " | " << n(r.push.contact_time * 1e3) << " | "
             << n(r.push.peak_force) << " |\n";
-    out << "\nContact time and peak force: without pull. The samples: [penalty.csv](penalty.csv).\n\n";
+    out << "\nContact time and peak force: without pull. The samples: [penalty.csv](penalty.csv).\n\n"
+        << stiffness_intro(s) << "\n\n| k (N/m) | c (N s/m) | contact (ms) | peak force (N) | deepest (mm) | "
+           "e, integrated |\n|---|---|---|---|---|---|\n";
+    for (const PenaltyStudy::Stiff& r : s.stiffer)
+        out << "| " << n(r.stiffness) << " | " << n(r.damping) << " | " << n(r.run.contact_time * 1e3) << " | "
+            << n(r.run.peak_force) << " | " << n(r.run.max_overlap * 1e3) << " | " << n(r.run.restitution) << " |\n";
+    out << "\n";
 }
 
 std::string penalty_html(const PenaltyStudy& s) {
@@ -198,6 +221,13 @@ std::string penalty_html(const PenaltyStudy& s) {
           << n(r.push.restitution) << "</td><td>" << n(r.e_pull) << "</td><td>" << n(r.pull.restitution) << "</td><td>"
           << n(r.push.contact_time * 1e3) << "</td><td>" << n(r.push.peak_force) << "</td></tr>\n";
     o << "</table>\n<p class=\"note\">Contact time and peak force: without pull.</p>\n";
+    o << "<p>" << html::math(stiffness_intro(s)) << "</p>\n<table>\n<tr><th>k (N/m)</th><th>c (N s/m)</th>"
+         "<th>contact (ms)</th><th>peak force (N)</th><th>deepest (mm)</th><th>e, integrated</th></tr>\n";
+    for (const PenaltyStudy::Stiff& r : s.stiffer)
+        o << "<tr><td>" << n(r.stiffness) << "</td><td>" << n(r.damping) << "</td><td>" << n(r.run.contact_time * 1e3)
+          << "</td><td>" << n(r.run.peak_force) << "</td><td>" << n(r.run.max_overlap * 1e3) << "</td><td>"
+          << n(r.run.restitution) << "</td></tr>\n";
+    o << "</table>\n";
     return o.str();
 }
 

@@ -31,6 +31,11 @@ struct PenaltyStudy {
         PenaltyRun push, pull;              // integrated
     };
     std::vector<Row> rows;            // the [penalty] damping ratios, in order
+    struct Stiff {
+        double stiffness = 0.0, damping = 0.0;  // the matched zeta: c = 2 zeta sqrt(k m)
+        PenaltyRun run;                         // without pull
+    };
+    std::vector<Stiff> stiffer;       // the [penalty] stiffnesses (default k/4, k, 4k)
 };
 
 // Runs the lesson's scene to its first collision and the penalty contacts. Throws InputError
@@ -42,7 +47,8 @@ PenaltyStudy penalty_study(const Lesson& lesson);
 std::string penalty_svg(const PenaltyStudy& s);
 // penalty-overlap.svg: the overlap (mm) against time (ms), the same runs.
 std::string penalty_overlap_svg(const PenaltyStudy& s);
-// penalty.csv: every sample of every run: run,zeta,pull,t_s,overlap_m,rate_m_per_s,force_N,impulse_N_s.
+// penalty.csv: every sample of every run (run: matched, damping or stiffness):
+// run,k_N_per_m,zeta,pull,t_s,overlap_m,rate_m_per_s,force_N,impulse_N_s.
 std::string penalty_csv(const PenaltyStudy& s);
 // The matched contact and the table of damping ratios, as Markdown (lesson.md) and as HTML
 // (the lesson's page of collide material).

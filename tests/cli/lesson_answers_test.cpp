@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/lesson.h"
+#include "cli/lesson_penalty.h"
 
 namespace collide {
 namespace {
@@ -620,6 +621,24 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
     EXPECT_NEAR(a[5].value, P, 1e-9 * P);
     EXPECT_NEAR(a[6].value, e, 1e-9);
     EXPECT_NEAR(a[7].value, P, 1e-12 * P);
+
+    // The study's tables: each damping ratio's e by both formulas (no pull: the spring lets go
+    // at F = 0; pull: half a period, e = exp(-zeta pi / sqrt(1 - zeta^2))), and the matched zeta
+    // at each stiffness: e unchanged, the contact time (pi - 2 asin zeta) / w_d with w_0 = sqrt(k/m).
+    const PenaltyStudy st = penalty_study(L);
+    ASSERT_EQ(st.rows.size(), L.penalty->damping_ratios.size());
+    for (const PenaltyStudy::Row& r : st.rows) {
+        const double z = r.zeta, q = std::sqrt(1 - z * z);
+        EXPECT_NEAR(r.push.restitution, std::exp(-z * (M_PI - 2 * std::asin(z)) / q), 1e-9) << z;
+        EXPECT_NEAR(r.pull.restitution, std::exp(-z * M_PI / q), 1e-9) << z;
+    }
+    ASSERT_EQ(st.stiffer.size(), L.penalty->stiffnesses.size());
+    for (const PenaltyStudy::Stiff& r : st.stiffer) {
+        const double wdk = std::sqrt(r.stiffness / m) * std::sqrt(1 - zeta * zeta);
+        EXPECT_NEAR(r.run.restitution, e, 1e-9) << r.stiffness;
+        EXPECT_NEAR(r.run.contact_time, (M_PI - 2 * std::asin(zeta)) / wdk, 1e-9 * tc) << r.stiffness;
+        EXPECT_NEAR(r.run.impulse, P, 1e-9 * P) << r.stiffness;
+    }
 }
 
 }  // namespace
