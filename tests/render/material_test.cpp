@@ -1,7 +1,8 @@
-// `collide material`: the site it writes is complete and self-contained (every internal link
-// and image resolves, nothing is fetched from the network), the answers are on the pages, and
-// bad input writes nothing.
+// `collide material`: every bundled lesson renders (a low-resolution smoke run), the site it
+// writes is complete and self-contained (every internal link and image resolves, nothing is
+// fetched from the network), the answers are on the pages, and bad input writes nothing.
 #include "cli/material_cmd.h"
+#include "cli/lesson.h"
 
 #include <filesystem>
 #include <fstream>
@@ -34,10 +35,14 @@ MaterialOptions tiny(const std::string& out) {
     return o;
 }
 
-TEST(Material, EveryLinkAndImageResolvesAndNothingComesFromTheNetwork) {
+TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
+    // The smoke render of every bundled lesson (160x120, 10 frames/s: about 6 s), as the site.
     render::test::TempDir dir;
     std::ostringstream out, err;
-    ASSERT_EQ(run_material(tiny(dir / "site"), out, err), 0) << err.str();
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons.clear();  // all of them
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
     const std::regex attr(R"re((?:href|src|poster)="([^"]*)")re");
     int pages = 0, links = 0;
     for (const auto& e : fs::recursive_directory_iterator(dir / "site")) {
@@ -52,7 +57,21 @@ TEST(Material, EveryLinkAndImageResolvesAndNothingComesFromTheNetwork) {
             EXPECT_TRUE(fs::exists(e.path().parent_path() / target)) << e.path() << " -> " << target;
         }
     }
-    EXPECT_EQ(pages, 2);  // the index and the lesson
+    EXPECT_EQ(pages, static_cast<int>(all.size()) + 1);  // the index and one page a lesson
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.id);
+        const fs::path d = fs::path(dir / "site") / L.id;
+        for (const char* name : {"index.html", "lesson.md", "data.csv", "energy.svg", "momentum.svg"})
+            EXPECT_TRUE(fs::exists(d / name)) << name;
+        EXPECT_TRUE(fs::exists(d / "frames/frame_00000.png"));
+        if (!L.variants.empty()) {
+            EXPECT_TRUE(fs::exists(d / "variants.png"));
+        }
+        if (L.penalty) {
+            for (const char* name : {"penalty.svg", "penalty-overlap.svg", "penalty.csv"})
+                EXPECT_TRUE(fs::exists(d / name)) << name;
+        }
+    }
     EXPECT_GT(links, 10);
     // The lesson page holds its questions and the computed answers; the index links to it.
     const std::string lesson = read(fs::path(dir / "site") / "catch-up/index.html");
