@@ -218,6 +218,24 @@ TEST(SceneFile, CollisionFileIsPointedToSolve) {
     }
 }
 
+TEST(SceneFile, MessagesQuotingALineBreakStayOnOneLine) {
+    // The user's text comes back escaped, as they would write it in a TOML string.
+    for (const char* text : {"[[body]]\nshape = \"\"\"\ndisc\n\"\"\"\nradius = 0.1\nmass = 1.0\n",
+                             "[[body]]\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n\"v\\tx\" = 1.0\n",
+                             "[[body]]\nshape = \"disc\\r\"\nradius = 0.1\nmass = 1.0\n",
+                             "[[body]]\nshape = \"disc\\u0007\"\nradius = 0.1\nmass = 1.0\n"}) {
+        try {
+            parse_scene_text(std::string(kHead) + text, "bad.toml");
+            FAIL() << text << ": accepted";
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.find_first_of("\n\r\t\a"), std::string::npos) << what;
+            EXPECT_EQ(what.find("bad.toml:"), 0u) << what;
+        }
+    }
+    EXPECT_EQ(one_line("'disc\n' \t\r\x7f\x01 ok"), "'disc\\n' \\t\\r\\u007F\\u0001 ok");
+}
+
 TEST(SceneFile, MissingSceneTable) {
     EXPECT_THROW(parse_scene_text("[[body]]\nshape = \"disc\"\n", "x.toml"), InputError);
 }
