@@ -1,5 +1,6 @@
 #include "cli/scene_file.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cli/toml_reader.h"
@@ -56,6 +57,12 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
     SceneBody b;
     b.name = t.string("name", "a name").value_or("body" + std::to_string(index + 1));
     if (b.name.empty()) t.fail("name", "a body's name must not be empty");
+    // A line break (often from a """ string) would split the heading of the step table and of
+    // data.csv, and a question's body = "cart" would not find it.
+    if (std::any_of(b.name.begin(), b.name.end(),
+                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+        t.fail("name", "a body's name must be one line, without line breaks or tabs, got '" +
+                           b.name + "'");
     b.shape = read_choice(t, "shape", shapes_of(dim), std::to_string(dim) + "D shape", "");
     for (const char* k : {"radius", "size", "vertices", "length", "normal", "offset"})
         if (!shape_takes(b.shape, k))

@@ -143,6 +143,9 @@ INSTANTIATE_TEST_SUITE_P(
             "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n"
             "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\nposition = [1.0, 0.0]\n",
             "body[2].name", 10, "already used by body[1]"},
+        Bad{"name with a line break",
+            "[[body]]\nname = \"heavy\\ncart\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n",
+            "body[1].name", 5, "must be one line, without line breaks or tabs, got 'heavy\\ncart'"},
         Bad{"overlap at the start",
             "[[body]]\nname = \"a\"\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n"
             "[[body]]\nname = \"b\"\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nmass = 1.0\n"
