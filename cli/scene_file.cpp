@@ -38,9 +38,12 @@ bool shape_takes(const std::string& shape, const std::string& key) {
 
 void read_material(const TableReader& t, std::optional<double>* e, std::optional<double>* mu) {
     *e = t.number("restitution", "the coefficient of restitution e in [0, 1]");
-    if (*e && (**e < 0 || **e > 1)) t.fail("restitution", "e must lie in [0, 1]");
+    if (*e && (**e < 0 || **e > 1))
+        t.fail("restitution", "e must lie in [0, 1], got " + show(**e) +
+                                  "; e = 1: they separate as fast as they approached, "
+                                  "e = 0: not at all");
     *mu = t.number("friction", "the friction coefficient mu >= 0");
-    if (*mu && **mu < 0) t.fail("friction", "mu must be >= 0");
+    if (*mu && **mu < 0) t.fail("friction", "mu must be >= 0, got " + show(**mu));
 }
 
 SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
