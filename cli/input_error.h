@@ -7,6 +7,28 @@
 
 namespace collide {
 
+// A message is one line on stderr, but the user text it quotes (a name, a key, a value) may hold
+// a line break ("""cart\n"""), a tab or another control character: those are shown as the
+// escape a TOML string would use (\n, \t, \r, \u007F), so 'cart\n' shows what to change.
+inline std::string one_line(const std::string& text) {
+    std::string s;
+    for (const char c : text) {
+        const auto u = static_cast<unsigned char>(c);
+        if (c == '\n') s += "\\n";
+        else if (c == '\t') s += "\\t";
+        else if (c == '\r') s += "\\r";
+        else if (u < 0x20 || u == 0x7f) {
+            const char* hex = "0123456789ABCDEF";
+            s += "\\u00";
+            s += hex[u >> 4];
+            s += hex[u & 15];
+        } else {
+            s += c;
+        }
+    }
+    return s;
+}
+
 struct SourcePos {
     int line = 0;    // 1-based; 0 = unknown
     int column = 0;  // 1-based; 0 = unknown
@@ -23,7 +45,7 @@ public:
     const std::string& key() const { return key_; }
     const std::string& message() const { return message_; }
 
-    // "FILE:LINE:COL: key: message" (parts that are unknown are left out).
+    // "FILE:LINE:COL: key: message" (parts that are unknown are left out), on one line.
     static std::string format(const std::string& file, SourcePos pos, const std::string& key,
                               const std::string& message) {
         std::string s = file;
@@ -31,7 +53,7 @@ public:
         if (pos.line > 0 && pos.column > 0) s += ":" + std::to_string(pos.column);
         s += ": ";
         if (!key.empty()) s += key + ": ";
-        return s + message;
+        return one_line(s + message);
     }
 
 private:

@@ -698,7 +698,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             << "/frames (no partial file is left)\n";
         return 130;
     } catch (const InputError& e) {
-        if (e.file().empty()) err << "collide: error: " << e.key() << ": " << e.message() << "\n";
+        if (e.file().empty()) err << "collide: error: " << one_line(e.key() + ": " + e.message()) << "\n";
         else err << "collide: error: " << e.what() << "\n";
         return kBadInput;
     } catch (const std::exception& e) {

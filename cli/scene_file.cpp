@@ -1,5 +1,6 @@
 #include "cli/scene_file.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cli/toml_reader.h"
@@ -37,9 +38,12 @@ bool shape_takes(const std::string& shape, const std::string& key) {
 
 void read_material(const TableReader& t, std::optional<double>* e, std::optional<double>* mu) {
     *e = t.number("restitution", "the coefficient of restitution e in [0, 1]");
-    if (*e && (**e < 0 || **e > 1)) t.fail("restitution", "e must lie in [0, 1]");
+    if (*e && (**e < 0 || **e > 1))
+        t.fail("restitution", "e must lie in [0, 1], got " + show(**e) +
+                                  "; e = 1: they separate as fast as they approached, "
+                                  "e = 0: not at all");
     *mu = t.number("friction", "the friction coefficient mu >= 0");
-    if (*mu && **mu < 0) t.fail("friction", "mu must be >= 0");
+    if (*mu && **mu < 0) t.fail("friction", "mu must be >= 0, got " + show(**mu));
 }
 
 SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
@@ -56,6 +60,12 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
     SceneBody b;
     b.name = t.string("name", "a name").value_or("body" + std::to_string(index + 1));
     if (b.name.empty()) t.fail("name", "a body's name must not be empty");
+    // A line break (often from a """ string) would split the heading of the step table and of
+    // data.csv, and a question's body = "cart" would not find it.
+    if (std::any_of(b.name.begin(), b.name.end(),
+                    [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
+        t.fail("name", "a body's name must be one line, without line breaks or tabs, got '" +
+                           b.name + "'");
     b.shape = read_choice(t, "shape", shapes_of(dim), std::to_string(dim) + "D shape", "");
     for (const char* k : {"radius", "size", "vertices", "length", "normal", "offset"})
         if (!shape_takes(b.shape, k))

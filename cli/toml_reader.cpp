@@ -35,6 +35,13 @@ const char* type_name(const toml::node& n) {
     }
 }
 
+// What a value of the wrong type is, quoting a string: a student who wrote mass = "2 kg" or
+// static = "yes" sees their text, not only "a string". `fix` says what to write instead.
+std::string got(const toml::node& n, const std::string& fix) {
+    if (const auto* s = n.as_string()) return "got the string '" + s->get() + "'; " + fix;
+    return std::string("got ") + type_name(n);
+}
+
 std::size_t edit_distance(const std::string& a, const std::string& b) {
     std::vector<std::size_t> row(b.size() + 1);
     for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
@@ -171,7 +178,8 @@ double TableReader::checked_number(const toml::node& n, const std::string& key,
                                    const std::string& what) const {
     if (!n.is_number())
         throw InputError(file_, to_pos(n.source()), full_key(key),
-                         "expected " + what + ", got " + type_name(n));
+                         "expected " + what + ", " +
+                             got(n, "write the number without quotes or units"));
     const double x = n.value<double>().value_or(std::nan(""));
     if (!std::isfinite(x))
         throw InputError(file_, to_pos(n.source()), full_key(key),
@@ -198,14 +206,25 @@ std::optional<long long> TableReader::integer(const std::string& key,
                                               const std::string& what) const {
     const toml::node* n = table_.get(key);
     if (!n) return std::nullopt;
-    if (!n->is_integer()) fail(key, "expected " + what + ", got " + type_name(*n));
+    // "got a number" would puzzle whoever wrote 2.0 or 1.5: show the value and what to write.
+    if (const auto* x = n->as_floating_point(); x && std::isfinite(x->get())) {
+        const double v = x->get() + 0.0;  // -0.0 shows as 0
+        if (v != std::floor(v))
+            fail(key, "expected " + what + ", got " + show(v) + ", which is not a whole number");
+        if (std::abs(v) < 1e6)
+            fail(key, "expected " + what + ", got " + show(v) + ".0; write " + show(v) +
+                          ", without the decimal point");
+    }
+    if (!n->is_integer())
+        fail(key, "expected " + what + ", " + got(*n, "write the whole number without quotes"));
     return n->value<long long>();
 }
 
 std::optional<bool> TableReader::boolean(const std::string& key) const {
     const toml::node* n = table_.get(key);
     if (!n) return std::nullopt;
-    if (!n->is_boolean()) fail(key, std::string("expected true or false, got ") + type_name(*n));
+    if (!n->is_boolean())
+        fail(key, "expected true or false, " + got(*n, "write true or false without quotes"));
     return n->value<bool>();
 }
 

@@ -1,8 +1,15 @@
 #!/usr/bin/env bash
-# Runs `collide solve` on every file of a bad-input folder. Each must: exit with code 2, print
-# nothing on stdout, print exactly one line on stderr that names the file and contains the
-# expected fragment (the file's first line "# expect: ...", or its entry in expectations.txt).
-# Usage: bad_input.sh COLLIDE DIR
+# Runs every file of the bad-input catalogue through the commands that read it:
+#   solve/   collision files:  collide solve FILE, collide solve --format json FILE
+#   scene/   scenario files:   collide step FILE, collide render FILE -o DIR --quiet
+#   lesson/  lesson files:     collide step FILE, collide render FILE -o DIR --quiet
+# Each run must: exit with code 2, print nothing on stdout, print exactly one line on stderr
+# that names the file and contains the expected fragment, and (render) leave no output
+# directory behind. The expectation is the file's first line "# expect: ...", or its entry in
+# the folder's expectations.txt; parts separated by " ... " must each appear. A second line
+# "# only: render" skips `collide step` (a question the run cannot answer: stepping the scene
+# is fine, rendering the lesson is not).
+# Usage: bad_input.sh COLLIDE DIR   (DIR: tests/bad-input)
 set -u
 collide=$1
 dir=$2
@@ -15,34 +22,62 @@ check() {  # check FILE EXPECTED [collide args...]
   local file=$1 expect=$2
   shift 2
   count=$((count + 1))
+  rm -rf "$tmp/render"
   "$collide" "$@" >"$tmp/out" 2>"$tmp/err"
-  local code=$? problem=""
+  local code=$? problem="" part rest
   [[ $code -eq 2 ]] || problem+=" exit code $code (expected 2);"
   [[ -s $tmp/out ]] && problem+=" wrote to stdout;"
   [[ $(wc -l <"$tmp/err") -eq 1 ]] || problem+=" stderr is not exactly one line;"
+  [[ -e $tmp/render ]] && problem+=" left an output directory;"
   grep -qF -- "$file" "$tmp/err" || problem+=" message does not name the file;"
-  grep -qF -- "$expect" "$tmp/err" || problem+=" message lacks '$expect';"
+  rest=$expect
+  while [[ -n $rest ]]; do
+    part=${rest%% ... *}
+    [[ $part == "$rest" ]] && rest="" || rest=${rest#* ... }
+    grep -qF -- "$part" "$tmp/err" || problem+=" message lacks '$part';"
+  done
   if [[ -n $problem ]]; then
     failures=$((failures + 1))
-    echo "FAIL $file:$problem"
+    echo "FAIL $* :$problem"
     sed 's/^/     stderr: /' "$tmp/err" | head -5
   fi
 }
 
-for f in "$dir"/*.toml; do
-  name=$(basename "$f")
-  expect=$(sed -n '1s/^# expect: //p' "$f")
-  [[ -n $expect ]] || expect=$(awk -F'\t' -v n="$name" '$1 == n {print $2}' "$dir/expectations.txt")
-  [[ -n $expect ]] || { echo "FAIL $f: no expectation"; failures=$((failures + 1)); continue; }
-  check "$f" "$expect" solve "$f"
-  check "$f" "$expect" solve --format json "$f"
+expectation() {  # expectation FILE: prints the expected fragment
+  local f=$1 e
+  e=$(sed -n '1s/^# expect: //p' "$f")
+  [[ -n $e ]] || e=$(awk -F'\t' -v n="$(basename "$f")" '$1 == n {print $2}' "$(dirname "$f")/expectations.txt" 2>/dev/null)
+  printf '%s' "$e"
+}
+
+for kind in solve scene lesson; do
+  files=("$dir/$kind"/*.toml)
+  [[ -e ${files[0]} ]] || { echo "FAIL $dir/$kind: no cases"; failures=$((failures + 1)); continue; }
+  for f in "${files[@]}"; do
+    expect=$(expectation "$f")
+    [[ -n $expect ]] || { echo "FAIL $f: no expectation"; failures=$((failures + 1)); continue; }
+    if [[ $kind == solve ]]; then
+      check "$f" "$expect" solve "$f"
+      check "$f" "$expect" solve --format json "$f"
+    else
+      sed -n '2p' "$f" | grep -q '^# only: render' || check "$f" "$expect" step "$f"
+      check "$f" "$expect" render "$f" -o "$tmp/render" --quiet
+    fi
+  done
 done
 
 # Generated cases that are not worth committing.
 head -c $((10 * 1024 * 1024)) /dev/zero | tr '\0' '#' >"$tmp/ten-megabytes.toml"
 check "$tmp/ten-megabytes.toml" "too large" solve "$tmp/ten-megabytes.toml"
+check "$tmp/ten-megabytes.toml" "too large" step "$tmp/ten-megabytes.toml"
+check "$tmp/ten-megabytes.toml" "too large" render "$tmp/ten-megabytes.toml" -o "$tmp/render" --quiet
 check "$tmp/missing.toml" "cannot open" solve "$tmp/missing.toml"
+check "$tmp/missing.toml" "no such file" step "$tmp/missing.toml"
+check "$tmp/missing.toml" "no such file" render "$tmp/missing.toml" -o "$tmp/render" --quiet
 check "<stdin>" "missing key 'dimension'" solve - <<<'restitution = 1.0'
+check "<stdin>" "2:1: scene: missing key 'duration'" step - <<<$'\n[scene]\ndimension = 1'
+check "<stdin>" "scene.duration: expected the simulated time in s > 0" \
+  render - -o "$tmp/render" --quiet <"$dir/scene/zero-duration.toml"
 
 echo "$count cases, $failures failed"
 [[ $failures -eq 0 ]]

@@ -143,6 +143,9 @@ INSTANTIATE_TEST_SUITE_P(
             "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n"
             "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\nposition = [1.0, 0.0]\n",
             "body[2].name", 10, "already used by body[1]"},
+        Bad{"name with a line break",
+            "[[body]]\nname = \"heavy\\ncart\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n",
+            "body[1].name", 5, "must be one line, without line breaks or tabs, got 'heavy\\ncart'"},
         Bad{"overlap at the start",
             "[[body]]\nname = \"a\"\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n"
             "[[body]]\nname = \"b\"\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nmass = 1.0\n"
@@ -216,6 +219,24 @@ TEST(SceneFile, CollisionFileIsPointedToSolve) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("run it with 'collide solve'"), std::string::npos);
     }
+}
+
+TEST(SceneFile, MessagesQuotingALineBreakStayOnOneLine) {
+    // The user's text comes back escaped, as they would write it in a TOML string.
+    for (const char* text : {"[[body]]\nshape = \"\"\"\ndisc\n\"\"\"\nradius = 0.1\nmass = 1.0\n",
+                             "[[body]]\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n\"v\\tx\" = 1.0\n",
+                             "[[body]]\nshape = \"disc\\r\"\nradius = 0.1\nmass = 1.0\n",
+                             "[[body]]\nshape = \"disc\\u0007\"\nradius = 0.1\nmass = 1.0\n"}) {
+        try {
+            parse_scene_text(std::string(kHead) + text, "bad.toml");
+            FAIL() << text << ": accepted";
+        } catch (const InputError& e) {
+            const std::string what = e.what();
+            EXPECT_EQ(what.find_first_of("\n\r\t\a"), std::string::npos) << what;
+            EXPECT_EQ(what.find("bad.toml:"), 0u) << what;
+        }
+    }
+    EXPECT_EQ(one_line("'disc\n' \t\r\x7f\x01 ok"), "'disc\\n' \\t\\r\\u007F\\u0001 ok");
 }
 
 TEST(SceneFile, MissingSceneTable) {
