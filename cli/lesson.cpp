@@ -253,6 +253,9 @@ Lesson load_lesson(const std::string& path) {
             L.questions.push_back(std::move(Q));
         }
     }
+    // The penalty contact needs a collision to replay and an e it can match: found here, when
+    // the file is read, so every command refuses such a lesson alike (a few ms of 1D run).
+    if (L.penalty) penalty_study(L);
     return L;
 }
 
