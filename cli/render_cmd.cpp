@@ -108,6 +108,15 @@ std::string num(double x) {
     return buf;
 }
 
+// A CSV field as RFC 4180 writes it: quoted, with its quotes doubled, when it holds a comma or
+// a quote (a body may be named "cart, left"); as it is otherwise.
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
 // data.csv: t, then per moving body its position, velocity, orientation and spin, then the
 // kinetic energy and momentum of the moving bodies.
 std::string csv_header(const Scene& s) {
@@ -116,12 +125,16 @@ std::string csv_header(const Scene& s) {
     std::string h = "t";
     for (const SceneBody& b : s.bodies) {
         if (b.is_static()) continue;
-        for (int k = 0; k < d; ++k) h += "," + b.name + ".x" + (d > 1 ? std::string(".") + axes[k] : "");
-        for (int k = 0; k < d; ++k) h += "," + b.name + ".v" + (d > 1 ? std::string(".") + axes[k] : "");
-        if (d == 2) h += "," + b.name + ".angle," + b.name + ".w";
+        const auto col = [&](const std::string& what) { h += "," + csv_field(b.name + "." + what); };
+        for (int k = 0; k < d; ++k) col(std::string("x") + (d > 1 ? std::string(".") + axes[k] : ""));
+        for (int k = 0; k < d; ++k) col(std::string("v") + (d > 1 ? std::string(".") + axes[k] : ""));
+        if (d == 2) {
+            col("angle");
+            col("w");
+        }
         if (d == 3) {
-            h += "," + b.name + ".q.w," + b.name + ".q.x," + b.name + ".q.y," + b.name + ".q.z";
-            for (int k = 0; k < 3; ++k) h += "," + b.name + ".w." + axes[k];
+            for (const char* q : {"q.w", "q.x", "q.y", "q.z"}) col(q);
+            for (int k = 0; k < 3; ++k) col(std::string("w.") + axes[k]);
         }
     }
     h += ",kinetic_energy";
@@ -161,13 +174,13 @@ std::string events_csv_header(int d) {
 }
 
 std::string events_csv_row(const Scene& s, const Event1& e) {
-    return num(e.t) + "," + s.bodies[e.a].name + "," + s.bodies[e.b].name + "," + num(e.point) +
+    return num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name) + "," + num(e.point) +
            "," + num(e.impulse) + "," + num(e.va_before) + "," + num(e.vb_before) + "," +
            num(e.va_after) + "," + num(e.vb_after) + "\n";
 }
 template <int D>
 std::string events_csv_row(const Scene& s, const Event<D>& e) {
-    std::string r = num(e.t) + "," + s.bodies[e.a].name + "," + s.bodies[e.b].name;
+    std::string r = num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name);
     for (const auto* v : {&e.point, &e.normal, &e.impulse})
         for (int k = 0; k < D; ++k) r += "," + num((*v)[k]);
     return r + "\n";

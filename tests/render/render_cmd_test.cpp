@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -170,6 +172,41 @@ v = [1.0, 0.0]
     EXPECT_FALSE(fs::exists(dir / "out/before.png"));
     EXPECT_FALSE(fs::exists(dir / "out/figure.png"));
     EXPECT_TRUE(fs::exists(dir / "out/frames/frame_00002.png"));
+}
+
+// Splits one CSV line by RFC 4180 (quoted fields may hold commas and doubled quotes).
+std::vector<std::string> csv_fields(const std::string& line) {
+    std::vector<std::string> out(1);
+    bool quoted = false;
+    for (std::size_t i = 0; i < line.size(); ++i) {
+        const char c = line[i];
+        if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
+        else if (c == '"') quoted = !quoted;
+        else if (c == ',' && !quoted) out.emplace_back();
+        else out.back() += c;
+    }
+    return out;
+}
+
+TEST(RenderCommand, ABodyNamedWithACommaIsOneQuotedCsvColumn) {
+    render::test::TempDir dir;
+    std::string text = kCollision2d;
+    text.replace(text.find("name = \"a\""), 10, "name = \"cart, \\\"left\\\"\"");
+    const std::string scenario = write(dir, "s.toml", text);
+    std::ostringstream out, err;
+    ASSERT_EQ(run_render(tiny(scenario, dir / "out"), out, err), 0) << err.str();
+    std::ifstream data(dir / "out/data.csv"), events(dir / "out/events.csv");
+    std::string header, row;
+    std::getline(data, header);
+    std::getline(data, row);
+    const std::vector<std::string> h = csv_fields(header);
+    EXPECT_EQ(h.size(), csv_fields(row).size()) << header;
+    EXPECT_EQ(h.at(1), "cart, \"left\".x.x");  // t, then the first body's x
+    std::getline(events, header);
+    std::getline(events, row);
+    const std::vector<std::string> e = csv_fields(row);
+    EXPECT_EQ(csv_fields(header).size(), e.size()) << row;
+    EXPECT_EQ(e.at(1), "cart, \"left\"");
 }
 
 TEST(RenderCommand, RefusesANonEmptyDirectoryUnlessForced) {
