@@ -12,6 +12,11 @@ namespace {
 
 constexpr double kOverlapTolerance = 1e-9;  // m: touching is fine, overlapping is not
 constexpr double kMaxOutputSteps = 1e6;
+// The 2D and 3D worlds find a contact to an absolute 1e-10 m: on a body smaller than 1 um that
+// would be more than 1e-4 of its size (tests/engine/numerical_edges_test.cpp), so it is refused.
+constexpr double kMinBodySize = 1e-6;
+const char* const kTooSmall =
+    " is below 1e-6 m (1 um): contacts are found to 1e-10 m, too coarse for so small a body";
 
 const std::vector<std::string>& shapes_of(int dim) {
     static const std::vector<std::string> s1 = {"block"};
@@ -82,6 +87,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         extent = b.length;
     } else if (b.shape == "disc" || b.shape == "sphere") {
         const double r = read_positive(t, "radius", "the radius in m");
+        if (r < kMinBodySize) t.fail("radius", "the radius " + show(r) + kTooSmall);
         b.shape2.kind = Shape2::Kind::disc;
         b.shape2.radius = r;
         b.shape3.kind = Shape3::Kind::sphere;
@@ -94,6 +100,8 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         if (!size) t.fail("", "missing key 'size' (" + what + ")");
         for (double s : *size)
             if (!(s >= kMinSize)) t.fail("size", "edge lengths must be positive (at least 1e-12 m)");
+        for (double s : *size)
+            if (s < kMinBodySize) t.fail("size", "the edge " + show(s) + kTooSmall);
         if (dim == 2) {
             b.shape2.kind = Shape2::Kind::polygon;
             b.shape2.polygon = make_rectangle((*size)[0], (*size)[1]);
@@ -121,6 +129,13 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         std::string error;
         b.shape2.kind = Shape2::Kind::polygon;
         if (!make_polygon(vertices, &b.shape2.polygon, &error, &centroid)) t.fail("vertices", error);
+        Vec2 lo = vertices.front(), hi = vertices.front();
+        for (const Vec2& v : vertices) {
+            lo = lo.cwiseMin(v);
+            hi = hi.cwiseMax(v);
+        }
+        if ((hi - lo).minCoeff() < kMinBodySize)
+            t.fail("vertices", "the polygon's width " + show((hi - lo).minCoeff()) + kTooSmall);
         extent = polygon_area(b.shape2.polygon);
     } else {  // plane: the solid side is normal . p <= offset
         auto n = read_vec(t, "normal", dim, "(the outward unit normal)");
