@@ -21,6 +21,7 @@
 #include "cli/input_error.h"
 #include "cli/lesson.h"
 #include "cli/lesson_penalty.h"
+#include "cli/simulate.h"
 #include "cli/notation.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
@@ -188,26 +189,24 @@ std::string events_csv_row(const Scene& s, const Event<D>& e) {
 
 template <int D>
 Run simulate(const Scene& scene, const std::vector<double>& times) {
-    typename Stepping<D>::World world(scene);
-    std::vector<typename Stepping<D>::Event> events;
     Run run;
     run.csv = csv_header(scene);
     run.events_csv = events_csv_header(D);
-    for (double t : times) {
-        const std::size_t first = events.size();
-        world.advance_to(t, &events);
-        for (std::size_t k = first; k < events.size(); ++k) {
-            run.impacts.push_back(render::impact_mark(scene, events[k]));
+    simulate_each<D>(
+        scene, times,
+        [&](const auto& event) {
+            run.impacts.push_back(render::impact_mark(scene, event));
             if (!run.json_events.empty()) run.json_events += ",\n";
-            run.json_events += event_json(scene, events[k]);
-            run.events_csv += events_csv_row(scene, events[k]);
-        }
-        FrameState f = render::frame_state(scene, t, world.bodies());
-        run.csv += csv_row(scene, f);
-        if (!run.json_frames.empty()) run.json_frames += ",\n";
-        run.json_frames += state_json(scene, t, world.bodies());
-        run.frames.push_back(std::move(f));
-    }
+            run.json_events += event_json(scene, event);
+            run.events_csv += events_csv_row(scene, event);
+        },
+        [&](double t, const auto& bodies) {
+            FrameState f = render::frame_state(scene, t, bodies);
+            run.csv += csv_row(scene, f);
+            if (!run.json_frames.empty()) run.json_frames += ",\n";
+            run.json_frames += state_json(scene, t, bodies);
+            run.frames.push_back(std::move(f));
+        });
     return run;
 }
 
@@ -391,6 +390,108 @@ std::optional<Moments> first_moments(const Scene& scene, const std::vector<doubl
                                   : moments_of<3>(scene, run);
 }
 
+// The before / at / after panels of the first collision, framed on those three moments without
+// the table (figure.png's panels), and the figure of the three with their captions.
+struct Figure {
+    std::vector<render::Image> panels;
+    render::Image figure;
+    render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
+};
+
+Figure collision_figure(render::GlContext& context, const Scene& scene, const SceneView& view,
+                        const render::RenderSettings& settings, const Moments& moments) {
+    const int height = settings.height;
+    const bool three_d = settings.view == render::ViewKind::perspective;
+    Figure out;
+    // The figure: three panels framed on these moments, without the table.
+    render::RenderSettings panel = settings;
+    panel.header = false;
+    panel.table = false;
+    panel.plots = false;
+    panel.timeline = false;
+    panel.formula = {};
+    panel.directions = view.directions;
+    panel.font_height = height;
+    std::vector<FrameState> three(moments.states, moments.states + 3);
+    // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
+    double aspect = 4.0 / 3.0;
+    if (!three_d) {
+        render::DiagramView probe(scene, render::Style::for_height(height));
+        probe.fit(three, moments.states[1].impacts, ImVec4(0, 0, 1000, 1000));
+        const Vec2 size = probe.box_hi() - probe.box_lo();
+        if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
+    }
+    const double area = 0.62 * 0.62 * 1.3 * height * height;
+    panel.height = static_cast<int>(std::lround(std::sqrt(area / aspect)));
+    panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
+    render::Renderer panels_renderer(context, scene, panel);
+    panels_renderer.prepare(three, moments.states[1].impacts);
+    for (int k = 0; k < 3; ++k) {
+        render::Decor d;
+        d.velocities = k != 1;
+        d.trails = false;
+        out.panels.push_back(panels_renderer.render(moments.states[k], d));
+    }
+    const int decimals = settings.time_decimals + 1;
+    std::vector<std::string> notes = {"t = " + fixed_text(moments.before, decimals) + " s",
+                                      "t = " + fixed_text(moments.at, decimals) + " s",
+                                      "t = " + fixed_text(moments.after, decimals) + " s"};
+    if (view.directions && scene.dimension == 1) {
+        // The page's captions: a (the left block) catches b before, and does not pass it
+        // after. The arrows show the positive direction; the velocities may be negative.
+        // With the bodies' names (the page's a and b are the left and the right block).
+        const std::size_t a = moments.instant.a, b = moments.instant.b;
+        const std::string A = scene.bodies[a].name, B = scene.bodies[b].name;
+        const double va = moments.states[2].bodies[a].v.x(), vb = moments.states[2].bodies[b].v.x();
+        notes[0] += "     v_{" + A + "i} > v_{" + B + "i}";
+        notes[2] += "     v_{" + A + "f}" + (va <= vb ? " \u2264 " : " > ") + "v_{" + B + "f}";
+    }
+    out.figure = render::compose_figure(context, out.panels, {"before", "at collision", "after"}, notes, height);
+    out.panel = panel;
+    return out;
+}
+
+}  // namespace
+
+render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene, const SceneView& view,
+                                      const render::FormulaText* formula) {
+    const Quality q = quality_of(o.quality);
+    int width = 0, height = 0;
+    parse_render_size(o.size, &width, &height);
+    const bool three_d = o.view.empty() ? scene.dimension == 3 : o.view == "3d";
+    render::RenderSettings settings;
+    settings.width = width;
+    settings.height = height;
+    settings.samples = three_d ? q.samples_3d : q.samples_2d;
+    settings.smooth = q.smooth;
+    settings.view = three_d ? render::ViewKind::perspective : render::ViewKind::diagram;
+    // Time with enough decimals to change from frame to frame.
+    settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
+    if (formula) settings.formula = *formula;
+    settings.camera = {view.camera_azimuth, view.camera_elevation, view.camera_target, view.camera_distance};
+    return settings;
+}
+
+std::optional<render::FormulaText> first_collision_formula(const Scene& scene, double fps) {
+    Scene timing = scene;
+    timing.output_dt = 1.0 / fps;
+    const std::optional<Moments> m = first_moments(scene, output_times(timing));
+    if (!m) return std::nullopt;
+    return worked_example(scene, m->instant).formula;
+}
+
+std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
+                                                    const SceneView& view, const render::RenderSettings& settings,
+                                                    double fps) {
+    Scene timing = scene;
+    timing.output_dt = 1.0 / fps;
+    const std::optional<Moments> m = first_moments(scene, output_times(timing));
+    if (!m) return std::nullopt;
+    return collision_figure(context, scene, view, settings, *m).figure;
+}
+
+namespace {
+
 double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView& view,
                      const std::vector<double>& times, Run& run, const Moments* moments,
                      const WorkedExample* worked, const Lesson* lesson,
@@ -401,19 +502,9 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
     render::GlBackend backend;
     if (!render::parse_gl_backend(o.backend, &backend))
         throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
-    const bool three_d = o.view.empty() ? scene.dimension == 3 : o.view == "3d";
 
     std::unique_ptr<render::GlContext> context = render::create_gl_context(backend);
-    render::RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.samples = three_d ? q.samples_3d : q.samples_2d;
-    settings.smooth = q.smooth;
-    settings.view = three_d ? render::ViewKind::perspective : render::ViewKind::diagram;
-    // Time with enough decimals to change from frame to frame.
-    settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
-    if (worked) settings.formula = worked->formula;
-    settings.camera = {view.camera_azimuth, view.camera_elevation, view.camera_target, view.camera_distance};
+    const render::RenderSettings settings = frame_settings(o, scene, view, worked ? &worked->formula : nullptr);
     render::Renderer renderer(*context, scene, settings);
     renderer.prepare(run.frames, run.impacts);
 
@@ -464,54 +555,14 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
             render::write_png_atomic(o.out_dir + "/" + names[k], image.width, image.height,
                                      image.rgba.data(), q.png);
         }
-        // The figure: three panels framed on these moments, without the table.
-        render::RenderSettings panel = settings;
-        panel.header = false;
-        panel.table = false;
-        panel.plots = false;
-        panel.timeline = false;
-        panel.formula = {};
-        panel.directions = view.directions;
-        panel.font_height = height;
-        std::vector<FrameState> three(moments->states, moments->states + 3);
-        // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
-        double aspect = 4.0 / 3.0;
-        if (!three_d) {
-            render::DiagramView probe(scene, render::Style::for_height(height));
-            probe.fit(three, moments->states[1].impacts, ImVec4(0, 0, 1000, 1000));
-            const Vec2 size = probe.box_hi() - probe.box_lo();
-            if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
-        }
-        const double area = 0.62 * 0.62 * 1.3 * height * height;
-        panel.height = static_cast<int>(std::lround(std::sqrt(area / aspect)));
-        panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
-        render::Renderer panels_renderer(*context, scene, panel);
-        panels_renderer.prepare(three, moments->states[1].impacts);
-        for (int k = 0; k < 3; ++k) {
-            render::Decor d;
-            d.velocities = k != 1;
-            d.trails = false;
-            panels.push_back(panels_renderer.render(moments->states[k], d));
-        }
+        Figure fig = collision_figure(*context, scene, view, settings, *moments);
+        panels = std::move(fig.panels);
+        const render::Image& figure = fig.figure;
+        const render::RenderSettings& panel = fig.panel;
+        const int decimals = settings.time_decimals + 1;
         // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
         const render::Image thumb = render::shrink(panels[1], 480);
         render::write_png_atomic(o.out_dir + "/thumb.png", thumb.width, thumb.height, thumb.rgba.data(), q.png);
-        const int decimals = settings.time_decimals + 1;
-        std::vector<std::string> notes = {"t = " + fixed_text(moments->before, decimals) + " s",
-                                          "t = " + fixed_text(moments->at, decimals) + " s",
-                                          "t = " + fixed_text(moments->after, decimals) + " s"};
-        if (view.directions && scene.dimension == 1) {
-            // The page's captions: a (the left block) catches b before, and does not pass it
-            // after. The arrows show the positive direction; the velocities may be negative.
-            // With the bodies' names (the page's a and b are the left and the right block).
-            const std::size_t a = moments->instant.a, b = moments->instant.b;
-            const std::string A = scene.bodies[a].name, B = scene.bodies[b].name;
-            const double va = moments->states[2].bodies[a].v.x(), vb = moments->states[2].bodies[b].v.x();
-            notes[0] += "     v_{" + A + "i} > v_{" + B + "i}";
-            notes[2] += "     v_{" + A + "f}" + (va <= vb ? " \u2264 " : " > ") + "v_{" + B + "f}";
-        }
-        const render::Image figure = render::compose_figure(
-            *context, panels, {"before", "at collision", "after"}, notes, height);
         render::write_png_atomic(o.out_dir + "/figure.png", figure.width, figure.height,
                                  figure.rgba.data(), q.png);
 

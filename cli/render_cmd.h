@@ -22,6 +22,7 @@
 #include "cli/lesson_penalty.h"
 #include "cli/solve.h"
 #include "render/frame_state.h"
+#include "render/renderer.h"
 
 namespace collide {
 
@@ -87,6 +88,18 @@ RenderReport render_scenario(const RenderOptions& options, std::ostream& err);
 // line on err: the scenario file, an option, or an output directory that is not empty),
 // 1 any other failure. Progress goes to err when it is the process's stderr and a terminal.
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
+
+// What `collide gui` shares with the frames of `collide render`:
+// the frames' settings for the options' size, quality, fps and view (and the first collision's
+// formula, when given);
+render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene, const SceneView& view,
+                                      const render::FormulaText* formula);
+// the first collision's formula overlay, and its before / at / after figure (figure.png), for
+// the scene run at fps; nullopt when the run has no collision.
+std::optional<render::FormulaText> first_collision_formula(const Scene& scene, double fps);
+std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
+                                                    const SceneView& view, const render::RenderSettings& settings,
+                                                    double fps);
 
 // "1280x720" or a preset (480p: 854x480, 720p: 1280x720, 1080p: 1920x1080, 1440p: 2560x1440);
 // false for anything else, or sizes outside 16..8192.
