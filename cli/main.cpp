@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/compare_cmd.h"
+#include "cli/gui_cmd.h"
 #include "cli/input_error.h"
 #include "cli/interactive.h"
 #include "cli/lesson.h"
@@ -163,6 +164,35 @@ int main(int argc, char** argv) {
         "DIR/style.css (with print rules) and, per lesson, what collide render writes. The site is\n"
         "built beside DIR and renamed into place when complete.\n"
         "Example: collide material -o out/site && chromium out/site/index.html");
+    collide::GuiOptions gui_options;
+    CLI::App* gui = app.add_subcommand(
+        "gui", "Open a window: the scene's frame with controls to change it, play it and step it");
+    gui->add_option("SCENARIO", gui_options.scenario, "a lesson id, a lesson file or a scenario file")
+        ->capture_default_str();
+    gui->add_option("--size", gui_options.size, "the frame: WxH, or 480p, 720p, 1080p, 1440p")
+        ->capture_default_str();
+    gui->add_option("--fps", gui_options.fps, "frames per simulated second (as collide render)")
+        ->capture_default_str();
+    gui->add_option("--view", gui_options.view, "2d or 3d (default: 2d for 1D and 2D scenes, 3d for 3D)")
+        ->check(CLI::IsMember({"2d", "3d"}));
+    gui->add_option("--script", gui_options.script,
+                    "run the actions of FILE, one a window frame (tests, demonstrations)");
+    gui->add_option("-o,--output", gui_options.out_dir, "where Save frame and Save figure write")
+        ->capture_default_str();
+    gui->footer(
+        "The frame is the one collide render draws at the playback time. Every change re-runs\n"
+        "the scene from t = 0. Keys: Space play / pause, Right / Left one frame, N next collision,\n"
+        "Home the start, S slower, R reset, F save the frame, G save the figure, H help, Q quit;\n"
+        "in the 3D view drag over the frame to turn the camera and use the wheel to zoom.\n"
+        "A script holds one action a line ('#' comments):\n"
+        "  set e X | set mu X | set model NAME | set policy NAME | set BODY mass X\n"
+        "  set BODY v X [Y [Z]] | set BODY w W (2D) | set BODY w X Y Z (3D)\n"
+        "  play | pause | step [N] | back [N] | next-collision | time T | slow SPEED | reset\n"
+        "  toggle velocities|impacts|trails|labels|com|directions|header|table|plots|timeline\n"
+        "  screenshot FILE.png | save-frame FILE.png | save-figure FILE.png | wait [N] | quit\n"
+        "  orbit RIGHT UP (degrees) | zoom FACTOR (the 3D view's camera) | open LESSON|FILE\n"
+        "Needs a display; without one: xvfb-run collide gui ... (Debian's xvfb).\n"
+        "Example: collide gui rotation-directions --size 720p");
     collide::CompareOptions compare_options;
     CLI::App* compare = app.add_subcommand(
         "compare", "Run a 2D scenario through collide and through Box2D 2.4.1 and compare their "
@@ -222,6 +252,7 @@ int main(int argc, char** argv) {
             return run_step(scene_file, step_options, loop);
         }
         if (*render) return collide::run_render(render_options, std::cout, std::cerr);
+        if (*gui) return collide::run_gui(gui_options, std::cout, std::cerr);
         if (*material) return collide::run_material(material_options, std::cout, std::cerr);
         if (*lessons) {
             std::ostringstream out;

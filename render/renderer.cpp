@@ -55,6 +55,11 @@ ImVec2 Renderer::to_screen(const Vec3& world) const {
 
 bool Renderer::has_glyphs(const std::string& utf8) const { return imgui_->has_glyphs(utf8); }
 
+void Renderer::set_camera(const CameraRequest& camera) {
+    settings_.camera = camera;
+    if (view3d_) view3d_->set_camera(camera);
+}
+
 void Renderer::prepare(const std::vector<FrameState>& samples,
                        const std::vector<ImpactMark>& impacts) {
     const FontSet& fonts = imgui_->fonts();

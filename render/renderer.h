@@ -63,6 +63,9 @@ public:
     // scales (impulses from `impacts`).
     void prepare(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts);
 
+    // The 3D view's camera (collide gui's orbit and zoom); call prepare() again after it.
+    void set_camera(const CameraRequest& camera);
+
     // Draws one frame into `rgba` (width * height * 4 bytes, top row first).
     void render(const FrameState& frame, const Decor& decor, std::uint8_t* rgba);
     Image render(const FrameState& frame, const Decor& decor);

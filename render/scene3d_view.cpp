@@ -821,9 +821,8 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
     // The camera: from the front (+z), turned 30 degrees to the right and raised 22; 2D and 1D
     // scenes a little more from the front. Then the distance and the aim are adjusted so that
     // the bounds' projection fills 86% of the viewport.
-    const bool flat = I.scene.dimension < 3;
-    const double az = camera_.azimuth.value_or(flat ? 20.0 : 32.0) * kPi / 180.0;
-    const double el = camera_.elevation.value_or(flat ? 16.0 : 24.0) * kPi / 180.0;
+    const double az = camera_.azimuth.value_or(default_azimuth(I.scene.dimension)) * kPi / 180.0;
+    const double el = camera_.elevation.value_or(default_elevation(I.scene.dimension)) * kPi / 180.0;
     const Vec3f dir(static_cast<float>(std::sin(az) * std::cos(el)), static_cast<float>(std::sin(el)),
                     static_cast<float>(std::cos(az) * std::cos(el)));
     float distance = static_cast<float>(I.radius / std::sin(0.5 * Impl::kFovY));
@@ -856,7 +855,7 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
         if (!camera_.target) look += right * (2.0f * dx * half_w) - up * (2.0f * dy * half_h);
         if (!camera_.distance) distance *= std::clamp(fill, 0.3f, 3.0f);
     }
-    I.set_camera(dir, distance, look);
+    I.set_camera(dir, distance / static_cast<float>(camera_.zoom), look);
     // Lights in the viewer's frame: the key from the upper left, the fill from the right.
     const Vec3f fwd = (I.target - I.eye).normalized();
     const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
@@ -864,6 +863,9 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
     I.key_light = (-0.45f * right + 0.75f * up - 0.5f * fwd).normalized();
     I.fill_light = (0.8f * right + 0.1f * up - 0.4f * fwd).normalized();
 }
+
+double default_azimuth(int dimension) { return dimension < 3 ? 20.0 : 32.0; }
+double default_elevation(int dimension) { return dimension < 3 ? 16.0 : 24.0; }
 
 ImVec2 Scene3dView::to_screen(const Vec3& world) const { return impl_->project(world); }
 

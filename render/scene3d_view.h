@@ -30,7 +30,13 @@ struct CameraRequest {
     std::optional<double> elevation;  // degrees above the horizon
     std::optional<Vec3> target;       // m: the point looked at
     std::optional<double> distance;   // m from the target
+    double zoom = 1.0;                // the distance divided by this (collide gui's mouse wheel)
 };
+
+// The camera's angles when the scenario sets none (degrees): 1D and 2D scenes a little more
+// from the front than 3D ones.
+double default_azimuth(int dimension);
+double default_elevation(int dimension);
 
 class Scene3dView {
 public:

@@ -1,0 +1,104 @@
+// What `collide gui` shows and changes, without the window: the scene as loaded and as edited,
+// its run sampled at the frame rate (exactly as `collide render` samples it, so a frame of the
+// window is a frame of the offscreen render), the playback position and speed, and the text
+// script that drives it in tests and demonstrations (`collide gui --script FILE`).
+//
+// Every change re-runs the edited scene from its start: the run is deterministic, so the same
+// settings give the same frames.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "engine/scene.h"
+#include "render/diagram_view.h"
+#include "render/frame_state.h"
+
+namespace collide {
+
+class GuiModel {
+public:
+    // Runs `scene` at `fps` frames per simulated second. Throws std::runtime_error if the world
+    // cannot run it (the message says why).
+    GuiModel(Scene scene, double fps);
+
+    const Scene& original() const { return original_; }
+    const Scene& scene() const { return scene_; }  // as edited, what the frames show
+
+    // Edits; each re-runs the scene from t = 0 and keeps the playback time. A run the world
+    // refuses leaves the previous frames and sets error(). Restitution and friction set the
+    // scene's value for every pair (bodies' own values are cleared).
+    void set_restitution(double e);
+    void set_friction(double mu);
+    void set_model(Model m);
+    void set_policy(Policy p);
+    void set_mass(std::size_t body, double mass);  // the inertia scales with it
+    void set_velocity(std::size_t body, const Vec3& v);  // 1D: x; 2D: x, y
+    void set_spin(std::size_t body, const Vec3& w);      // 2D: z; 3D: the vector (rad/s)
+    void reset();                                        // back to the scene as loaded
+    const std::string& error() const { return error_; }
+
+    // The run: one frame per 1/fps s from 0 to the duration, and every collision.
+    double fps() const { return fps_; }
+    const std::vector<render::FrameState>& frames() const { return frames_; }
+    const std::vector<render::ImpactMark>& impacts() const { return impacts_; }
+
+    // Playback: the frame shown.
+    std::size_t index() const { return index_; }
+    double time() const { return frames_[index_].t; }
+    void seek_index(std::size_t k);
+    void seek_time(double t);   // the last frame at or before t
+    void step(long frames);     // forward (or back, when negative), stopping at the ends
+    bool next_collision();      // the first frame at or after the next collision; false if none
+    // Playing: advances by `wall_seconds` x speed of simulated time; stops at the end.
+    bool playing = false;
+    double speed = 1.0;         // 1: real time; 0.25: slow motion
+    void advance(double wall_seconds);
+
+    // The frame as drawn: trails, and the collisions since the previous frame (as the
+    // offscreen render shows them).
+    render::FrameState display_frame() const;
+
+private:
+    void rerun();
+
+    Scene original_, scene_;
+    double fps_;
+    std::vector<render::FrameState> frames_;
+    std::vector<render::ImpactMark> impacts_;
+    std::size_t index_ = 0;
+    double clock_ = 0.0;  // simulated time while playing (between frames)
+    std::string error_;
+};
+
+// The view switches of the window (and the script's `toggle`).
+struct GuiToggles {
+    render::Decor decor;  // velocities, impacts, trails, labels, com, directions
+    bool header = true, table = true, plots = true, timeline = true;
+    // Names as in the script: velocities impacts trails labels com directions header table
+    // plots timeline. False if unknown.
+    bool toggle(const std::string& name);
+};
+
+// One line of a script. Window actions (open, screenshot, save-frame, save-figure, wait, orbit,
+// zoom, quit) are carried out by the window; the others by run_script_action.
+struct GuiAction {
+    int line = 0;
+    std::string verb;               // set, play, pause, step, back, next-collision, time, slow,
+                                    // toggle, reset, screenshot, save-frame, save-figure, wait,
+                                    // open, orbit, zoom, quit
+    std::vector<std::string> args;  // as written
+};
+
+// Reads a script (one action a line; '#' starts a comment). Throws InputError naming the
+// file, line and word for an unknown verb or a wrong argument.
+std::vector<GuiAction> parse_gui_script(const std::string& path);
+// The same from text (`name` for messages).
+std::vector<GuiAction> parse_gui_script_text(const std::string& text, const std::string& name);
+
+// Carries out a model or toggle action; false for a window action (left to the caller).
+// Throws InputError (file, line) for a body that does not exist or a run the world refuses.
+bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* model, GuiToggles* toggles);
+
+}  // namespace collide

@@ -1,0 +1,142 @@
+// What `collide gui` shows and changes, without a window (cli/gui_model.h): the run sampled as
+// `collide render` samples it, playback, edits that re-run the scene (checked against the
+// closed form of the 1D collision), and the script's grammar and its located errors.
+#include "cli/gui_model.h"
+
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "cli/input_error.h"
+#include "cli/lesson.h"
+
+namespace collide {
+namespace {
+
+Scene catch_up() { return load_scenario("catch-up"); }
+
+// The first collision's velocities after it, for e: v_a' = v_a - J / m_a, v_b' = v_b + J / m_b,
+// J = (1 + e) m_a m_b (v_a - v_b) / (m_a + m_b).
+void expect_closed_form(const GuiModel& m, double e) {
+    const Scene& s = m.scene();
+    const double ma = s.bodies[0].body1.mass, mb = s.bodies[1].body1.mass;
+    const double va = s.bodies[0].body1.v, vb = s.bodies[1].body1.v;
+    const double J = (1 + e) * ma * mb * (va - vb) / (ma + mb);
+    const render::FrameState& last = m.frames().back();
+    EXPECT_NEAR(last.bodies[0].v.x(), va - J / ma, 1e-12);
+    EXPECT_NEAR(last.bodies[1].v.x(), vb + J / mb, 1e-12);
+}
+
+TEST(GuiModel, FramesAreTheRendersSamplingAndEditsRerunTheScene) {
+    GuiModel m(catch_up(), 30.0);
+    const double duration = m.scene().duration;
+    ASSERT_EQ(m.frames().size(), static_cast<std::size_t>(std::lround(duration * 30)) + 1);
+    EXPECT_DOUBLE_EQ(m.frames()[3].t, 0.1);
+    ASSERT_EQ(m.impacts().size(), 1u);
+    expect_closed_form(m, m.scene().restitution);
+    m.set_restitution(1.0);
+    expect_closed_form(m, 1.0);
+    m.set_restitution(0.0);
+    expect_closed_form(m, 0.0);
+    // The mass of A doubled: its inertia follows (1D: none), the closed form with the new mass.
+    m.set_mass(0, 4.0);
+    EXPECT_EQ(m.scene().bodies[0].body1.mass, 4.0);
+    expect_closed_form(m, 0.0);
+    m.reset();
+    EXPECT_EQ(m.scene().restitution, m.original().restitution);
+    expect_closed_form(m, m.scene().restitution);
+}
+
+TEST(GuiModel, PlaybackStepsSeeksAndFindsTheCollision) {
+    GuiModel m(catch_up(), 30.0);
+    EXPECT_EQ(m.index(), 0u);
+    m.step(5);
+    EXPECT_EQ(m.index(), 5u);
+    m.step(-10);
+    EXPECT_EQ(m.index(), 0u);  // stops at the start
+    ASSERT_TRUE(m.next_collision());
+    const double tc = m.impacts()[0].t;
+    EXPECT_GE(m.time(), tc);
+    EXPECT_LT(m.time() - tc, 1.0 / 30 + 1e-12);  // the first frame at or after it
+    // That frame shows the impact (as the offscreen render does); the next one does not.
+    EXPECT_EQ(m.display_frame().impacts.size(), 1u);
+    m.step(1);
+    EXPECT_TRUE(m.display_frame().impacts.empty());
+    EXPECT_FALSE(m.next_collision());  // there is no second one
+    m.seek_time(0.5);
+    EXPECT_DOUBLE_EQ(m.time(), 0.5);
+    m.seek_time(1e9);
+    EXPECT_EQ(m.index(), m.frames().size() - 1);
+    // Playing at a quarter speed: 0.4 s of wall time is 0.1 s of the run.
+    m.seek_index(0);
+    m.speed = 0.25;
+    m.playing = true;
+    m.advance(0.4);
+    EXPECT_NEAR(m.time(), 0.1, 1e-12);
+    m.advance(100.0);
+    EXPECT_EQ(m.index(), m.frames().size() - 1);
+    EXPECT_FALSE(m.playing);  // stops at the end
+}
+
+TEST(GuiModel, ScriptActionsChangeTheModelAndTheToggles) {
+    GuiModel m(catch_up(), 30.0);
+    GuiToggles t;
+    const auto actions = parse_gui_script_text(
+        "# a comment\nset e 1   # elastic\nset A v 2.5\nset A mass 3\ntoggle trails\nnext-collision\nback 2\n"
+        "slow 0.25\nscreenshot shot.png\n",
+        "s.txt");
+    ASSERT_EQ(actions.size(), 8u);
+    EXPECT_EQ(actions[0].line, 2);
+    for (const GuiAction& a : actions) {
+        if (a.verb == "screenshot") continue;
+        EXPECT_TRUE(run_script_action(a, "s.txt", &m, &t)) << a.verb;
+    }
+    EXPECT_FALSE(run_script_action(actions.back(), "s.txt", &m, &t));  // the window's
+    EXPECT_EQ(m.scene().restitution, 1.0);
+    EXPECT_EQ(m.scene().bodies[0].body1.v, 2.5);
+    EXPECT_EQ(m.scene().bodies[0].body1.mass, 3.0);
+    expect_closed_form(m, 1.0);
+    EXPECT_FALSE(t.decor.trails);
+    EXPECT_EQ(m.speed, 0.25);
+}
+
+TEST(GuiModel, ScriptMistakesNameTheLineAndTheWord) {
+    const auto refused = [](const std::string& text, const std::string& fragment, int line = 1) {
+        try {
+            parse_gui_script_text(text, "s.txt");
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const InputError& e) {
+            EXPECT_EQ(e.pos().line, line) << e.what();
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+        }
+    };
+    refused("jump\n", "unknown action");
+    refused("\nset e\n", "expected: set e", 2);
+    refused("set e high\n", "expected a finite number, got 'high'");
+    refused("set e nan\n", "expected a finite number");
+    refused("step 1.5\n", "whole number");
+    refused("slow 0\n", "(0, 10]");
+    refused("toggle arrows\n", "got 'arrows'");
+    refused("set model elastic\n", "frictionless, coulomb");
+    refused("set A size 2\n", "mass, v or w");
+    refused("screenshot\n", "screenshot FILE.png");
+    // Found when run: a body that does not exist, e out of range, a spin in 1D.
+    GuiModel m(catch_up(), 30.0);
+    GuiToggles t;
+    const auto fails = [&](const std::string& text, const std::string& fragment) {
+        const auto a = parse_gui_script_text(text, "s.txt");
+        try {
+            run_script_action(a.at(0), "s.txt", &m, &t);
+            ADD_FAILURE() << "accepted: " << text;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+        }
+    };
+    fails("set C mass 1\n", "no body named 'C'");
+    fails("set e 1.5\n", "e in [0, 1]");
+    fails("set A w 1\n", "do not spin");
+    fails("set A v 1 2\n", "expected one number in 1D");
+}
+
+}  // namespace
+}  // namespace collide
