@@ -313,6 +313,15 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
                 m.set_mass(i, mass);
                 rebuild = true;
             }
+            // Size: the shape scaled about its centre (mass kept).
+            for (const double k : {0.8, 1.25}) {
+                if (ImGui::Button(k < 1 ? "smaller (\u00d70.8)" : "bigger (\u00d71.25)")) {
+                    m.scale_size(i, k);
+                    rebuild = true;
+                }
+                ImGui::SameLine();
+            }
+            ImGui::Text("size");
             const int d = sc.dimension;
             double v[3] = {d == 1 ? b.body1.v : d == 2 ? b.body2.v.x() : b.body3.v.x(),
                            d == 2 ? b.body2.v.y() : d == 3 ? b.body3.v.y() : 0.0, d == 3 ? b.body3.v.z() : 0.0};

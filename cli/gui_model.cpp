@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "cli/input_error.h"
+#include "cli/scene_file.h"
 #include "cli/simulate.h"
 #include "cli/step.h"
 
@@ -103,6 +104,24 @@ void GuiModel::set_spin(std::size_t i, const Vec3& w) {
     rerun();
 }
 
+void GuiModel::scale_size(std::size_t i, double k) {
+    SceneBody b = scene_.bodies.at(i);
+    b.length *= k;
+    b.shape2.radius *= k;
+    for (int v = 0; v < b.shape2.polygon.count; ++v) b.shape2.polygon.vertices[static_cast<std::size_t>(v)] *= k;
+    b.shape3.radius *= k;
+    b.shape3.half *= k;
+    b.body2.inertia *= k * k;  // the same mass spread k times wider
+    b.body3.inertia *= k * k;
+    for (std::size_t j = 0; j < scene_.bodies.size(); ++j)
+        if (j != i && start_overlap(scene_, b, scene_.bodies[j]) > 1e-9) {
+            error_ = "'" + b.name + "' would overlap '" + scene_.bodies[j].name + "' at the start";
+            return;
+        }
+    scene_.bodies[i] = b;
+    rerun();
+}
+
 void GuiModel::reset() {
     scene_ = original_;
     rerun();
@@ -182,7 +201,7 @@ struct VerbRule {
 };
 
 const VerbRule kVerbs[] = {
-    {"set", 2, 5, "set e X | set mu X | set model NAME | set policy NAME | set BODY mass X | set BODY v X [Y [Z]] | set BODY w W | set BODY w X Y Z"},
+    {"set", 2, 5, "set e X | set mu X | set model NAME | set policy NAME | set BODY mass X | set BODY size FACTOR | set BODY v X [Y [Z]] | set BODY w W | set BODY w X Y Z"},
     {"play", 0, 0, "play"},
     {"pause", 0, 0, "pause"},
     {"step", 0, 1, "step [FRAMES]"},
@@ -253,11 +272,12 @@ std::vector<GuiAction> parse_gui_script_text(const std::string& text, const std:
                                      "expected sequential or simultaneous, got '" + a.args[1] + "'");
             } else {
                 const std::string& what = a.args[1];
-                if (what != "mass" && what != "v" && what != "w")
+                if (what != "mass" && what != "v" && what != "w" && what != "size")
                     throw InputError(name, {line_no, 1}, "set " + a.args[0],
-                                     "expected e, mu, model, policy, or a body's mass, v or w; got '" + what + "'");
-                if (what == "mass" && n != 3)
-                    throw InputError(name, {line_no, 1}, "set " + a.args[0] + " mass", "expected: set BODY mass X");
+                                     "expected e, mu, model, policy, or a body's mass, size, v or w; got '" + what + "'");
+                if ((what == "mass" || what == "size") && n != 3)
+                    throw InputError(name, {line_no, 1}, "set " + a.args[0] + " " + what,
+                                     "expected: set " + a.args[0] + " " + what + (what == "size" ? " FACTOR" : " X"));
                 for (std::size_t k = 2; k < a.args.size(); ++k) numeric.push_back(k);
             }
         }
@@ -323,6 +343,10 @@ bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* mo
             if (a.args[1] == "mass") {
                 if (!(num(2) > 0)) throw InputError(file, {a.line, 1}, "set " + what + " mass", "expected a mass > 0 kg");
                 model->set_mass(i, num(2));
+            } else if (a.args[1] == "size") {
+                if (!(num(2) >= 0.1 && num(2) <= 10))
+                    throw InputError(file, {a.line, 1}, "set " + what + " size", "expected a factor in [0.1, 10]");
+                model->scale_size(i, num(2));
             } else if (a.args[1] == "v") {
                 if (static_cast<int>(n) != d)
                     throw InputError(file, {a.line, 1}, "set " + what + " v",

@@ -36,6 +36,9 @@ public:
     void set_mass(std::size_t body, double mass);  // the inertia scales with it
     void set_velocity(std::size_t body, const Vec3& v);  // 1D: x; 2D: x, y
     void set_spin(std::size_t body, const Vec3& w);      // 2D: z; 3D: the vector (rad/s)
+    // The body's shape scaled by `factor` about its centre (mass kept, inertia x factor^2).
+    // Refused (error(), nothing changed) when it would then overlap another body.
+    void scale_size(std::size_t body, double factor);
     void reset();                                        // back to the scene as loaded
     const std::string& error() const { return error_; }
 

@@ -185,7 +185,7 @@ int main(int argc, char** argv) {
         "Home the start, S slower, R reset, F save the frame, G save the figure, H help, Q quit;\n"
         "in the 3D view drag over the frame to turn the camera and use the wheel to zoom.\n"
         "A script holds one action a line ('#' comments):\n"
-        "  set e X | set mu X | set model NAME | set policy NAME | set BODY mass X\n"
+        "  set e X | set mu X | set model NAME | set policy NAME | set BODY mass X | set BODY size K\n"
         "  set BODY v X [Y [Z]] | set BODY w W (2D) | set BODY w X Y Z (3D)\n"
         "  play | pause | step [N] | back [N] | next-collision | time T | slow SPEED | reset\n"
         "  toggle velocities|impacts|trails|labels|com|directions|header|table|plots|timeline\n"

@@ -201,8 +201,9 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
     return b;
 }
 
-// How far two bodies overlap at the start (m; <= 0: apart or touching).
-double overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
+}  // namespace
+
+double start_overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
     if (s.dimension == 1)
         return 0.5 * (a.length + b.length) - std::abs(a.body1.position - b.body1.position);
     if (s.dimension == 2)
@@ -214,7 +215,6 @@ double overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
                 .separation;
 }
 
-}  // namespace
 
 SceneView read_view(const TableReader& root, int dim) {
     SceneView v;
@@ -294,7 +294,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
                 readers[j].fail("name", "the name '" + b.name + "' is already used by body[" +
                                             std::to_string(i + 1) + "]");
             if (a.is_static() && b.is_static()) continue;
-            const double depth = overlap(s, a, b);
+            const double depth = start_overlap(s, a, b);
             if (depth > kOverlapTolerance)
                 readers[j].fail(readers[j].has("position") ? "position" : "",
                                 "'" + b.name + "' overlaps '" + a.name + "' by " + show(depth) +

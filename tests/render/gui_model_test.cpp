@@ -47,6 +47,23 @@ TEST(GuiModel, FramesAreTheRendersSamplingAndEditsRerunTheScene) {
     expect_closed_form(m, m.scene().restitution);
 }
 
+// Twice as long, A (a block of length L centred at x_a) meets B (left face at x_b - L_b / 2)
+// L_a / 2 sooner: at t = (x_b - L_b/2 - x_a - L_a) / (v_a - v_b) instead of ... - L_a / 2.
+// Grown until it would overlap B, the edit is refused and nothing changes.
+TEST(GuiModel, SizeScalesTheShapeAndAnOverlapIsRefused) {
+    GuiModel m(catch_up(), 30.0);
+    const SceneBody a = m.scene().bodies[0], b = m.scene().bodies[1];
+    m.scale_size(0, 2.0);
+    EXPECT_TRUE(m.error().empty()) << m.error();
+    const double t = (b.body1.position - b.length / 2 - a.body1.position - a.length) / (a.body1.v - b.body1.v);
+    ASSERT_EQ(m.impacts().size(), 1u);
+    EXPECT_NEAR(m.impacts()[0].t, t, 1e-12);
+    expect_closed_form(m, m.scene().restitution);  // mass kept: the same velocities after
+    m.scale_size(0, 10.0);
+    EXPECT_NE(m.error().find("would overlap 'B'"), std::string::npos) << m.error();
+    EXPECT_EQ(m.scene().bodies[0].length, 2 * a.length);
+}
+
 TEST(GuiModel, PlaybackStepsSeeksAndFindsTheCollision) {
     GuiModel m(catch_up(), 30.0);
     EXPECT_EQ(m.index(), 0u);
@@ -118,7 +135,8 @@ TEST(GuiModel, ScriptMistakesNameTheLineAndTheWord) {
     refused("slow 0\n", "(0, 10]");
     refused("toggle arrows\n", "got 'arrows'");
     refused("set model elastic\n", "frictionless, coulomb");
-    refused("set A size 2\n", "mass, v or w");
+    refused("set A colour 2\n", "mass, size, v or w");
+    refused("set A size\n", "expected: set A size FACTOR");
     refused("screenshot\n", "screenshot FILE.png");
     // Found when run: a body that does not exist, e out of range, a spin in 1D.
     GuiModel m(catch_up(), 30.0);
