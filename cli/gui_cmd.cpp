@@ -29,9 +29,37 @@
 
 namespace collide {
 
+namespace {
+
+const char* const kCommand = "";  // option errors name the option
+
+// The options, the script and the scene, read before any window: bad input is exit code 2
+// (file, line and word named) with or without a display, with or without GLFW.
+bool read_gui_input(const GuiOptions& o, std::ostream& err, int* frame_w, int* frame_h,
+                    std::vector<GuiAction>* script) {
+    try {
+        if (!parse_render_size(o.size, frame_w, frame_h))
+            throw InputError(kCommand, {}, "--size",
+                             "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" + o.size + "'");
+        if (!(o.fps > 0 && o.fps <= 1000))
+            throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 1000]");
+        if (!o.script.empty()) *script = parse_gui_script(o.script);
+        load_scenario(o.scenario);
+    } catch (const InputError& e) {
+        err << "collide: error: " << e.what() << "\n";
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
 #ifndef COLLIDE_HAVE_GLFW
 
-int run_gui(const GuiOptions&, std::ostream&, std::ostream& err) {
+int run_gui(const GuiOptions& o, std::ostream&, std::ostream& err) {
+    int frame_w = 0, frame_h = 0;
+    std::vector<GuiAction> script;
+    if (!read_gui_input(o, err, &frame_w, &frame_h, &script)) return 2;
     err << "collide gui: " << render::window_support() << "\n";
     return 1;
 }
@@ -42,7 +70,6 @@ namespace {
 
 constexpr int kPanelWidth = 390;  // px, the controls beside the frame
 constexpr int kMinHeight = 720;   // px: room for every control beside a small frame
-const char* const kCommand = "";  // option errors name the option
 
 // The UI font's glyphs: Latin-1, Greek (e, mu, omega), sub- and superscripts, arrows, math.
 const ImWchar kUiGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2070, 0x209F, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
@@ -407,18 +434,7 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
 int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
     int frame_w = 0, frame_h = 0;
     std::vector<GuiAction> script;
-    try {
-        if (!parse_render_size(o.size, &frame_w, &frame_h))
-            throw InputError(kCommand, {}, "--size",
-                             "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" + o.size + "'");
-        if (!(o.fps > 0 && o.fps <= 1000))
-            throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 1000]");
-        if (!o.script.empty()) script = parse_gui_script(o.script);
-        load_scenario(o.scenario);  // bad input is reported before a window opens
-    } catch (const InputError& e) {
-        err << "collide: error: " << e.what() << "\n";
-        return 2;
-    }
+    if (!read_gui_input(o, err, &frame_w, &frame_h, &script)) return 2;
 
     std::unique_ptr<render::Window> window;
     const int window_h = std::max(frame_h, kMinHeight);

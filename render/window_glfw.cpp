@@ -91,7 +91,8 @@ void Window::read_back_buffer(int, int, unsigned char*) {}
 
 std::string window_support() {
     return "this collide was built without GLFW, so it has no window: install it (Debian: apt-get install "
-           "libglfw3-dev) and rebuild (scripts/build.sh); collide render makes the same frames without a display";
+           "libglfw3-dev) and rebuild (scripts/build.sh; the CMake option COLLIDE_GUI must be ON, its default); "
+           "collide render makes the same frames without a display";
 }
 
 #endif

@@ -59,6 +59,9 @@ double matching(const render::Image& a, const render::Image& b, int tolerance) {
 }
 
 TEST(Gui, ScriptSetsEStepsToTheCollisionAndTheWindowShowsTheOffscreenFrame) {
+#ifndef COLLIDE_HAVE_GLFW
+    GTEST_SKIP() << "built without GLFW: no window to test (WithoutGlfwItSaysWhatToInstall runs instead)";
+#endif
     if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (Debian: apt-get install xvfb xauth)";
     render::test::TempDir dir;
     // The lesson with e = 1 instead of its 0.5 (the scene's own line, the first one).
@@ -124,10 +127,21 @@ TEST(Gui, MistakesAreRefusedBeforeAWindowOpens) {
 }
 
 TEST(Gui, WithoutADisplayItSaysWhatToDo) {
+#ifndef COLLIDE_HAVE_GLFW
+    GTEST_SKIP() << "built without GLFW: WithoutGlfwItSaysWhatToInstall runs instead";
+#endif
     render::test::TempDir dir;
     EXPECT_EQ(run("env -u DISPLAY -u WAYLAND_DISPLAY " + kCollide + " gui catch-up 2>" + (dir / "err.txt")), 1);
     EXPECT_NE(read(dir / "err.txt").find("xvfb-run"), std::string::npos) << read(dir / "err.txt");
 }
+
+#ifndef COLLIDE_HAVE_GLFW
+TEST(Gui, WithoutGlfwItSaysWhatToInstall) {
+    render::test::TempDir dir;
+    EXPECT_EQ(run(kCollide + " gui catch-up 2>" + (dir / "err.txt")), 1);
+    EXPECT_NE(read(dir / "err.txt").find("apt-get install libglfw3-dev"), std::string::npos) << read(dir / "err.txt");
+}
+#endif
 
 }  // namespace
 }  // namespace collide
