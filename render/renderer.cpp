@@ -234,7 +234,7 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
     clear(gl, style_.colours.background);
     if (view3d_) {
         view3d_->draw(frame, decor);
-        target_->bind();  // the full viewport again
+        target_->resolve();  // the overlays go on the resolved frame: see RenderTarget::resolve
     }
     imgui_->begin(settings_.smooth);
     ImDrawList* dl = imgui_->draw_list();

@@ -75,17 +75,25 @@ RenderTarget::~RenderTarget() {
 }
 
 void RenderTarget::bind() {
+    resolved_ = false;
     gl_.BindFramebuffer(GL_FRAMEBUFFER, samples_ > 0 ? msaa_fbo_ : fbo_);
     gl_.Viewport(0, 0, width_, height_);
 }
 
-void RenderTarget::read_rgba(std::uint8_t* out) {
-    if (samples_ > 0) {
+void RenderTarget::resolve() {
+    if (samples_ > 0 && !resolved_) {
         gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
         gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
         gl_.BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
                             GL_NEAREST);
+        resolved_ = true;
     }
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+    gl_.Viewport(0, 0, width_, height_);
+}
+
+void RenderTarget::read_rgba(std::uint8_t* out) {
+    resolve();
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, fbo_);
     gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);

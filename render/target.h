@@ -25,8 +25,13 @@ public:
     int height() const { return height_; }
     int samples() const { return samples_; }  // what the driver gave (0: none)
 
-    // Binds it for drawing, with the viewport covering it.
+    // Starts a frame: binds it for drawing (the multisampled buffers, if any), with the
+    // viewport covering it.
     void bind();
+    // Multisampled: resolves the samples into the single-sample framebuffer, which takes the
+    // drawing from here on (the 2D overlays, anti-aliased by their own feathered edges, cost
+    // a quarter as much there). Without multisampling: nothing to do.
+    void resolve();
     // Resolves and reads the frame as RGBA bytes, top row first (OpenGL's rows run bottom-up;
     // they are flipped here): width * height * 4 bytes into out.
     void read_rgba(std::uint8_t* out);
@@ -34,6 +39,7 @@ public:
 private:
     const Gl& gl_;
     int width_, height_, samples_ = 0;
+    bool resolved_ = false;  // since the last bind()
     GLuint msaa_fbo_ = 0, msaa_colour_ = 0, msaa_depth_ = 0;  // when multisampled
     GLuint fbo_ = 0, colour_ = 0, depth_ = 0;                  // single-sample
 };
