@@ -33,6 +33,9 @@ enum class ViewKind { diagram, perspective };  // 2D textbook diagram, 3D shaded
 struct RenderSettings {
     int width = 1280, height = 720;  // pixels
     int samples = 4;                 // MSAA samples; 0: off
+    // 3D with samples: multisample only the rectangle the bodies and arrows cover, the ground
+    // around it drawn once without (Scene3dView::above_bounds). Off: the whole frame.
+    bool msaa_region = true;
     bool smooth = true;              // Dear ImGui's edge anti-aliasing (lines, fills, text)
     ViewKind view = ViewKind::diagram;
     bool header = true;              // title, time, arrow legends

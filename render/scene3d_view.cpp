@@ -213,6 +213,19 @@ struct LineVertex {
 struct Mesh {
     GLuint vao = 0, vbo = 0;
     GLsizei count = 0;
+    Vec3f lo = Vec3f::Zero(), hi = Vec3f::Zero();  // local bounding box
+};
+
+// What above_bounds() gathers: the screen box of everything a pass would draw.
+struct ScreenBox {
+    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
+    bool everywhere = false;  // a point behind the eye: take the whole frame
+    void add(float x, float y, float pad) {
+        x0 = std::min(x0, x - pad);
+        y0 = std::min(y0, y - pad);
+        x1 = std::max(x1, x + pad);
+        y1 = std::max(y1, y + pad);
+    }
 };
 
 // Triangle soup builders, in local coordinates (the "local" attribute is the position).
@@ -378,6 +391,14 @@ struct Scene3dView::Impl {
     Mesh upload(const std::vector<Vertex>& v) {
         Mesh m;
         m.count = static_cast<GLsizei>(v.size());
+        if (!v.empty()) {
+            m.lo = m.hi = Vec3f(v[0].p[0], v[0].p[1], v[0].p[2]);
+            for (const Vertex& x : v) {
+                const Vec3f p(x.p[0], x.p[1], x.p[2]);
+                m.lo = m.lo.cwiseMin(p);
+                m.hi = m.hi.cwiseMax(p);
+            }
+        }
         gl.GenVertexArrays(1, &m.vao);
         gl.GenBuffers(1, &m.vbo);
         gl.BindVertexArray(m.vao);
@@ -643,8 +664,25 @@ struct Scene3dView::Impl {
     }
     static constexpr double kFovY = 30.0 * kPi / 180.0;
 
+    // Collecting (above_bounds): the screen box of what would be drawn, instead of drawing.
+    ScreenBox* collect = nullptr;
+    void collect_point(const Vec3f& p, float pad) const {
+        const Eigen::Vector4f c = view_projection * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
+        if (!(c.w() > 1e-6f)) {
+            collect->everywhere = true;
+            return;
+        }
+        const ImVec2 q = project(p.cast<double>());
+        collect->add(q.x, q.y, pad);
+    }
+
     // Thick lines (pixels) through the line program.
     void line(const Vec3& a, const Vec3& b, Colour colour, float width) {
+        if (collect) {
+            collect_point(f3(a), 0.5f * width + 2.0f);
+            collect_point(f3(b), 0.5f * width + 2.0f);
+            return;
+        }
         const float col[4] = {static_cast<float>(colour & 0xFF) / 255.0f,
                               static_cast<float>((colour >> 8) & 0xFF) / 255.0f,
                               static_cast<float>((colour >> 16) & 0xFF) / 255.0f,
@@ -700,6 +738,14 @@ struct Scene3dView::Impl {
 
     void draw_mesh(const Mesh& m, const Mat4f& model, const Mat3f& normal_matrix, Colour colour,
                    int pattern) {
+        if (collect) {
+            for (int k = 0; k < 8; ++k) {
+                const Vec3f local((k & 1) ? m.hi.x() : m.lo.x(), (k & 2) ? m.hi.y() : m.lo.y(),
+                                  (k & 4) ? m.hi.z() : m.lo.z());
+                collect_point((model * local.homogeneous()).head<3>(), 2.0f);
+            }
+            return;
+        }
         gl.UniformMatrix4fv(gl.GetUniformLocation(mesh_program, "model"), 1, GL_FALSE, model.data());
         gl.UniformMatrix3fv(gl.GetUniformLocation(mesh_program, "normal_matrix"), 1, GL_FALSE,
                             normal_matrix.data());
@@ -900,18 +946,44 @@ DiagramView::Legend Scene3dView::impulse_legend() const {
     return {value, static_cast<float>(value * px_per_unit)};
 }
 
-void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
-    Impl& I = *impl_;
-    const Gl& gl = I.gl;
-    const Palette& pal = I.style.colours;
-    gl.Viewport(0, 0, I.frame_w, I.frame_h);
+namespace {
+
+void begin_pass(const Gl& gl, int width, int height) {
+    gl.Viewport(0, 0, width, height);
     gl.Enable(GL_DEPTH_TEST);
     gl.DepthFunc(GL_LEQUAL);
     gl.DepthMask(GL_TRUE);
     gl.Disable(GL_BLEND);
     gl.Disable(GL_CULL_FACE);
+}
+
+}  // namespace
+
+void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
+    draw_ground(frame);
+    draw_above(frame, decor);
+}
+
+bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect) {
+    ScreenBox box;
+    impl_->collect = &box;
+    draw_above(frame, decor);
+    impl_->collect = nullptr;
+    if (box.everywhere) {
+        *rect = ImVec4(0, 0, static_cast<float>(impl_->frame_w), static_cast<float>(impl_->frame_h));
+        return true;
+    }
+    if (!(box.x0 <= box.x1)) return false;
+    *rect = ImVec4(box.x0, box.y0, box.x1, box.y1);
+    return true;
+}
+
+void Scene3dView::draw_ground(const FrameState& frame) {
+    Impl& I = *impl_;
+    const Gl& gl = I.gl;
+    const Palette& pal = I.style.colours;
+    begin_pass(gl, I.frame_w, I.frame_h);
     const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
-    const float outline = I.style.lw(I.style.outline);
 
     // The ground, its grid and the bodies' shadows.
     {
@@ -971,10 +1043,23 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
         }
         gl.DepthMask(GL_TRUE);
         gl.Disable(GL_BLEND);
-        gl.PolygonOffset(1.0f, 1.0f);
     }
+    gl.Disable(GL_POLYGON_OFFSET_FILL);
+    gl.BindVertexArray(0);
+    check_gl(gl, "drawing the 3D view's ground");
+}
+
+void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
+    Impl& I = *impl_;
+    const Gl& gl = I.gl;
+    const Palette& pal = I.style.colours;
+    begin_pass(gl, I.frame_w, I.frame_h);
+    const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
+    const float outline = I.style.lw(I.style.outline);
 
     // Bodies (pushed back a little in depth so that their outlines win).
+    gl.Enable(GL_POLYGON_OFFSET_FILL);
+    gl.PolygonOffset(1.0f, 1.0f);
     I.use_mesh_program();
     int order = 0;
     for (std::size_t i = 0; i < n; ++i) {
@@ -1126,7 +1211,7 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
             I.line(im.point, im.point + 0.75 * I.unit * im.normal, pal.normal, I.style.lw(2.0f));
         }
         I.flush_lines(false, 0.0f);
-        gl.Clear(GL_DEPTH_BUFFER_BIT);
+        if (!I.collect) gl.Clear(GL_DEPTH_BUFFER_BIT);
         I.use_mesh_program();
         for (const ImpactMark& im : frame.impacts) {
             I.arrow(im.point, I.k_impulse * im.impulse, pal.impulse, thick * 1.2);

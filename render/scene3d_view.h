@@ -50,8 +50,17 @@ public:
     void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
              ImVec4 viewport, int frame_width, int frame_height);
     void set_camera(const CameraRequest& camera) { camera_ = camera; }
-    // The GL pass (the render target is bound, colour and depth cleared).
+    // The GL pass (the render target is bound, colour and depth cleared): draw_ground() (the
+    // ground, its grid and the shadows) then draw_above() (bodies, arrows, outlines, trails,
+    // the collision's vectors).
     void draw(const FrameState& frame, const Decor& decor);
+    void draw_ground(const FrameState& frame);
+    void draw_above(const FrameState& frame, const Decor& decor);
+    // The screen rectangle draw_above() can touch (pixels, top-left origin, x0 <= x1, y0 <= y1,
+    // not clipped to the frame); false when it draws nothing. The multisampled render draws the
+    // frame's ground without MSAA and only this rectangle with it (the ground's interior
+    // pixels are the same either way), which makes anti-aliasing cost what the bodies cover.
+    bool above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect);
     // Labels through ImGui, after draw().
     void annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
                   LabelPlacer* labels) const;

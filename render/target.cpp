@@ -80,14 +80,19 @@ void RenderTarget::bind() {
     gl_.Viewport(0, 0, width_, height_);
 }
 
-void RenderTarget::resolve() {
+void RenderTarget::resolve() { resolve(0, 0, width_, height_); }
+
+void RenderTarget::resolve(int x, int y, int w, int h) {
     if (samples_ > 0 && !resolved_) {
         gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
         gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo_);
-        gl_.BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
-                            GL_NEAREST);
-        resolved_ = true;
+        gl_.BlitFramebuffer(x, y, x + w, y + h, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     }
+    bind_resolved();
+}
+
+void RenderTarget::bind_resolved() {
+    resolved_ = true;
     gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
     gl_.Viewport(0, 0, width_, height_);
 }

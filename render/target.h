@@ -32,6 +32,11 @@ public:
     // drawing from here on (the 2D overlays, anti-aliased by their own feathered edges, cost
     // a quarter as much there). Without multisampling: nothing to do.
     void resolve();
+    // Only the rectangle x, y, w, h (pixels, OpenGL's bottom-left origin) of the samples.
+    void resolve(int x, int y, int w, int h);
+    // Binds the single-sample framebuffer for drawing: what resolve() writes into. What is
+    // drawn there before a bind() and resolve(rect) stays outside that rectangle.
+    void bind_resolved();
     // Resolves and reads the frame as RGBA bytes, top row first (OpenGL's rows run bottom-up;
     // they are flipped here): width * height * 4 bytes into out.
     void read_rgba(std::uint8_t* out);

@@ -377,6 +377,38 @@ TEST_F(RenderTest, TheScenariosCameraIsHonoured) {
     EXPECT_NEAR(c.y - up.y, 240.0 / (2.0 * 5.0 * std::tan(15.0 * M_PI / 180.0)), 1.0);
 }
 
+TEST_F(RenderTest, MultisamplingOnlyWhereTheBodiesAreGivesTheWholeFramesMultisampledPicture) {
+    // The 3D view multisamples only the rectangle the bodies and arrows cover (msaa_region):
+    // the frame must be the one multisampling everywhere gives, and differ from no MSAA.
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    const FrameState f = frame_state(scene, 0.0, std::vector<Body2>{scene.bodies[0].body2, scene.bodies[1].body2});
+    Decor arrows = bare();
+    arrows.velocities = true;
+    const auto render = [&](int samples, bool region) {
+        RenderSettings s = small(320, 240);
+        s.view = ViewKind::perspective;
+        s.samples = samples;
+        s.msaa_region = region;
+        Renderer r(*context_, scene, s);
+        r.prepare({f}, {});
+        return r.render(f, arrows);
+    };
+    const Image region = render(4, true), whole = render(4, false), none = render(0, false);
+    const auto differing = [](const Image& a, const Image& b, int tolerance) {
+        int n = 0;
+        for (std::size_t i = 0; i < a.rgba.size(); i += 4)
+            for (int c = 0; c < 3; ++c)
+                if (std::abs(a.rgba[i + c] - b.rgba[i + c]) > tolerance) {
+                    ++n;
+                    break;
+                }
+        return n;
+    };
+    EXPECT_LE(differing(region, whole, 2), 320 * 240 / 1000);  // at most 0.1% of the pixels
+    EXPECT_GE(differing(whole, none, 8), 200);                   // the edges MSAA smooths
+    EXPECT_GE(differing(region, none, 8), 200);
+}
+
 TEST_F(RenderTest, PositiveDirectionArrowsPointAlongPlusX) {
     const Palette palette;
     // Muted grey pixels in a box (pixels), and their mean x.
