@@ -56,6 +56,7 @@ seeds_of() {  # the seed files of a target
 
 run_one() {  # run_one TARGET: runs it; the fuzzer's exit code goes to $out/TARGET.code
   local t=$1 code=0
+  rm -rf "$out/artifacts/$t"  # only this run's findings
   mkdir -p "$out/corpus/$t" "$out/seeds/$t" "$out/artifacts/$t"
   # shellcheck disable=SC2046
   cp $(seeds_of "$t") "$out/seeds/$t/"

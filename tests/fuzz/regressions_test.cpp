@@ -27,10 +27,12 @@ std::string read(const fs::path& p) {
 
 TEST(FuzzRegressions, EveryDirectoryNamesAnEntryPoint) {
     ASSERT_TRUE(fs::is_directory(kDir)) << kDir;
-    for (const auto& d : fs::directory_iterator(kDir))
-        if (d.is_directory())
+    for (const auto& d : fs::directory_iterator(kDir)) {
+        if (d.is_directory()) {
             EXPECT_NE(collide::fuzz::entry_point(d.path().filename().string()), nullptr)
                 << d.path() << ": not scene, solve, lesson or step";
+        }
+    }
 }
 
 TEST(FuzzRegressions, EveryInputIsRefusedOrRunsCleanly) {
