@@ -13,12 +13,13 @@ stage_start=$SECONDS
 times=()
 stage_done() { times+=("$(printf '%-28s %4d s' "$1" $((SECONDS - stage_start)))"); stage_start=$SECONDS; }
 
-# -O1 -g1: quick to build, line numbers in reports; asserts stay on. No benchmarks.
+# -O1, no debug information (engine/ and cli/ get -g1 from COLLIDE_FUZZ for the fuzzers'
+# reports): quick to build, asserts stay on. No benchmarks.
 launcher=()
 if command -v ccache >/dev/null; then launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache); fi
 scripts/build.sh -B "$dir" -DCMAKE_CXX_COMPILER=clang++ -DCOLLIDE_FUZZ=ON \
   -DCOLLIDE_BUILD_BENCH=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1" "${launcher[@]}"
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1" "${launcher[@]}"
 stage_done "sanitized build"
 
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_stack_use_after_return=0:strict_string_checks=1}
