@@ -25,8 +25,8 @@ constexpr double kMaxMagnitude = 1e12;      // as in scenario files
 const char* const kHelp[] = {
     "commands:",
     "  step [n]           advance n output steps (default 1), show the collisions and the state",
-    "  next               run to the next collision: the state before it, the collision, the "
-    "state just after",
+    ("  next               run to the next collision: the state before it, the collision, the "
+     "state just after"),
     "  back [n]           go back n output steps (default 1)",
     "  show [body]        the current state, of all bodies or of one",
     "  set BODY.FIELD V   change a body now, e.g. set ball.v 1,2 or set ball.v [1, 2]",

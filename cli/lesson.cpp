@@ -107,6 +107,10 @@ const std::vector<std::string>& lesson_quantities() {
 Lesson load_lesson(const std::string& path) {
     std::string name;
     const std::string text = read_input_file(path, &name);
+    return parse_lesson_text(text, name, path);
+}
+
+Lesson parse_lesson_text(const std::string& text, const std::string& name, const std::string& path) {
     Lesson L;
     L.file = path;
     L.scene = parse_scene_text(text, name, &L.view, lesson_tables());

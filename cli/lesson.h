@@ -86,6 +86,8 @@ const std::vector<std::string>& lesson_quantities();
 // Parses and validates a lesson file (the scenario part as parse_scene_text does). Throws
 // InputError naming file, line and key.
 Lesson load_lesson(const std::string& path);
+// The same from the file's text (`name` in messages, `path` kept as Lesson::file).
+Lesson parse_lesson_text(const std::string& text, const std::string& name, const std::string& path);
 
 // The directory of the bundled lessons: $COLLIDE_LESSONS when set, else the source tree's.
 std::string lessons_dir();

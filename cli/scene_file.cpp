@@ -103,6 +103,11 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         for (double s : *size)
             if (s < kMinBodySize) t.fail("size", "the edge " + show(s) + kTooSmall);
         if (dim == 2) {
+            const auto [lo, hi] = std::minmax((*size)[0], (*size)[1]);
+            if (hi > kMaxRectangleAspect * lo)
+                t.fail("size", "the edges " + show(lo) + " and " + show(hi) +
+                                   " m differ by more than a factor 1e9; the contact geometry "
+                                   "cannot resolve so thin a rectangle");
             b.shape2.kind = Shape2::Kind::polygon;
             b.shape2.polygon = make_rectangle((*size)[0], (*size)[1]);
             extent = (*size)[0] * (*size)[1];

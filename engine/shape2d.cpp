@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace collide {
 
@@ -292,8 +293,11 @@ bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* 
 Polygon make_rectangle(double width, double height) {
     const double w = 0.5 * width, h = 0.5 * height;
     Polygon p;
-    std::string unused;
-    make_polygon({Vec2(w, -h), Vec2(w, h), Vec2(-w, h), Vec2(-w, -h)}, &p, &unused);
+    std::string error;
+    // make_polygon refuses an edge under 1e-9 of the largest coordinate: a sliver would come
+    // back as an empty polygon, and collide() would index its empty vertex list.
+    if (!make_polygon({Vec2(w, -h), Vec2(w, h), Vec2(-w, h), Vec2(-w, -h)}, &p, &error))
+        throw std::invalid_argument("make_rectangle: " + error);
     return p;
 }
 

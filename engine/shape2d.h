@@ -45,6 +45,9 @@ struct Polygon {
 // kMaxVertices vertices, clockwise order, repeated points or a dent (not convex).
 bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* error,
                   Vec2* centroid = nullptr);
+// Throws std::invalid_argument when make_polygon refuses it: one side under about 2e-9 of the
+// other (scenario files refuse a ratio over 1e9 first: kMaxRectangleAspect).
+constexpr double kMaxRectangleAspect = 1e9;
 Polygon make_rectangle(double width, double height);
 // Area, and moment of inertia per unit mass about the centroid (uniform plate).
 double polygon_area(const Polygon& p);

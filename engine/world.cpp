@@ -5,6 +5,7 @@
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -58,9 +59,9 @@ bool is_plane(const Shape3& s) { return s.kind == Shape3::Kind::half_space; }
 Pose2 pose_of(const Body2& b) { return Pose2{b.position, b.angle}; }
 Pose3 pose_of(const Body3& b) { return Pose3{b.position, b.orientation}; }
 
-// Inverse inertia in the world frame, as the dimension needs it.
-double inv_inertia(const Body2& b) { return b.inv_inertia(); }
-Mat3 inv_inertia(const Body3& b) { return b.is_static ? Mat3::Zero() : b.inv_inertia_world(); }
+// The type of the inverse inertia in the world frame, as the dimension needs it.
+template <class Body>
+using InvInertia = std::conditional_t<std::is_same_v<Body, Body2>, double, Mat3>;
 
 // Turning for dt seconds with a constant angular acceleration alpha (resting forces; 0 when free).
 void turn(Body2* b, double dt, double alpha) {
@@ -863,7 +864,7 @@ void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<Po
         std::size_t c;
         int k;
         Vec ra = Vec::Zero(), rb = Vec::Zero(), n = Vec::Zero();
-        decltype(inv_inertia(std::declval<Body>())) inv_Ia{}, inv_Ib{};  // world, at the solve
+        InvInertia<Body> inv_Ia{}, inv_Ib{};  // world, at the solve
         std::array<Vec, 2> t = {Vec::Zero(), Vec::Zero()};
         int nt = 0;
         double mn = 0.0;

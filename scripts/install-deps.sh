@@ -21,6 +21,8 @@ packages=(
   libbox2d-dev                      # Box2D 2.4.1: the 2D reference of `collide compare`
   libglfw3-dev                      # collide gui: its window (optional for the build)
   xvfb xauth                        # collide gui's tests: a screen without a display (xvfb-run)
+  clang libclang-rt-14-dev          # scripts/test-sanitize.sh: clang 14, its sanitizers and libFuzzer
+  llvm-14                           # llvm-symbolizer: file and line in sanitizer reports
 )
 
 missing=()

@@ -1,0 +1,35 @@
+// The fuzzers' entry points (fuzz/*_fuzz.cpp), shared with the regression test that replays
+// tests/fuzz-regressions/ in the normal build (tests/fuzz/regressions_test.cpp).
+//
+// Each takes the bytes of one input file. Bad input is expected and must be refused with an
+// InputError, which the entry point swallows; anything else escapes: another exception (the
+// fuzzer aborts on it, the regression test fails), or a crash, a hang or undefined behaviour
+// (the sanitizers and libFuzzer's -timeout report those).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace collide::fuzz {
+
+// A scenario file: parse_scene_text with its [view] table.
+void scene(const std::string& text);
+// A `collide solve` file: parse_solve_text, solve, and the three reports.
+void solve(const std::string& text);
+// A lesson file: parse_lesson_text (its scene, questions, variants, [penalty]).
+void lesson(const std::string& text);
+// A scenario parsed and then stepped like `collide step`, cut short so one input stays well
+// under a second: at most kMaxBodies bodies, kMaxOutputSteps output instants and kMaxEvents
+// collisions. Besides an InputError, the world may refuse a run with std::runtime_error (a
+// stuck simulation: step.h); every state it reports must be finite.
+inline constexpr std::size_t kMaxBodies = 8;
+inline constexpr std::size_t kMaxOutputSteps = 40;
+inline constexpr std::size_t kMaxEvents = 2000;
+void step(const std::string& text);
+
+// The entry points by name ("scene", "solve", "lesson", "step"); nullptr for another name.
+using EntryPoint = void (*)(const std::string&);
+EntryPoint entry_point(const std::string& name);
+
+}  // namespace collide::fuzz

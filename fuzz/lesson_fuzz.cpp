@@ -1,0 +1,11 @@
+// libFuzzer target: the lesson entry point (fuzz/entry.h). Run it with scripts/fuzz.sh.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "fuzz/entry.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    collide::fuzz::lesson(std::string(reinterpret_cast<const char*>(data), size));
+    return 0;
+}
