@@ -38,9 +38,7 @@ const char* const kCommand = "";  // option errors name the option
 bool read_gui_input(const GuiOptions& o, std::ostream& err, int* frame_w, int* frame_h,
                     std::vector<GuiAction>* script) {
     try {
-        if (!parse_render_size(o.size, frame_w, frame_h))
-            throw InputError(kCommand, {}, "--size",
-                             "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" + o.size + "'");
+        read_render_size(o.size, frame_w, frame_h);
         if (!(o.fps > 0 && o.fps <= 1000))
             throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 1000]");
         if (!o.script.empty()) *script = parse_gui_script(o.script);

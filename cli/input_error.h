@@ -51,7 +51,7 @@ public:
         std::string s = file;
         if (pos.line > 0) s += ":" + std::to_string(pos.line);
         if (pos.line > 0 && pos.column > 0) s += ":" + std::to_string(pos.column);
-        s += ": ";
+        if (!s.empty()) s += ": ";  // no file: a command-line option, named by its key
         if (!key.empty()) s += key + ": ";
         return one_line(s + message);
     }

@@ -353,8 +353,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
     } catch (const InputError& e) {
         std::error_code ec;
         if (!tmp.empty()) fs::remove_all(tmp, ec);
-        if (e.file().empty()) err << "collide: error: " << one_line(e.key() + ": " + e.message()) << "\n";
-        else err << "collide: error: " << e.what() << "\n";
+        err << "collide: error: " << e.what() << "\n";
         return kBadInput;
     } catch (const std::exception& e) {
         std::error_code ec;

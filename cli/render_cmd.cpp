@@ -630,15 +630,18 @@ bool parse_render_size(const std::string& text, int* width, int* height) {
     return true;
 }
 
+void read_render_size(const std::string& text, int* width, int* height) {
+    if (!parse_render_size(text, width, height))
+        throw InputError(kCommand, {}, "--size",
+                         "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" + text + "'");
+}
+
 RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
     const SignalGuard signals;
     RenderReport report;
     // Options first: nothing is written when one is wrong.
     int width = 0, height = 0;
-    if (!parse_render_size(o.size, &width, &height))
-        throw InputError(kCommand, {}, "--size",
-                         "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" +
-                             o.size + "'");
+    read_render_size(o.size, &width, &height);
     if (!(o.fps > 0 && o.fps <= 100000))
         throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
     quality_of(o.quality);
@@ -762,8 +765,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
             << "/frames (no partial file is left)\n";
         return 130;
     } catch (const InputError& e) {
-        if (e.file().empty()) err << "collide: error: " << one_line(e.key() + ": " + e.message()) << "\n";
-        else err << "collide: error: " << e.what() << "\n";
+        err << "collide: error: " << e.what() << "\n";
         return kBadInput;
     } catch (const std::exception& e) {
         err << "collide: " << e.what() << "\n";

@@ -104,5 +104,7 @@ std::optional<render::Image> first_collision_figure(render::GlContext& context, 
 // "1280x720" or a preset (480p: 854x480, 720p: 1280x720, 1080p: 1920x1080, 1440p: 2560x1440);
 // false for anything else, or sizes outside 16..8192.
 bool parse_render_size(const std::string& text, int* width, int* height);
+// The same for the --size option: throws InputError naming --size and what it accepts.
+void read_render_size(const std::string& text, int* width, int* height);
 
 }  // namespace collide
