@@ -16,6 +16,7 @@ struct Body1 {
     double position = 0.0;   // m, centre of mass on the line
     double v = 0.0;          // m/s
     double inv_mass() const { return is_static ? 0.0 : 1.0 / mass; }
+    bool state_finite() const { return std::isfinite(position) && std::isfinite(v); }
 };
 
 struct Body2 {
@@ -28,6 +29,10 @@ struct Body2 {
     double w = 0.0;                // rad/s, counter-clockwise positive
     double inv_mass() const { return is_static ? 0.0 : 1.0 / mass; }
     double inv_inertia() const { return is_static ? 0.0 : 1.0 / inertia; }
+    // Position, angle and velocities all finite (no NaN or infinity).
+    bool state_finite() const {
+        return position.allFinite() && v.allFinite() && std::isfinite(angle) && std::isfinite(w);
+    }
 };
 
 struct Body3 {
@@ -40,6 +45,10 @@ struct Body3 {
     Vec3 w = Vec3::Zero();               // rad/s, world frame
 
     double inv_mass() const { return is_static ? 0.0 : 1.0 / mass; }
+    // Position, orientation and velocities all finite (no NaN or infinity).
+    bool state_finite() const {
+        return position.allFinite() && v.allFinite() && orientation.coeffs().allFinite() && w.allFinite();
+    }
     Mat3 rotation() const { return orientation.toRotationMatrix(); }
     // World inertia I = R Ibody R^T: recomputed from the orientation, never integrated.
     Mat3 inertia_world() const;

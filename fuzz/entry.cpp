@@ -18,15 +18,6 @@ namespace {
 
 constexpr const char* kName = "fuzz.toml";
 
-bool finite(const Body1& b) { return std::isfinite(b.position) && std::isfinite(b.v); }
-bool finite(const Body2& b) {
-    return b.position.allFinite() && b.v.allFinite() && std::isfinite(b.angle) && std::isfinite(b.w);
-}
-bool finite(const Body3& b) {
-    return b.position.allFinite() && b.v.allFinite() && b.orientation.coeffs().allFinite() &&
-           b.w.allFinite();
-}
-
 template <int D>
 void run(const Scene& scene) {
     typename Stepping<D>::World world(scene);
@@ -36,7 +27,7 @@ void run(const Scene& scene) {
     for (std::size_t k = 0; k < n && events.size() <= kMaxEvents; ++k) {
         world.advance_to(times[k], &events);
         for (const auto& b : world.bodies())
-            if (!finite(b))
+            if (!b.state_finite())
                 throw std::logic_error("a body's state is not finite at t = " +
                                        std::to_string(times[k]) + " s");
         // What `collide step --json` prints of it (formatting reads every field).

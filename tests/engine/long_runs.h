@@ -63,13 +63,6 @@ inline Scene scene_named(const std::string& name) {
 // the gases (10^6 steps: 1000 s, about 10^5 to 10^6 collisions).
 inline double default_dt(const std::string& name) { return name.rfind("gas", 0) == 0 ? 1e-3 : 1e-2; }
 
-inline bool finite_body(const Body2& b) {
-    return b.position.allFinite() && b.v.allFinite() && std::isfinite(b.angle) && std::isfinite(b.w);
-}
-inline bool finite_body(const Body3& b) {
-    return b.position.allFinite() && b.v.allFinite() && b.orientation.coeffs().allFinite() && b.w.allFinite();
-}
-
 template <int D>
 LongRun run(const std::string& name, const Scene& scene, long steps, double dt) {
     LongRun r;
@@ -89,7 +82,7 @@ LongRun run(const std::string& name, const Scene& scene, long steps, double dt) 
         world.advance_to(static_cast<double>(i) * dt, &events);
         r.events += static_cast<long>(events.size());
         for (const auto& b : world.bodies())
-            if (!finite_body(b)) r.finite = false;
+            if (!b.state_finite()) r.finite = false;
         if (!r.finite) break;
         const auto tot = totals(world.bodies());
         const double drift = (tot.kinetic_energy - r.energy0) / r.energy0;
