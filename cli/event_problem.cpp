@@ -38,9 +38,6 @@ SolveBody solve_body(const Scene& scene, std::size_t i, const CollisionInstant::
     return out;
 }
 
-Vec3 lift(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
-Vec3 lift(double w) { return Vec3(0.0, 0.0, w); }
-Vec3 lift(const Vec3& v) { return v; }
 
 void place(CollisionInstant::Side* side, const Body2& b) {
     side->x = lift(b.position);
@@ -62,13 +59,13 @@ CollisionInstant instant(const Event<D>& e, const std::vector<Body>& bodies) {
     c.normal = lift(e.normal);
     c.impulse = lift(e.impulse);
     c.before_a.v = lift(e.before_a.v);
-    c.before_a.w = lift(e.before_a.w);
+    c.before_a.w = lift_spin(e.before_a.w);
     c.before_b.v = lift(e.before_b.v);
-    c.before_b.w = lift(e.before_b.w);
+    c.before_b.w = lift_spin(e.before_b.w);
     c.va_after = lift(e.after_a.v);
-    c.wa_after = lift(e.after_a.w);
+    c.wa_after = lift_spin(e.after_a.w);
     c.vb_after = lift(e.after_b.v);
-    c.wb_after = lift(e.after_b.w);
+    c.wb_after = lift_spin(e.after_b.w);
     place(&c.before_a, bodies[e.a]);
     place(&c.before_b, bodies[e.b]);
     return c;

@@ -374,9 +374,8 @@ std::pair<Vec3, Vec3> pair_momenta(const Scene& scene, const CollisionInstant& c
     return {t.momentum, t.angular_momentum};
 }
 
-Vec3 lift(double x) { return Vec3(x, 0, 0); }
-Vec3 lift(const Vec2& v) { return Vec3(v.x(), v.y(), 0); }
-Vec3 lift(const Vec3& v) { return v; }
+using collide::lift;
+Vec3 lift(double x) { return lift_line(x); }  // a 1D value along x
 Vec3 spin_of(const Body1&) { return Vec3::Zero(); }
 Vec3 spin_of(const Body2& b) { return Vec3(0, 0, b.w); }
 Vec3 spin_of(const Body3& b) { return b.w; }

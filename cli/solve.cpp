@@ -10,8 +10,9 @@ namespace collide {
 
 namespace {
 
-Vec3 embed(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
-Vec3 embed(double w) { return Vec3(0.0, 0.0, w); }
+// engine/math.h's lift under one name for the templates below, whose doubles are 2D spins.
+Vec3 embed(const Vec2& v) { return lift(v); }
+Vec3 embed(double w) { return lift_spin(w); }
 Vec3 embed(const Vec3& v) { return v; }
 Mat3 embed(const Mat2& m) {
     Mat3 out = Mat3::Zero();

@@ -21,6 +21,17 @@ using Quat = Eigen::Quaterniond;
 using Vec6 = Eigen::Matrix<double, 6, 1>;
 using Mat6 = Eigen::Matrix<double, 6, 6>;
 
+constexpr double kPi = 3.14159265358979323846;
+
+// One lift of lower dimensions into 3D, used wherever 1D and 2D results are shown or checked
+// in 3D form: a 2D vector lies in the xy plane, a 2D spin (counter-clockwise +) points
+// along +z, a 1D value lies along x. 3D values pass through.
+inline Vec3 lift(const Vec2& v) { return Vec3(v.x(), v.y(), 0.0); }
+inline Vec3 lift(const Vec3& v) { return v; }
+inline Vec3 lift_spin(double w) { return Vec3(0.0, 0.0, w); }
+inline Vec3 lift_spin(const Vec3& w) { return w; }
+inline Vec3 lift_line(double x) { return Vec3(x, 0.0, 0.0); }
+
 // Cross-product matrix [r]x, so that [r]x a = r x a.
 inline Mat3 skew(const Vec3& r) {
     Mat3 m;

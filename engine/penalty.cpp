@@ -6,11 +6,11 @@
 #include <stdexcept>
 #include <string>
 
+#include "engine/math.h"
+
 namespace collide {
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 void require(bool ok, const std::string& what) {
     if (!ok) throw std::invalid_argument("penalty contact: " + what);

@@ -358,7 +358,7 @@ TEST(Box2DWorld, RefusesWhatBox2DCannotRepresent) {
     Scene s = sc::empty_scene(2);
     SceneBody nine = sc::disc("nine", 0.1, 1.0, Vec2::Zero());
     std::vector<Vec2> v;
-    for (int k = 0; k < 9; ++k) v.emplace_back(std::cos(2 * sc::kPi * k / 9), std::sin(2 * sc::kPi * k / 9));
+    for (int k = 0; k < 9; ++k) v.emplace_back(std::cos(2 * kPi * k / 9), std::sin(2 * kPi * k / 9));
     std::string error;
     ASSERT_TRUE(make_polygon(v, &nine.shape2.polygon, &error)) << error;
     nine.shape2.kind = Shape2::Kind::polygon;

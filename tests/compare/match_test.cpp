@@ -113,7 +113,7 @@ TEST(Match, NamesTheRestitutionThreshold) {
 // Normals 3 degrees apart, the same state before: "normal off by 3 degrees".
 TEST(Match, NamesANormalOff) {
     const Scene s = two_discs_and_ground();
-    const double angle = 3.0 * sc::kPi / 180.0;
+    const double angle = 3.0 * kPi / 180.0;
     Box2DEvent b = theirs(0, 1, 0.1, 0.95);
     b.normal = Vec2(std::sin(angle), std::cos(angle));
     b.after_b.v = Vec2(0.1, 0.95);

@@ -9,13 +9,13 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "engine/math.h"
 #include "engine/penalty.h"
 
 namespace {
 
 using namespace collide;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRtol = 1e-9;  // RK4 with 2000 steps per contact: (pi/2000)^4 ~ 6e-12 per unit
 
 struct Oscillator {

@@ -29,8 +29,7 @@ using collide::Mat3;
 using collide::Quat;
 using collide::Vec2;
 using collide::Vec3;
-
-constexpr double kPi = 3.14159265358979323846;
+using collide::kPi;
 
 class Random {
 public:

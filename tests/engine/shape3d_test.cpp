@@ -12,7 +12,6 @@ namespace collide {
 namespace {
 
 constexpr double kTol = 1e-12;
-constexpr double kPi = 3.14159265358979323846;
 
 Shape3 sphere(double r) {
     Shape3 s;

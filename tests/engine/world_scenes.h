@@ -20,8 +20,6 @@
 
 namespace collide::scenes {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // ---- Scenes and bodies -------------------------------------------------------------------
 
 inline Scene empty_scene(int dimension, Policy policy = Policy::sequential, double e = 1.0,
