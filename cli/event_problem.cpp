@@ -39,18 +39,18 @@ SolveBody solve_body(const Scene& scene, std::size_t i, const CollisionInstant::
 }
 
 
-void place(CollisionInstant::Side* side, const Body2& b) {
-    side->x = lift(b.position);
-    side->angle = b.angle;
-    side->q = Quat(Eigen::AngleAxisd(b.angle, Vec3::UnitZ()));
+void place(CollisionInstant::Side* side, const Pose2& p) {
+    side->x = lift(p.x);
+    side->angle = p.angle;
+    side->q = Quat(Eigen::AngleAxisd(p.angle, Vec3::UnitZ()));
 }
-void place(CollisionInstant::Side* side, const Body3& b) {
-    side->x = b.position;
-    side->q = b.orientation;
+void place(CollisionInstant::Side* side, const Pose3& p) {
+    side->x = p.x;
+    side->q = p.q;
 }
 
-template <int D, class Body>
-CollisionInstant instant(const Event<D>& e, const std::vector<Body>& bodies) {
+template <int D>
+CollisionInstant instant(const Event<D>& e) {
     CollisionInstant c;
     c.t = e.t;
     c.a = e.a;
@@ -66,35 +66,31 @@ CollisionInstant instant(const Event<D>& e, const std::vector<Body>& bodies) {
     c.wa_after = lift_spin(e.after_a.w);
     c.vb_after = lift(e.after_b.v);
     c.wb_after = lift_spin(e.after_b.w);
-    place(&c.before_a, bodies[e.a]);
-    place(&c.before_b, bodies[e.b]);
+    place(&c.before_a, e.pose_a);
+    place(&c.before_b, e.pose_b);
     return c;
 }
 
 }  // namespace
 
-CollisionInstant collision_instant(const Event1& e, const std::vector<Body1>& bodies) {
+CollisionInstant collision_instant(const Event1& e) {
     CollisionInstant c;
     c.t = e.t;
     c.a = e.a;
     c.b = e.b;
-    c.point = Vec3(e.point, 0.0, 0.0);
+    c.point = lift_line(e.point);
     c.normal = Vec3::UnitX();  // a is the left block
-    c.impulse = Vec3(e.impulse, 0.0, 0.0);
-    c.before_a.v = Vec3(e.va_before, 0.0, 0.0);
-    c.before_b.v = Vec3(e.vb_before, 0.0, 0.0);
-    c.va_after = Vec3(e.va_after, 0.0, 0.0);
-    c.vb_after = Vec3(e.vb_after, 0.0, 0.0);
-    c.before_a.x = Vec3(bodies[e.a].position, 0.0, 0.0);
-    c.before_b.x = Vec3(bodies[e.b].position, 0.0, 0.0);
+    c.impulse = lift_line(e.impulse);
+    c.before_a.v = lift_line(e.va_before);
+    c.before_b.v = lift_line(e.vb_before);
+    c.va_after = lift_line(e.va_after);
+    c.vb_after = lift_line(e.vb_after);
+    c.before_a.x = lift_line(e.xa);
+    c.before_b.x = lift_line(e.xb);
     return c;
 }
-CollisionInstant collision_instant(const Event2& e, const std::vector<Body2>& bodies) {
-    return instant(e, bodies);
-}
-CollisionInstant collision_instant(const Event3& e, const std::vector<Body3>& bodies) {
-    return instant(e, bodies);
-}
+CollisionInstant collision_instant(const Event2& e) { return instant(e); }
+CollisionInstant collision_instant(const Event3& e) { return instant(e); }
 
 double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after) {
     // The collision problem's bodies carry the scene's mass and inertia and the instant's

@@ -36,12 +36,11 @@ struct CollisionInstant {
 // after the impulse, by the engine's formula (engine/diagnostics.h).
 double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after);
 
-// An event of a world with its bodies where they touch: indices, point, normal, impulse and
-// velocities before from the event; positions and orientations from `bodies`, the world's
-// bodies at the event's instant.
-CollisionInstant collision_instant(const Event1& e, const std::vector<Body1>& bodies);
-CollisionInstant collision_instant(const Event2& e, const std::vector<Body2>& bodies);
-CollisionInstant collision_instant(const Event3& e, const std::vector<Body3>& bodies);
+// A collision event as an instant: indices, point, normal, impulse, velocities and the
+// bodies' poses, all from the event.
+CollisionInstant collision_instant(const Event1& e);
+CollisionInstant collision_instant(const Event2& e);
+CollisionInstant collision_instant(const Event3& e);
 
 // The problem: the bodies' masses and inertia from the scene, their state from `c`, the
 // pair's restitution and friction (Scene::pair_restitution / pair_friction), the scene's

@@ -113,7 +113,7 @@ public:
         ro.size = options_.size;
         ro.fps = options_.fps;
         ro.view = options_.view;
-        const std::optional<render::FormulaText> formula = first_collision_formula(model_->scene(), options_.fps);
+        const std::optional<render::FormulaText> formula = first_collision_formula(model_->scene(), model_->run());
         settings_ = frame_settings(ro, model_->scene(), view_, formula ? &*formula : nullptr);
         settings_.header = toggles_.header;
         settings_.table = toggles_.table;
@@ -175,7 +175,7 @@ public:
     // False when the run has no collision.
     bool save_figure(const std::string& path) {
         const std::optional<render::Image> figure =
-            first_collision_figure(window_, model_->scene(), view_, settings_, options_.fps);
+            first_collision_figure(window_, model_->scene(), view_, settings_, model_->run());
         window_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!figure) return false;
         render::write_png_atomic(path, figure->width, figure->height, figure->rgba.data());

@@ -8,7 +8,7 @@
 
 #include "cli/input_error.h"
 #include "cli/scene_file.h"
-#include "cli/simulate.h"
+#include "cli/scene_run.h"
 #include "cli/step.h"
 
 namespace collide {
@@ -17,20 +17,6 @@ namespace {
 
 // The trail behind each body: as `collide render` draws it.
 double trail_span(const Scene& s) { return std::min(1.0, 0.3 * s.duration); }
-
-struct Frames {
-    std::vector<render::FrameState> frames;
-    std::vector<render::ImpactMark> impacts;
-};
-
-template <int D>
-Frames run_frames(const Scene& scene, const std::vector<double>& times) {
-    Frames out;
-    simulate_each<D>(
-        scene, times, [&](const auto& event) { out.impacts.push_back(render::impact_mark(scene, event)); },
-        [&](double t, const auto& bodies) { out.frames.push_back(render::frame_state(scene, t, bodies)); });
-    return out;
-}
 
 }  // namespace
 
@@ -44,12 +30,9 @@ void GuiModel::rerun() {
     timing.output_dt = 1.0 / fps_;
     const std::vector<double> times = output_times(timing);
     try {
-        Frames f = scene_.dimension == 1   ? run_frames<1>(scene_, times)
-                   : scene_.dimension == 2 ? run_frames<2>(scene_, times)
-                                           : run_frames<3>(scene_, times);
-        const double t = frames_.empty() ? 0.0 : time();
-        frames_ = std::move(f.frames);
-        impacts_ = std::move(f.impacts);
+        SceneRun run = run_scene(scene_, times);
+        const double t = run_.frames.empty() ? 0.0 : time();
+        run_ = std::move(run);
         error_.clear();
         seek_time(t);
     } catch (const std::exception& e) {
@@ -128,14 +111,14 @@ void GuiModel::reset() {
 }
 
 void GuiModel::seek_index(std::size_t k) {
-    index_ = std::min(k, frames_.size() - 1);
-    clock_ = frames_[index_].t;
+    index_ = std::min(k, run_.frames.size() - 1);
+    clock_ = run_.frames[index_].t;
 }
 
 void GuiModel::seek_time(double t) {
-    const auto it = std::upper_bound(frames_.begin(), frames_.end(), t + 1e-12,
+    const auto it = std::upper_bound(run_.frames.begin(), run_.frames.end(), t + 1e-12,
                                      [](double x, const render::FrameState& f) { return x < f.t; });
-    seek_index(it == frames_.begin() ? 0 : static_cast<std::size_t>(it - frames_.begin()) - 1);
+    seek_index(it == run_.frames.begin() ? 0 : static_cast<std::size_t>(it - run_.frames.begin()) - 1);
 }
 
 void GuiModel::step(long n) {
@@ -145,13 +128,13 @@ void GuiModel::step(long n) {
 
 bool GuiModel::next_collision() {
     const double now = time();
-    for (const render::ImpactMark& m : impacts_)
+    for (const render::ImpactMark& m : run_.impacts)
         if (m.t > now) {
             // The first frame at or after it: the frame that shows it.
-            const auto it = std::lower_bound(frames_.begin(), frames_.end(), m.t,
+            const auto it = std::lower_bound(run_.frames.begin(), run_.frames.end(), m.t,
                                              [](const render::FrameState& f, double x) { return f.t < x; });
-            if (it == frames_.end()) return false;
-            seek_index(static_cast<std::size_t>(it - frames_.begin()));
+            if (it == run_.frames.end()) return false;
+            seek_index(static_cast<std::size_t>(it - run_.frames.begin()));
             return true;
         }
     return false;
@@ -160,15 +143,15 @@ bool GuiModel::next_collision() {
 void GuiModel::advance(double wall_seconds) {
     if (!playing) return;
     clock_ += wall_seconds * speed;
-    while (index_ + 1 < frames_.size() && frames_[index_ + 1].t <= clock_) ++index_;
-    if (index_ + 1 == frames_.size()) playing = false;
+    while (index_ + 1 < run_.frames.size() && run_.frames[index_ + 1].t <= clock_) ++index_;
+    if (index_ + 1 == run_.frames.size()) playing = false;
 }
 
 render::FrameState GuiModel::display_frame() const {
-    render::FrameState f = frames_[index_];
-    render::add_trails(frames_, trail_span(scene_), &f);
-    const double from = index_ == 0 ? -1.0 : frames_[index_ - 1].t;
-    for (const render::ImpactMark& m : impacts_)
+    render::FrameState f = run_.frames[index_];
+    render::add_trails(run_.frames, trail_span(scene_), &f);
+    const double from = index_ == 0 ? -1.0 : run_.frames[index_ - 1].t;
+    for (const render::ImpactMark& m : run_.impacts)
         if (m.t > from && m.t <= f.t) f.impacts.push_back(m);
     return f;
 }

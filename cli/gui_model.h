@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/scene_run.h"
 #include "engine/scene.h"
 #include "render/diagram_view.h"
 #include "render/frame_state.h"
@@ -44,12 +45,13 @@ public:
 
     // The run: one frame per 1/fps s from 0 to the duration, and every collision.
     double fps() const { return fps_; }
-    const std::vector<render::FrameState>& frames() const { return frames_; }
-    const std::vector<render::ImpactMark>& impacts() const { return impacts_; }
+    const std::vector<render::FrameState>& frames() const { return run_.frames; }
+    const std::vector<render::ImpactMark>& impacts() const { return run_.impacts; }
+    const SceneRun& run() const { return run_; }  // the one run the frames and figure read
 
     // Playback: the frame shown.
     std::size_t index() const { return index_; }
-    double time() const { return frames_[index_].t; }
+    double time() const { return run_.frames[index_].t; }
     void seek_index(std::size_t k);
     void seek_time(double t);   // the last frame at or before t
     void step(long frames);     // forward (or back, when negative), stopping at the ends
@@ -68,8 +70,7 @@ private:
 
     Scene original_, scene_;
     double fps_;
-    std::vector<render::FrameState> frames_;
-    std::vector<render::ImpactMark> impacts_;
+    SceneRun run_;
     std::size_t index_ = 0;
     double clock_ = 0.0;  // simulated time while playing (between frames)
     std::string error_;

@@ -7,6 +7,9 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <stdexcept>
+#include <type_traits>
+#include <variant>
 #include <utility>
 #include <ostream>
 
@@ -16,8 +19,7 @@
 #include "cli/notation.h"
 #include "cli/toml_reader.h"
 #include "engine/diagnostics.h"
-#include "engine/world.h"
-#include "engine/world1d.h"
+#include "engine/record.h"
 
 #ifndef COLLIDE_LESSONS_DIR
 #define COLLIDE_LESSONS_DIR "lessons"
@@ -333,17 +335,6 @@ Scene load_scenario(const std::string& arg, SceneView* view, std::optional<Lesso
 
 namespace {
 
-template <int D>
-struct Stepper {
-    using World = collide::World<D>;
-    using Event = collide::Event<D>;
-};
-template <>
-struct Stepper<1> {
-    using World = World1;
-    using Event = Event1;
-};
-
 // The two bodies' total linear momentum and angular momentum about `about` (a fixed point),
 // with the velocities before or after the impulse; static bodies left out (diagnostics.h).
 std::pair<Vec3, Vec3> pair_momenta(const Scene& scene, const CollisionInstant& c, bool after, const Vec3& about) {
@@ -381,27 +372,15 @@ Vec3 spin_of(const Body2& b) { return Vec3(0, 0, b.w); }
 Vec3 spin_of(const Body3& b) { return b.w; }
 
 template <int D>
-std::vector<LessonAnswer> answer(const Lesson& L) {
-    using World = typename Stepper<D>::World;
-    using Event = typename Stepper<D>::Event;
+std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run) {
     const Scene& scene = L.scene;
-    World world(scene);
-    std::vector<Event> events;
-    world.advance_to(scene.duration, &events);
-
-    // Event k with the bodies where they touch (a fresh world run up to its instant, once per
-    // event however many questions ask about it).
+    const auto& events = run.events;
+    const auto& final_bodies = run.states.back();  // at the run's last sampled instant
+    // Event k with the bodies where they touch (once per event however many questions ask).
     std::map<std::size_t, CollisionInstant> instants;
     const auto instant = [&](std::size_t k) -> const CollisionInstant& {
         if (auto it = instants.find(k); it != instants.end()) return it->second;
-        World w(scene);
-        std::vector<Event> upto;
-        w.advance_to(events[k].t, &upto);
-        if (upto.size() <= k) {
-            World probe = w;
-            probe.advance_to(std::min(scene.duration, events[k].t + 1e-9 * std::max(1.0, events[k].t)), &upto);
-        }
-        return instants.emplace(k, collision_instant(upto.at(k), w.bodies())).first->second;
+        return instants.emplace(k, collision_instant(events[k])).first->second;
     };
     const auto body_index = [&](const std::string& name) {
         for (std::size_t i = 0; i < scene.bodies.size(); ++i)
@@ -485,11 +464,11 @@ std::vector<LessonAnswer> answer(const Lesson& L) {
             if (events.empty()) throw InputError(L.file, {}, where + ".quantity", "the run has no collision");
             a.value = events.back().t;
         } else if (q.quantity == "final_velocity") {
-            set_vector(lift(world.bodies()[body].v));
+            set_vector(lift(final_bodies[body].v));
         } else if (q.quantity == "final_spin") {
-            set_vector(spin_of(world.bodies()[body]));
+            set_vector(spin_of(final_bodies[body]));
         } else if (q.quantity == "final_kinetic_energy") {
-            a.value = totals(world.bodies()).kinetic_energy;
+            a.value = totals(final_bodies).kinetic_energy;
         } else if (info.penalty) {
             if (!study) study = penalty_study(L);
             const PenaltyRun& r = study->matched;
@@ -561,12 +540,14 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
     out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";
 }
 
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run) {
+    if (lesson.scene.dimension != static_cast<int>(run.index()) + 1)
+        throw std::invalid_argument("answer_questions: the recording is of another dimension");
+    return std::visit([&](const auto& r) { return answer<std::decay_t<decltype(r)>::dimension>(lesson, r); }, run);
+}
+
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson) {
-    switch (lesson.scene.dimension) {
-    case 1: return answer<1>(lesson);
-    case 2: return answer<2>(lesson);
-    default: return answer<3>(lesson);
-    }
+    return answer_questions(lesson, record_any(lesson.scene, {lesson.scene.duration}));
 }
 
 }  // namespace collide

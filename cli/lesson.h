@@ -11,6 +11,7 @@
 #include "cli/event_problem.h"
 #include "cli/input_error.h"
 #include "cli/scene_file.h"
+#include "engine/record.h"
 
 namespace collide {
 
@@ -109,8 +110,11 @@ struct LessonAnswer {
     std::string unit;         // "N s", "m/s", ...
     std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"
 };
-// Runs the lesson's scene once and answers every question. Throws InputError (naming the
-// question) when one asks for an event the run does not have or a body it lacks.
+// Answers every question from `run`, a recording of the lesson's scene whose last sample is
+// at its duration (the run's end). Throws InputError (naming the question) when one asks for
+// an event the run does not have or a body it lacks.
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run);
+// The same from a run of the lesson's scene sampled at its end only.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
 
 // `collide lessons`: a table (order, id, dimension, duration, title), or with json one object

@@ -21,7 +21,7 @@
 #include "cli/input_error.h"
 #include "cli/lesson.h"
 #include "cli/lesson_penalty.h"
-#include "cli/simulate.h"
+#include "cli/scene_run.h"
 #include "cli/notation.h"
 #include "cli/scene_file.h"
 #include "cli/solve.h"
@@ -92,192 +92,10 @@ private:
     struct sigaction old_int_ {}, old_term_ {};
 };
 
-// ---- The run: states at every frame, the events ----
-
-struct Run {
-    std::vector<FrameState> frames;
-    std::vector<ImpactMark> impacts;  // every collision, in time order
-    std::string csv;                  // data.csv
-    std::string json_frames;          // state_json lines joined by ",\n"
-    std::string json_events;
-    std::string events_csv;
-};
-
 std::string num(double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.10g", x);
     return buf;
-}
-
-// A CSV field as RFC 4180 writes it: quoted, with its quotes doubled, when it holds a comma or
-// a quote (a body may be named "cart, left"); as it is otherwise.
-std::string csv_field(const std::string& text) {
-    if (text.find_first_of(",\"") == std::string::npos) return text;
-    std::string out = "\"";
-    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return out + "\"";
-}
-
-// data.csv: t, then per moving body its position, velocity, orientation and spin, then the
-// kinetic energy and momentum of the moving bodies.
-std::string csv_header(const Scene& s) {
-    const int d = s.dimension;
-    const char* axes[3] = {"x", "y", "z"};
-    std::string h = "t";
-    for (const SceneBody& b : s.bodies) {
-        if (b.is_static()) continue;
-        const auto col = [&](const std::string& what) { h += "," + csv_field(b.name + "." + what); };
-        for (int k = 0; k < d; ++k) col(std::string("x") + (d > 1 ? std::string(".") + axes[k] : ""));
-        for (int k = 0; k < d; ++k) col(std::string("v") + (d > 1 ? std::string(".") + axes[k] : ""));
-        if (d == 2) {
-            col("angle");
-            col("w");
-        }
-        if (d == 3) {
-            for (const char* q : {"q.w", "q.x", "q.y", "q.z"}) col(q);
-            for (int k = 0; k < 3; ++k) col(std::string("w.") + axes[k]);
-        }
-    }
-    h += ",kinetic_energy";
-    for (int k = 0; k < d; ++k) h += std::string(",momentum") + (d > 1 ? std::string(".") + axes[k] : "");
-    return h + "\n";
-}
-
-std::string csv_row(const Scene& s, const FrameState& f) {
-    const int d = s.dimension;
-    std::string r = num(f.t);
-    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
-        const SceneBody& b = s.bodies[i];
-        if (b.is_static()) continue;
-        const render::BodyState& x = f.bodies[i];
-        const Vec3 pos = d == 1 ? Vec3(x.x.x(), 0, 0) : x.x;  // 1D: the drawn height is not data
-        for (int k = 0; k < d; ++k) r += "," + num(pos[k]);
-        for (int k = 0; k < d; ++k) r += "," + num(x.v[k]);
-        if (d == 2) r += "," + num(x.angle) + "," + num(x.w.z());
-        if (d == 3) {
-            r += "," + num(x.q.w()) + "," + num(x.q.x()) + "," + num(x.q.y()) + "," + num(x.q.z());
-            for (int k = 0; k < 3; ++k) r += "," + num(x.w[k]);
-        }
-    }
-    const render::FrameTotals sums = render::frame_totals(s, f);
-    r += "," + num(sums.kinetic);
-    for (int k = 0; k < d; ++k) r += "," + num(sums.momentum[k]);
-    return r + "\n";
-}
-
-std::string events_csv_header(int d) {
-    if (d == 1) return "t,a,b,point,impulse,a.v.before,b.v.before,a.v.after,b.v.after\n";
-    std::string h = "t,a,b";
-    const char* axes[3] = {"x", "y", "z"};
-    for (const char* what : {"point", "normal", "impulse"})
-        for (int k = 0; k < d; ++k) h += std::string(",") + what + "." + axes[k];
-    return h + "\n";
-}
-
-std::string events_csv_row(const Scene& s, const Event1& e) {
-    return num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name) + "," + num(e.point) +
-           "," + num(e.impulse) + "," + num(e.va_before) + "," + num(e.vb_before) + "," +
-           num(e.va_after) + "," + num(e.vb_after) + "\n";
-}
-template <int D>
-std::string events_csv_row(const Scene& s, const Event<D>& e) {
-    std::string r = num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name);
-    for (const auto* v : {&e.point, &e.normal, &e.impulse})
-        for (int k = 0; k < D; ++k) r += "," + num((*v)[k]);
-    return r + "\n";
-}
-
-template <int D>
-Run simulate(const Scene& scene, const std::vector<double>& times) {
-    Run run;
-    run.csv = csv_header(scene);
-    run.events_csv = events_csv_header(D);
-    simulate_each<D>(
-        scene, times,
-        [&](const auto& event) {
-            run.impacts.push_back(render::impact_mark(scene, event));
-            if (!run.json_events.empty()) run.json_events += ",\n";
-            run.json_events += event_json(scene, event);
-            run.events_csv += events_csv_row(scene, event);
-        },
-        [&](double t, const auto& bodies) {
-            FrameState f = render::frame_state(scene, t, bodies);
-            run.csv += csv_row(scene, f);
-            if (!run.json_frames.empty()) run.json_frames += ",\n";
-            run.json_frames += state_json(scene, t, bodies);
-            run.frames.push_back(std::move(f));
-        });
-    return run;
-}
-
-// The three moments of the first collision: before, at, after.
-struct Moments {
-    double before = 0, at = 0, after = 0;
-    FrameState states[3];
-    CollisionInstant instant;  // the first collision, the bodies where they touch
-};
-
-template <int D>
-FrameState state_at(typename Stepping<D>::World* world, const Scene& scene, double t,
-                    std::vector<typename Stepping<D>::Event>* events = nullptr) {
-    std::vector<typename Stepping<D>::Event> ignored;
-    world->advance_to(t, events ? events : &ignored);
-    return render::frame_state(scene, t, world->bodies());
-}
-
-template <int D>
-Moments moments_of(const Scene& scene, const Run& run) {
-    const ImpactMark& first = run.impacts.front();
-    const double te = first.t;
-    // A moment long enough for the bodies to move visibly: half the smaller body's size at
-    // their approach speed (estimated from the nearest frames), and short of other collisions
-    // of the same bodies.
-    double speed = 0;
-    for (const FrameState& f : run.frames)
-        if (f.t <= te) speed = (f.bodies[first.b].v - f.bodies[first.a].v).norm();
-    double size = 0;
-    const auto size_of = [&](std::size_t i) {
-        const SceneBody& b = scene.bodies[i];
-        if (scene.dimension == 1) return b.length;
-        if (scene.dimension == 2)
-            return b.shape2.kind == Shape2::Kind::half_plane ? 0.0 : 2.0 * bounding_radius(b.shape2);
-        return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
-    };
-    for (std::size_t i : {first.a, first.b}) {
-        const double s = size_of(i);
-        if (s > 0) size = size == 0 ? s : std::min(size, s);
-    }
-    double dt = speed > 0 && size > 0 ? 0.5 * size / speed : 0.1 * scene.duration;
-    dt = std::min(dt, 0.25 * scene.duration);
-    double next = scene.duration;
-    for (const ImpactMark& im : run.impacts)
-        if (im.t > te + 1e-9 && (im.a == first.a || im.b == first.b || im.a == first.b || im.b == first.a)) {
-            next = im.t;
-            break;
-        }
-    Moments m;
-    m.at = te;
-    m.before = std::max(0.0, te - dt);
-    m.after = std::min({scene.duration, te + dt, te + 0.5 * (next - te)});
-    typename Stepping<D>::World world(scene);
-    // The first event: its bodies where they touch (a collision at t = 0 happens in the first
-    // advance already).
-    std::vector<typename Stepping<D>::Event> events;
-    m.states[0] = state_at<D>(&world, scene, m.before, &events);
-    typename Stepping<D>::World copy = world;  // the same run, continued to the instant
-    m.states[1] = state_at<D>(&copy, scene, m.at, &events);
-    if (events.empty()) {
-        // Advanced in other steps, the world can find the same instant a few ulps later.
-        typename Stepping<D>::World probe = copy;
-        probe.advance_to(std::min(scene.duration, te + 1e-9 * std::max(1.0, te)), &events);
-        if (events.empty()) throw std::logic_error("render: the first collision did not recur");
-    }
-    m.instant = collision_instant(events.front(), copy.bodies());
-    m.states[2] = state_at<D>(&copy, scene, m.after);
-    // Every collision at that instant (Newton's cradle passes the impulse along at once).
-    for (const ImpactMark& im : run.impacts)
-        if (std::abs(im.t - te) <= 1e-12 * std::max(1.0, te)) m.states[1].impacts.push_back(im);
-    return m;
 }
 
 // ---- The worked example of the first collision ----
@@ -378,18 +196,6 @@ std::string variants_markdown(const RenderReport& r) {
     return md.str();
 }
 
-// Returns the seconds spent on the frame sequence (rendering, encoding, writing).
-// The first collision's moments of a scene (a variant), or none when it has no collision.
-std::optional<Moments> first_moments(const Scene& scene, const std::vector<double>& times) {
-    const Run run = scene.dimension == 1   ? simulate<1>(scene, times)
-                    : scene.dimension == 2 ? simulate<2>(scene, times)
-                                           : simulate<3>(scene, times);
-    if (run.impacts.empty()) return std::nullopt;
-    return scene.dimension == 1   ? moments_of<1>(scene, run)
-           : scene.dimension == 2 ? moments_of<2>(scene, run)
-                                  : moments_of<3>(scene, run);
-}
-
 // The before / at / after panels of the first collision, framed on those three moments without
 // the table (figure.png's panels), and the figure of the three with their captions.
 struct Figure {
@@ -472,20 +278,16 @@ render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene
     return settings;
 }
 
-std::optional<render::FormulaText> first_collision_formula(const Scene& scene, double fps) {
-    Scene timing = scene;
-    timing.output_dt = 1.0 / fps;
-    const std::optional<Moments> m = first_moments(scene, output_times(timing));
+std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {
+    const std::optional<Moments> m = first_moments(scene, run);
     if (!m) return std::nullopt;
     return worked_example(scene, m->instant).formula;
 }
 
 std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
                                                     const SceneView& view, const render::RenderSettings& settings,
-                                                    double fps) {
-    Scene timing = scene;
-    timing.output_dt = 1.0 / fps;
-    const std::optional<Moments> m = first_moments(scene, output_times(timing));
+                                                    const SceneRun& run) {
+    const std::optional<Moments> m = first_moments(scene, run);
     if (!m) return std::nullopt;
     return collision_figure(context, scene, view, settings, *m).figure;
 }
@@ -493,7 +295,7 @@ std::optional<render::Image> first_collision_figure(render::GlContext& context, 
 namespace {
 
 double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView& view,
-                     const std::vector<double>& times, Run& run, const Moments* moments,
+                     const std::vector<double>& times, const SceneRun& run, const Moments* moments,
                      const WorkedExample* worked, const Lesson* lesson,
                      std::vector<RenderReport::Variant>* variant_results, std::ostream& err) {
     const Quality q = quality_of(o.quality);
@@ -575,8 +377,9 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
             for (const LessonVariant& v : lesson->variants) scenes.push_back({v.label, &v.scene});
             for (const auto& [label, s] : scenes) {
                 RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
+                // Each variant is run once, sampled as the lesson's own scene.
                 const std::optional<Moments> m = s == &scene ? std::optional<Moments>(*moments)
-                                                             : first_moments(*s, times);
+                                                             : first_moments(*s, run_scene(*s, times));
                 if (!m) {
                     variant_results->push_back(result);
                     continue;
@@ -664,34 +467,32 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
 
     report.scene = load_scenario(o.scenario, &report.view, &report.lesson);
     const Scene& scene = report.scene;
-    // A lesson's answers come first: a question the run cannot answer is bad input.
-    if (report.lesson) report.answers = answer_questions(*report.lesson);
-    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson);
     Scene timing = scene;
     timing.output_dt = 1.0 / o.fps;
     const std::vector<double> times = output_times(timing);
     if (times.size() > 1000000)
         throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
+    // The scene is run once; everything below reads this run.
+    const SceneRun run = run_scene(scene, times);
+    // A lesson's answers come first: a question the run cannot answer is bad input.
+    if (report.lesson) report.answers = answer_questions(*report.lesson, run.record);
+    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson);
     prepare_directory(o);
 
-    Run run = scene.dimension == 1   ? simulate<1>(scene, times)
-              : scene.dimension == 2 ? simulate<2>(scene, times)
-                                     : simulate<3>(scene, times);
     std::unique_ptr<Moments> moments;
-    if (!run.impacts.empty()) {
-        moments = std::make_unique<Moments>(scene.dimension == 1   ? moments_of<1>(scene, run)
-                                            : scene.dimension == 2 ? moments_of<2>(scene, run)
-                                                                   : moments_of<3>(scene, run));
+    if (std::optional<Moments> m = first_moments(scene, run)) {
+        moments = std::make_unique<Moments>(std::move(*m));
     } else {
         err << "collide render: no collision in " << scene.duration
             << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
     }
-    render::write_file_atomic(o.out_dir + "/data.csv", run.csv);
-    render::write_file_atomic(o.out_dir + "/events.csv", run.events_csv);
+    const DataFiles data = data_files(scene, run);
+    render::write_file_atomic(o.out_dir + "/data.csv", data.csv);
+    render::write_file_atomic(o.out_dir + "/events.csv", data.events_csv);
     std::ostringstream json;
     json << "{\"title\": " << nlohmann::json(scene.title).dump()
          << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(o.fps)
-         << ",\n\"frames\": [\n" << run.json_frames << "\n],\n\"events\": [\n" << run.json_events
+         << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
          << "\n]}\n";
     render::write_file_atomic(o.out_dir + "/data.json", json.str());
     std::unique_ptr<WorkedExample> worked;
@@ -744,7 +545,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
         if (!o.quiet) {
             char rate[64];
             std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
-                          static_cast<double>(r.frames) / std::max(r.seconds, 1e-9));
+                          r.seconds > 0 ? static_cast<double>(r.frames) / r.seconds : 0.0);
             out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate
                 << " to " << o.out_dir << "/frames";
             if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";

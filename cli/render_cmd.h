@@ -20,6 +20,7 @@
 
 #include "cli/lesson.h"
 #include "cli/lesson_penalty.h"
+#include "cli/scene_run.h"
 #include "cli/solve.h"
 #include "render/frame_state.h"
 #include "render/renderer.h"
@@ -94,12 +95,12 @@ int run_render(const RenderOptions& options, std::ostream& out, std::ostream& er
 // formula, when given);
 render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene, const SceneView& view,
                                       const render::FormulaText* formula);
-// the first collision's formula overlay, and its before / at / after figure (figure.png), for
-// the scene run at fps; nullopt when the run has no collision.
-std::optional<render::FormulaText> first_collision_formula(const Scene& scene, double fps);
+// the first collision's formula overlay, and its before / at / after figure (figure.png), of
+// the scene's run (run_scene at the frame rate); nullopt when the run has no collision.
+std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run);
 std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
                                                     const SceneView& view, const render::RenderSettings& settings,
-                                                    double fps);
+                                                    const SceneRun& run);
 
 // "1280x720" or a preset (480p: 854x480, 720p: 1280x720, 1080p: 1920x1080, 1440p: 2560x1440);
 // false for anything else, or sizes outside 16..8192.

@@ -310,20 +310,6 @@ std::vector<double> output_times(const Scene& s) {
     return t;
 }
 
-void SettableWorld1::advance_to(double t, std::vector<Event1>* events) {
-    const std::size_t first = events->size();
-    world_.advance_to(t - start_, events);
-    for (std::size_t k = first; k < events->size(); ++k) (*events)[k].t += start_;
-}
-
-void SettableWorld1::set_body(std::size_t i, const Body1& body) {
-    Scene now = world_.scene();
-    for (std::size_t j = 0; j < now.bodies.size(); ++j) now.bodies[j].body1 = world_.bodies()[j];
-    now.bodies[i].body1 = body;
-    start_ = time();
-    world_ = World1(now);
-}
-
 std::string state_json(const Scene& s, double t, const std::vector<Body1>& b, std::size_t only) {
     return state_json_of(s, t, b, only);
 }

@@ -7,9 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "engine/record.h"
 #include "engine/scene.h"
-#include "engine/world.h"
-#include "engine/world1d.h"
 
 namespace collide {
 
@@ -23,34 +22,6 @@ void write_steps(const Scene& scene, const StepOptions& options, std::ostream& o
 
 // The output instants t = k output_dt, k = 0 .. K, with the last one at the duration exactly.
 std::vector<double> output_times(const Scene& scene);
-
-// World1 with set_body, as World<2> and World<3> have. World1 has no setter, so set_body
-// restarts it from a scene holding every body's current state; its clock then starts at 0
-// again, and the time it restarted at is kept here as an offset.
-class SettableWorld1 {
-public:
-    explicit SettableWorld1(const Scene& scene) : world_(scene) {}
-
-    double time() const { return start_ + world_.time(); }
-    const Scene& scene() const { return world_.scene(); }
-    const std::vector<Body1>& bodies() const { return world_.bodies(); }
-    void advance_to(double t, std::vector<Event1>* events);
-    void set_body(std::size_t i, const Body1& body);
-
-private:
-    World1 world_;
-    double start_ = 0.0;  // s: when world_ started
-};
-
-// The world and event types of each dimension.
-template <int D> struct Stepping {
-    using World = collide::World<D>;
-    using Event = collide::Event<D>;
-};
-template <> struct Stepping<1> {
-    using World = SettableWorld1;
-    using Event = Event1;
-};
 
 // One state or one event, as `collide step` prints them; `only` limits a state to one body.
 constexpr std::size_t kAllBodies = static_cast<std::size_t>(-1);

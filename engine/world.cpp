@@ -255,6 +255,25 @@ void World<D>::drift(std::size_t i, double t) {
 }
 
 template <int D>
+std::vector<typename World<D>::Body> World<D>::bodies_at(double t) const {
+    // What drift() would do to each body, on copies.
+    std::vector<Body> out = bodies_;
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        const Track& k = track_[i];
+        if (t <= k.t) continue;
+        if (weld_of_[i] >= 0) {
+            Weld w = welds_[weld_of_[i]];
+            weld_to(&w, t);
+            const auto at = std::find(w.members.begin(), w.members.end(), i) - w.members.begin();
+            place_on(w.body, w.rel[at], &out[i]);
+        } else if (!asleep_[i]) {
+            move(&out[i], k, t - k.t);
+        }
+    }
+    return out;
+}
+
+template <int D>
 typename World<D>::Mover World<D>::mover(std::size_t i) const {
     Mover m;
     m.i = i;
@@ -291,7 +310,7 @@ bool World<D>::same_weld(std::size_t i, std::size_t j) const {
 }
 
 template <int D>
-void World<D>::weld_to(Weld* w, double t) {
+void World<D>::weld_to(Weld* w, double t) const {
     if (t == w->t) return;
     if (t < w->t) {  // (not expected: clocks only go forward) again from the anchor
         w->body = w->anchor;
@@ -1302,6 +1321,8 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         ev.before_b = mark_[c.b] == reached ? before_[c.b] : vel(c.b);
         ev.after_a = vel(c.a);
         ev.after_b = vel(c.b);
+        ev.pose_a = pose_of(bodies_[c.a]);
+        ev.pose_b = pose_of(bodies_[c.b]);
         events->push_back(ev);
         ++counters_.events;
     }
@@ -1488,7 +1509,7 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
 // ---- Stepping ----
 
 template <int D>
-void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
+void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const ImpactHook& on_impact) {
     if (!(t_end >= time_)) throw std::invalid_argument("advance_to: time runs forward only");
     std::vector<Event<D>> scratch;
     if (!events) events = &scratch;
@@ -1577,10 +1598,12 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events) {
             // prediction saw a contact the contact manifold does not) more than 8 times is left
             // to the next substep's contact search instead of being predicted again and again.
             // (Round-off impulses of resting neighbours do not count as progress.)
+            const std::size_t recorded = events->size();
             if (!resolve(p.i, p.j, now, events)) {
                 const std::uint64_t key = static_cast<std::uint64_t>(std::min(p.i, p.j)) << 32 | std::max(p.i, p.j);
                 if (++stalls_[key] > 8) stalled_.insert(key);
             }
+            if (on_impact && events->size() > recorded) on_impact(now);
         }
         for (std::size_t i = 0; i < bodies_.size(); ++i) drift(i, t1);
         time_ = t1;

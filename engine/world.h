@@ -82,11 +82,13 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
+#include "engine/run_count.h"
 #include "engine/scene.h"
 
 namespace collide {
@@ -128,6 +130,10 @@ struct Event {
     Vec normal;                  // unit, from a into b
     Vec impulse;                 // N s on b (a receives -impulse)
     Velocity before_a, before_b, after_a, after_b;
+    // Where the two bodies are at the instant (centre of mass and orientation): with the
+    // scene's masses, shapes and the velocities above, the collision can be rebuilt from the
+    // event alone (cli/event_problem.h). (A welded body's pose is its own, not its compound's.)
+    typename Space<D>::Pose pose_a, pose_b;
 };
 
 template <int D>
@@ -146,9 +152,20 @@ public:
     // Every body's state at time().
     const std::vector<Body>& bodies() const { return bodies_; }
 
+    // Called during advance_to each time an impact was resolved and its events appended, with
+    // its instant; bodies_at(t) then gives every body there, after the impulses.
+    using ImpactHook = std::function<void(double t)>;
+
     // Moves to time t (>= time()), resolving every impact on the way; appends the events in
     // time order. Throws std::runtime_error if more than kMaxEventsPerAdvance happen.
-    void advance_to(double t, std::vector<Event<D>>* events);
+    // (Where advance_to is asked to stop shapes its substeps: a run sampled at other instants
+    // can differ from this one by round-off.)
+    void advance_to(double t, std::vector<Event<D>>* events, const ImpactHook& on_impact = nullptr);
+
+    // Every body at time t along its current motion, the world itself unchanged: valid from
+    // the last instant the world handled up to its next impact (inside ImpactHook: the
+    // impact's own instant). Between advances, bodies_at(time()) == bodies().
+    std::vector<Body> bodies_at(double t) const;
 
     // Replaces a body's state (position, orientation, velocities) at time(); e.g. the
     // interactive `set` command. Contacts and predictions are recomputed.
@@ -252,7 +269,7 @@ private:
     // Welds.
     void weld(std::size_t a, std::size_t b, double t);
     void unweld(std::size_t i);
-    void weld_to(Weld* w, double t);        // its compound to time t
+    void weld_to(Weld* w, double t) const;  // its compound to time t
     void place(std::size_t i);              // bodies_[i] from its weld's compound
     Body* mobile(std::size_t i);            // what an impulse on body i moves: it or its compound
     void moved(std::size_t i);              // after mobile(i) changed: its members placed again
@@ -272,6 +289,7 @@ private:
     void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
                       double t);
 
+    RunCount runs_;                       // counts this world among every run (run_count.h)
     Scene scene_;
     std::vector<Body> bodies_;
     std::vector<Shape> shapes_;

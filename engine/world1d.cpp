@@ -89,11 +89,20 @@ void World1::drift(double dt) {
     }
 }
 
-void World1::advance_to(double target, std::vector<Event1>* events) {
+std::vector<Body1> World1::bodies_at(double) const { return bodies_; }
+
+void World1::set_body(std::size_t i, const Body1& body) {
+    bodies_.at(i) = body;
+    supported_.assign(bodies_.size(), false);
+}
+
+void World1::advance_to(double target, std::vector<Event1>* events, const ImpactHook& on_impact) {
     const std::size_t start = events->size();
     const std::size_t n = bodies_.size();
     while (true) {
+        const std::size_t recorded = events->size();
         resolve_contacts(events);
+        if (on_impact && events->size() > recorded) on_impact(time_);
         update_support();
         if (events->size() - start > kMaxEventsPerAdvance)
             throw std::runtime_error("more than 10^6 impacts in one output step at t = " +
@@ -149,7 +158,7 @@ bool World1::resolve_sequential(std::vector<Event1>* events) {
         const Response1 r = frictionless(at_contact(bodies_[L]), at_contact(bodies_[R]), 1.0,
                                          scene_.pair_restitution(L, R));
         Event1 e{time_, L, R, right_face(L), r.P,
-                 bodies_[L].v, bodies_[R].v, r.va, r.vb};
+                 bodies_[L].v, bodies_[R].v, r.va, r.vb, bodies_[L].position, bodies_[R].position};
         bodies_[L].v = r.va;
         bodies_[R].v = r.vb;
         events->push_back(e);
@@ -222,7 +231,8 @@ bool World1::resolve_simultaneous(std::vector<Event1>* events) {
         const double p = P[static_cast<Eigen::Index>(k)];
         if (p <= 0.0) continue;
         events->push_back(Event1{time_, L, R, right_face(L),
-                                 p, v0[L], v0[R], bodies_[L].v, bodies_[R].v});
+                                 p, v0[L], v0[R], bodies_[L].v, bodies_[R].v,
+                                 bodies_[L].position, bodies_[R].position});
         any = true;
     }
     return any;

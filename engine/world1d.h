@@ -21,8 +21,10 @@
 // e = 1 bounces forever, and every bounce longer than kZenoTime is simulated exactly.
 #pragma once
 
+#include <functional>
 #include <vector>
 
+#include "engine/run_count.h"
 #include "engine/scene.h"
 
 namespace collide {
@@ -33,6 +35,7 @@ struct Event1 {
     double point = 0.0;           // m, where they touch
     double impulse = 0.0;         // N s on b along +x (a receives the opposite)
     double va_before = 0.0, vb_before = 0.0, va_after = 0.0, vb_after = 0.0;  // m/s
+    double xa = 0.0, xb = 0.0;    // m: the blocks' centres at the instant
 };
 
 class World1 {
@@ -43,8 +46,20 @@ public:
     const std::vector<Body1>& bodies() const { return bodies_; }
     const Scene& scene() const { return scene_; }
 
+    // Called during advance_to each time impacts were resolved and their events appended, with
+    // their instant (= time(); bodies() are there, after the impulses).
+    using ImpactHook = std::function<void(double t)>;
+
     // Moves to time t (>= time()), resolving every impact on the way; appends the events.
-    void advance_to(double t, std::vector<Event1>* events);
+    // (An impact exactly at t is resolved by the next advance, at its start.)
+    void advance_to(double t, std::vector<Event1>* events, const ImpactHook& on_impact = nullptr);
+
+    // Every block moves together here: the state at time() (as World<D>::bodies_at).
+    std::vector<Body1> bodies_at(double t) const;
+
+    // Replaces block i's state at time() (the interactive `set` command); supports are found
+    // again at the next advance.
+    void set_body(std::size_t i, const Body1& body);
 
     static constexpr double kTouch = 1e-12;     // m: a gap this small is contact
     static constexpr double kZenoTime = 1e-12;  // s: a bounce series this short is rest
@@ -63,6 +78,7 @@ private:
     bool resolve_sequential(std::vector<Event1>* events);
     bool resolve_simultaneous(std::vector<Event1>* events);
 
+    RunCount runs_;  // counts this world among every run (run_count.h)
     Scene scene_;
     std::vector<Body1> bodies_;
     std::vector<bool> supported_;  // resting on a support under gravity

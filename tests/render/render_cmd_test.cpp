@@ -209,6 +209,23 @@ TEST(RenderCommand, ABodyNamedWithACommaIsOneQuotedCsvColumn) {
     EXPECT_EQ(e.at(1), "cart, \"left\"");
 }
 
+// One run, one record: a lesson is run once, and each of its variants once; the answers, the
+// figure, the worked example, the data files and the frames all read those runs.
+TEST(RenderCommand, ALessonRunsEachSceneOnce) {
+    const render::test::TempDir dir;
+    const std::string lesson = std::string(COLLIDE_SOURCE_DIR) + "/lessons/01-catch-up.toml";
+    std::ostringstream err;
+    const std::uint64_t before = RunCount::total();
+    const RenderReport r = render_scenario(tiny(lesson, dir / "out"), err);
+    const std::uint64_t runs = RunCount::total() - before;
+    ASSERT_TRUE(r.lesson);
+    ASSERT_EQ(r.lesson->variants.size(), 2u);  // two other values of e beside the scene's
+    EXPECT_FALSE(r.answers.empty());
+    EXPECT_TRUE(r.problem);
+    EXPECT_EQ(r.variants.size(), 3u);
+    EXPECT_EQ(runs, 1u + r.lesson->variants.size());
+}
+
 TEST(RenderCommand, RefusesANonEmptyDirectoryUnlessForced) {
     render::test::TempDir dir;
     const std::string scenario = write(dir, "s.toml", kCollision2d);

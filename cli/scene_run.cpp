@@ -1,0 +1,207 @@
+#include "cli/scene_run.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <type_traits>
+#include <variant>
+
+#include "cli/step.h"
+
+namespace collide {
+
+using render::FrameState;
+using render::ImpactMark;
+
+namespace {
+
+template <class F>
+decltype(auto) visit_record(const SceneRun& run, F&& f) {
+    return std::visit(std::forward<F>(f), run.record);
+}
+
+std::string num(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", x);
+    return buf;
+}
+
+// A CSV field as RFC 4180 writes it: quoted, with its quotes doubled, when it holds a comma or
+// a quote (a body may be named "cart, left"); as it is otherwise.
+std::string csv_field(const std::string& text) {
+    if (text.find_first_of(",\"") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+// data.csv: t, then per moving body its position, velocity, orientation and spin, then the
+// kinetic energy and momentum of the moving bodies.
+std::string csv_header(const Scene& s) {
+    const int d = s.dimension;
+    const char* axes[3] = {"x", "y", "z"};
+    std::string h = "t";
+    for (const SceneBody& b : s.bodies) {
+        if (b.is_static()) continue;
+        const auto col = [&](const std::string& what) { h += "," + csv_field(b.name + "." + what); };
+        for (int k = 0; k < d; ++k) col(std::string("x") + (d > 1 ? std::string(".") + axes[k] : ""));
+        for (int k = 0; k < d; ++k) col(std::string("v") + (d > 1 ? std::string(".") + axes[k] : ""));
+        if (d == 2) {
+            col("angle");
+            col("w");
+        }
+        if (d == 3) {
+            for (const char* q : {"q.w", "q.x", "q.y", "q.z"}) col(q);
+            for (int k = 0; k < 3; ++k) col(std::string("w.") + axes[k]);
+        }
+    }
+    h += ",kinetic_energy";
+    for (int k = 0; k < d; ++k) h += std::string(",momentum") + (d > 1 ? std::string(".") + axes[k] : "");
+    return h + "\n";
+}
+
+std::string csv_row(const Scene& s, const FrameState& f) {
+    const int d = s.dimension;
+    std::string r = num(f.t);
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+        const SceneBody& b = s.bodies[i];
+        if (b.is_static()) continue;
+        const render::BodyState& x = f.bodies[i];
+        const Vec3 pos = d == 1 ? Vec3(x.x.x(), 0, 0) : x.x;  // 1D: the drawn height is not data
+        for (int k = 0; k < d; ++k) r += "," + num(pos[k]);
+        for (int k = 0; k < d; ++k) r += "," + num(x.v[k]);
+        if (d == 2) r += "," + num(x.angle) + "," + num(x.w.z());
+        if (d == 3) {
+            r += "," + num(x.q.w()) + "," + num(x.q.x()) + "," + num(x.q.y()) + "," + num(x.q.z());
+            for (int k = 0; k < 3; ++k) r += "," + num(x.w[k]);
+        }
+    }
+    const render::FrameTotals sums = render::frame_totals(s, f);
+    r += "," + num(sums.kinetic);
+    for (int k = 0; k < d; ++k) r += "," + num(sums.momentum[k]);
+    return r + "\n";
+}
+
+std::string events_csv_header(int d) {
+    if (d == 1) return "t,a,b,point,impulse,a.v.before,b.v.before,a.v.after,b.v.after\n";
+    std::string h = "t,a,b";
+    const char* axes[3] = {"x", "y", "z"};
+    for (const char* what : {"point", "normal", "impulse"})
+        for (int k = 0; k < d; ++k) h += std::string(",") + what + "." + axes[k];
+    return h + "\n";
+}
+
+std::string events_csv_row(const Scene& s, const Event1& e) {
+    return num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name) + "," + num(e.point) +
+           "," + num(e.impulse) + "," + num(e.va_before) + "," + num(e.vb_before) + "," +
+           num(e.va_after) + "," + num(e.vb_after) + "\n";
+}
+template <int D>
+std::string events_csv_row(const Scene& s, const Event<D>& e) {
+    std::string r = num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name);
+    for (const auto* v : {&e.point, &e.normal, &e.impulse})
+        for (int k = 0; k < D; ++k) r += "," + num((*v)[k]);
+    return r + "\n";
+}
+
+double size_of(const Scene& scene, std::size_t i) {
+    const SceneBody& b = scene.bodies[i];
+    if (scene.dimension == 1) return b.length;
+    if (scene.dimension == 2)
+        return b.shape2.kind == Shape2::Kind::half_plane ? 0.0 : 2.0 * bounding_radius(b.shape2);
+    return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
+}
+
+template <int D>
+Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& rec) {
+    const typename Recording<D>::Instant& instant = rec.instants.front();  // the first collision's
+    const auto& first = rec.events.front();
+    const double te = instant.t;
+    // A moment long enough for the bodies to move visibly: half the smaller body's size at
+    // their approach speed (from the last sample before the collision).
+    double speed = 0;
+    for (const FrameState& f : run.frames)
+        if (f.t <= te) speed = (f.bodies[first.b].v - f.bodies[first.a].v).norm();
+    double size = 0;
+    for (std::size_t i : {first.a, first.b}) {
+        const double s = size_of(scene, i);
+        if (s > 0) size = size == 0 ? s : std::min(size, s);
+    }
+    double dt = speed > 0 && size > 0 ? 0.5 * size / speed : 0.1 * scene.duration;
+    dt = std::min(dt, 0.25 * scene.duration);
+    // The next collision of either body, after this instant.
+    double next = scene.duration;
+    for (std::size_t k = instant.end; k < rec.events.size(); ++k) {
+        const auto& e = rec.events[k];
+        if (e.a == first.a || e.b == first.b || e.a == first.b || e.b == first.a) {
+            next = e.t;
+            break;
+        }
+    }
+    const std::vector<double>& t = rec.times;
+    Moments m;
+    m.at = te;
+    std::size_t kb = 0;  // the last sample at or before te - dt
+    while (kb + 1 < t.size() && t[kb + 1] <= te - dt) ++kb;
+    m.before = t[kb];
+    m.states[0] = run.frames[kb];
+    m.states[1] = render::frame_state(scene, te, instant.bodies);
+    for (std::size_t k = instant.first; k < instant.end; ++k) m.states[1].impacts.push_back(run.impacts[k]);
+    const double target = std::min({scene.duration, te + dt, te + 0.5 * (next - te)});
+    std::size_t ka = 0;  // the first sample at or after the target, before the next collision
+    while (ka < t.size() && t[ka] < target) ++ka;
+    if (ka == t.size() || (t[ka] >= next && next < scene.duration)) {
+        ka = t.size();
+        for (std::size_t k = 0; k < t.size() && t[k] < next; ++k)
+            if (t[k] > te) ka = k;
+    }
+    if (ka < t.size()) {
+        m.after = t[ka];
+        m.states[2] = run.frames[ka];
+    } else {  // no sample between this collision and the next: the instant, after its impulses
+        m.after = te;
+        m.states[2] = render::frame_state(scene, te, instant.bodies);
+    }
+    m.instant = collision_instant(first);
+    return m;
+}
+
+}  // namespace
+
+SceneRun run_scene(const Scene& scene, const std::vector<double>& times) {
+    SceneRun run;
+    run.record = record_any(scene, times);
+    visit_record(run, [&](const auto& rec) {
+        for (std::size_t k = 0; k < rec.times.size(); ++k)
+            run.frames.push_back(render::frame_state(scene, rec.times[k], rec.states[k]));
+        for (const auto& e : rec.events) run.impacts.push_back(render::impact_mark(scene, e));
+    });
+    return run;
+}
+
+DataFiles data_files(const Scene& scene, const SceneRun& run) {
+    DataFiles out;
+    out.csv = csv_header(scene);
+    out.events_csv = events_csv_header(scene.dimension);
+    visit_record(run, [&](const auto& rec) {
+        for (const FrameState& f : run.frames) out.csv += csv_row(scene, f);
+        for (std::size_t k = 0; k < rec.times.size(); ++k) {
+            if (k > 0) out.json_frames += ",\n";
+            out.json_frames += state_json(scene, rec.times[k], rec.states[k]);
+        }
+        for (std::size_t k = 0; k < rec.events.size(); ++k) {
+            if (k > 0) out.json_events += ",\n";
+            out.json_events += event_json(scene, rec.events[k]);
+            out.events_csv += events_csv_row(scene, rec.events[k]);
+        }
+    });
+    return out;
+}
+
+std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run) {
+    return visit_record(run, [&](const auto& rec) -> std::optional<Moments> {
+        if (rec.events.empty()) return std::nullopt;
+        return moments_of(scene, run, rec);
+    });
+}
+
+}  // namespace collide
