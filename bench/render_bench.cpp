@@ -20,7 +20,7 @@
 #include <benchmark/benchmark.h>
 #include <unistd.h>
 
-#include "cli/scene_file.h"
+#include "scenario/scene_file.h"
 #include "engine/world.h"
 #include "render/context.h"
 #include "render/frame_sink.h"

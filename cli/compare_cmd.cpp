@@ -8,12 +8,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/input_error.h"
-#include "cli/lesson.h"
-#include "cli/notation.h"
-#include "cli/scene_file.h"
+#include "scenario/input_error.h"
+#include "teach/lesson.h"
+#include "teach/notation.h"
+#include "scenario/scene_file.h"
 #include "cli/step.h"
-#include "cli/toml_reader.h"
+#include "scenario/toml_reader.h"
 #include "compare/box2d_world.h"
 #include "compare/match.h"
 #include "engine/world.h"

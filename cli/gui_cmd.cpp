@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "cli/gui_model.h"
-#include "cli/input_error.h"
-#include "cli/lesson.h"
+#include "scenario/input_error.h"
+#include "teach/lesson.h"
 #include "cli/render_cmd.h"
 #include "render/png.h"
 #include "render/renderer.h"

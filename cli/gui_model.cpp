@@ -6,8 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cli/input_error.h"
-#include "cli/scene_file.h"
+#include "scenario/input_error.h"
+#include "scenario/scene_file.h"
 #include "cli/scene_run.h"
 #include "cli/step.h"
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/notation.h"
+#include "teach/notation.h"
 #include "cli/step.h"
 
 namespace collide {

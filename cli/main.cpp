@@ -8,13 +8,13 @@
 
 #include "cli/compare_cmd.h"
 #include "cli/gui_cmd.h"
-#include "cli/input_error.h"
+#include "scenario/input_error.h"
 #include "cli/interactive.h"
-#include "cli/lesson.h"
+#include "teach/lesson.h"
 #include "cli/material_cmd.h"
 #include "cli/render_cmd.h"
-#include "cli/scene_file.h"
-#include "cli/solve.h"
+#include "scenario/scene_file.h"
+#include "teach/solve.h"
 #include "cli/step.h"
 
 namespace {

@@ -11,10 +11,10 @@
 #include <iostream>
 #include <sstream>
 
-#include "cli/html.h"
-#include "cli/input_error.h"
-#include "cli/lesson.h"
-#include "cli/notation.h"
+#include "teach/html.h"
+#include "scenario/input_error.h"
+#include "teach/lesson.h"
+#include "teach/notation.h"
 #include "cli/render_cmd.h"
 #include "render/png.h"
 #include "render/video.h"

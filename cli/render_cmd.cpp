@@ -17,14 +17,14 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/event_problem.h"
-#include "cli/input_error.h"
-#include "cli/lesson.h"
-#include "cli/lesson_penalty.h"
+#include "teach/event_problem.h"
+#include "scenario/input_error.h"
+#include "teach/lesson.h"
+#include "teach/lesson_penalty.h"
 #include "cli/scene_run.h"
-#include "cli/notation.h"
-#include "cli/scene_file.h"
-#include "cli/solve.h"
+#include "teach/notation.h"
+#include "scenario/scene_file.h"
+#include "teach/solve.h"
 #include "cli/step.h"
 #include "render/context.h"
 #include "render/frame_sink.h"

@@ -18,10 +18,10 @@
 #include <string>
 #include <vector>
 
-#include "cli/lesson.h"
-#include "cli/lesson_penalty.h"
+#include "teach/lesson.h"
+#include "teach/lesson_penalty.h"
 #include "cli/scene_run.h"
-#include "cli/solve.h"
+#include "teach/solve.h"
 #include "render/frame_state.h"
 #include "render/renderer.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/event_problem.h"
+#include "teach/event_problem.h"
 #include "engine/record.h"
 #include "render/frame_state.h"
 

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/notation.h"
+#include "teach/notation.h"
 #include "engine/diagnostics.h"
 
 namespace collide {

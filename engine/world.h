@@ -132,7 +132,7 @@ struct Event {
     Velocity before_a, before_b, after_a, after_b;
     // Where the two bodies are at the instant (centre of mass and orientation): with the
     // scene's masses, shapes and the velocities above, the collision can be rebuilt from the
-    // event alone (cli/event_problem.h). (A welded body's pose is its own, not its compound's.)
+    // event alone (teach/event_problem.h). (A welded body's pose is its own, not its compound's.)
     typename Space<D>::Pose pose_a, pose_b;
 };
 

@@ -6,10 +6,10 @@
 #include <stdexcept>
 #include <vector>
 
-#include "cli/input_error.h"
-#include "cli/lesson.h"
-#include "cli/scene_file.h"
-#include "cli/solve.h"
+#include "scenario/input_error.h"
+#include "teach/lesson.h"
+#include "scenario/scene_file.h"
+#include "teach/solve.h"
 #include "cli/step.h"
 
 namespace collide::fuzz {

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/interactive.h"
-#include "cli/scene_file.h"
+#include "scenario/scene_file.h"
 
 namespace collide {
 namespace {

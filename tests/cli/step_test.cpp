@@ -6,7 +6,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/scene_file.h"
+#include "scenario/scene_file.h"
 #include "cli/step.h"
 
 namespace collide {

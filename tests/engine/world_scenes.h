@@ -1,7 +1,7 @@
 // Scenes for the 2D and 3D worlds built in code (tests/engine/world*_test.cpp,
 // bench/world_bench.cpp and bench/box2d_bench.cpp): single bodies, static planes, an elastic gas
 // in a walled box, a pile of falling columns and a pyramid of boxes at rest. Scene and SceneBody are plain data (engine/scene.h); masses and
-// inertia come from engine/mass.h as the scene file reader (cli/scene_file.cpp) computes them.
+// inertia come from engine/mass.h as the scene file reader (scenario/scene_file.cpp) computes them.
 //
 // Random draws are reproducible on every standard library: a std::mt19937_64 with a fixed seed
 // whose raw 64-bit output is turned into doubles by hand (as tests/engine/random_bodies.h does).

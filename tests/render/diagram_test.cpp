@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/scene_file.h"
+#include "scenario/scene_file.h"
 #include "render/context.h"
 #include "render/draw2d.h"
 #include "render/imgui_layer.h"

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/input_error.h"
-#include "cli/lesson.h"
+#include "scenario/input_error.h"
+#include "teach/lesson.h"
 
 namespace collide {
 namespace {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "cli/event_problem.h"
-#include "cli/input_error.h"
-#include "cli/scene_file.h"
+#include "teach/event_problem.h"
+#include "scenario/input_error.h"
+#include "scenario/scene_file.h"
 #include "engine/record.h"
 
 namespace collide {
@@ -33,7 +33,7 @@ struct LessonVariant {
 };
 
 // [penalty] (1D lessons, README.md "Lessons"): the first collision again with a penalty
-// (spring-damper) contact instead of the impulse (engine/penalty.h, cli/lesson_penalty.h).
+// (spring-damper) contact instead of the impulse (engine/penalty.h, teach/lesson_penalty.h).
 struct LessonPenalty {
     double stiffness = 0.0;              // k, N/m
     std::vector<double> damping_ratios;  // zeta in [0, 1): the table and the force plot
@@ -80,7 +80,7 @@ const std::vector<std::string>& lesson_tables();
 // centre of mass; not in 1D). Static bodies count in none of the totals. With a [penalty]
 // table, "penalty_damping_ratio", "penalty_damping", "penalty_contact_time",
 // "penalty_peak_force", "penalty_max_overlap", "penalty_impulse", "penalty_restitution": the
-// first collision with the penalty contact matched to its e (no pull; cli/lesson_penalty.h).
+// first collision with the penalty contact matched to its e (no pull; teach/lesson_penalty.h).
 // In 2D angular quantities are numbers (the z component, counter-clockwise +).
 const std::vector<std::string>& lesson_quantities();
 

@@ -1,4 +1,4 @@
-#include "cli/lesson.h"
+#include "teach/lesson.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,9 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/lesson_penalty.h"
-#include "cli/notation.h"
-#include "cli/toml_reader.h"
+#include "teach/lesson_penalty.h"
+#include "teach/notation.h"
+#include "scenario/toml_reader.h"
 #include "engine/diagnostics.h"
 #include "engine/record.h"
 

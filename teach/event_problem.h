@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/solve_problem.h"
+#include "scenario/solve_problem.h"
 #include "engine/scene.h"
 #include "engine/world.h"
 #include "engine/world1d.h"

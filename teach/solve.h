@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/solve_problem.h"
+#include "scenario/solve_problem.h"
 #include "engine/page.h"
 
 namespace collide {

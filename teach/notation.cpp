@@ -1,4 +1,4 @@
-#include "cli/notation.h"
+#include "teach/notation.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "cli/html.h"
+#include "teach/html.h"
 
 #include <algorithm>
 #include <cctype>
@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <sstream>
 
-#include "cli/notation.h"
+#include "teach/notation.h"
 
 namespace collide::html {
 

@@ -1,6 +1,6 @@
-// Lessons (cli/lesson.h): every bundled lesson loads, runs and answers its questions; the
+// Lessons (teach/lesson.h): every bundled lesson loads, runs and answers its questions; the
 // answers match closed forms; malformed lesson files are refused with their key.
-#include "cli/lesson.h"
+#include "teach/lesson.h"
 
 #include "engine/world1d.h"
 

@@ -6,8 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cli/notation.h"
-#include "cli/solve.h"
+#include "teach/notation.h"
+#include "teach/solve.h"
 
 namespace collide {
 

@@ -1,9 +1,9 @@
-#include "cli/scene_file.h"
+#include "scenario/scene_file.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "cli/toml_reader.h"
+#include "scenario/toml_reader.h"
 #include "engine/mass.h"
 
 namespace collide {

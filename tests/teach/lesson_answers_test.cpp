@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/lesson.h"
-#include "cli/lesson_penalty.h"
+#include "teach/lesson.h"
+#include "teach/lesson_penalty.h"
 
 namespace collide {
 namespace {

@@ -1,4 +1,4 @@
-#include "cli/toml_reader.h"
+#include "scenario/toml_reader.h"
 
 #include <algorithm>
 #include <cmath>

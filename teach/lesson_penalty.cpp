@@ -1,4 +1,4 @@
-#include "cli/lesson_penalty.h"
+#include "teach/lesson_penalty.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,9 +7,9 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "cli/html.h"
-#include "cli/input_error.h"
-#include "cli/notation.h"
+#include "teach/html.h"
+#include "scenario/input_error.h"
+#include "teach/notation.h"
 #include "engine/world1d.h"
 
 namespace collide {

@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/input_error.h"
-#include "cli/solve.h"
+#include "scenario/input_error.h"
+#include "teach/solve.h"
 
 namespace collide {
 namespace {

@@ -1,8 +1,8 @@
-#include "cli/solve_problem.h"
+#include "scenario/solve_problem.h"
 
 #include <cmath>
 
-#include "cli/toml_reader.h"
+#include "scenario/toml_reader.h"
 #include "engine/mass.h"
 
 namespace collide {

@@ -1,11 +1,11 @@
-// A world's collision event as a `collide solve` problem (cli/event_problem.h): the worked
+// A world's collision event as a `collide solve` problem (teach/event_problem.h): the worked
 // example of a rendered scene must reproduce the impulse the world applied, and closed forms.
-#include "cli/event_problem.h"
+#include "teach/event_problem.h"
 
 #include <gtest/gtest.h>
 
-#include "cli/scene_file.h"
-#include "cli/solve.h"
+#include "scenario/scene_file.h"
+#include "teach/solve.h"
 
 namespace collide {
 namespace {

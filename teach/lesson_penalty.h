@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/lesson.h"
+#include "teach/lesson.h"
 #include "engine/penalty.h"
 
 namespace collide {

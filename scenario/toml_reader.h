@@ -8,7 +8,7 @@
 
 #include <toml++/toml.h>
 
-#include "cli/input_error.h"
+#include "scenario/input_error.h"
 #include "engine/math.h"
 
 namespace collide {

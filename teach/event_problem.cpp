@@ -1,4 +1,4 @@
-#include "cli/event_problem.h"
+#include "teach/event_problem.h"
 
 #include <cstdio>
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "cli/input_error.h"
-#include "cli/scene_file.h"
+#include "scenario/input_error.h"
+#include "scenario/scene_file.h"
 
 namespace collide {
 namespace {

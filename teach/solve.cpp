@@ -1,6 +1,6 @@
 // Computes a collision with the engine's functions and records each intermediate quantity of
 // the worked example. No formula is written here: every number comes from engine/.
-#include "cli/solve.h"
+#include "teach/solve.h"
 
 #include <type_traits>
 
