@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/input_error.h"
-#include "teach/lesson.h"
+#include "scenario/lesson.h"
 #include "teach/notation.h"
 #include "scenario/scene_file.h"
 #include "cli/step.h"

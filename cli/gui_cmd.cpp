@@ -13,7 +13,7 @@
 
 #include "cli/gui_model.h"
 #include "scenario/input_error.h"
-#include "teach/lesson.h"
+#include "scenario/lesson.h"
 #include "cli/render_cmd.h"
 #include "render/png.h"
 #include "render/renderer.h"

@@ -10,7 +10,7 @@
 #include "cli/gui_cmd.h"
 #include "scenario/input_error.h"
 #include "cli/interactive.h"
-#include "teach/lesson.h"
+#include "scenario/lesson.h"
 #include "cli/material_cmd.h"
 #include "cli/render_cmd.h"
 #include "scenario/scene_file.h"

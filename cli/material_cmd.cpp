@@ -13,7 +13,7 @@
 
 #include "teach/html.h"
 #include "scenario/input_error.h"
-#include "teach/lesson.h"
+#include "teach/answers.h"
 #include "teach/notation.h"
 #include "cli/render_cmd.h"
 #include "render/png.h"

@@ -19,7 +19,7 @@
 
 #include "teach/event_problem.h"
 #include "scenario/input_error.h"
-#include "teach/lesson.h"
+#include "teach/answers.h"
 #include "teach/lesson_penalty.h"
 #include "cli/scene_run.h"
 #include "teach/notation.h"
@@ -476,7 +476,7 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
     const SceneRun run = run_scene(scene, times);
     // A lesson's answers come first: a question the run cannot answer is bad input.
     if (report.lesson) report.answers = answer_questions(*report.lesson, run.record);
-    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson);
+    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson, run.record);
     prepare_directory(o);
 
     std::unique_ptr<Moments> moments;

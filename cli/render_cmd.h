@@ -18,7 +18,7 @@
 #include <string>
 #include <vector>
 
-#include "teach/lesson.h"
+#include "teach/answers.h"
 #include "teach/lesson_penalty.h"
 #include "cli/scene_run.h"
 #include "teach/solve.h"

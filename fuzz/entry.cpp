@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "scenario/input_error.h"
-#include "teach/lesson.h"
+#include "teach/answers.h"
 #include "scenario/scene_file.h"
 #include "teach/solve.h"
 #include "cli/step.h"

@@ -10,7 +10,6 @@
 #include "teach/html.h"
 #include "scenario/input_error.h"
 #include "teach/notation.h"
-#include "engine/world1d.h"
 
 namespace collide {
 
@@ -65,15 +64,14 @@ const char* kColours[] = {"#1d4ed8", "#0f766e", "#b45309", "#7c3aed", "#4b5563",
 
 }  // namespace
 
-PenaltyStudy penalty_study(const Lesson& L) {
+PenaltyStudy penalty_study(const Lesson& L, const AnyRecording& record) {
     if (!L.penalty) throw InputError(L.file, {}, "penalty", "the lesson has no [penalty] table");
     const Scene& scene = L.scene;
-    World1 world(scene);
-    std::vector<Event1> events;
-    world.advance_to(scene.duration, &events);
-    if (events.empty())
+    const Recording<1>* line = std::get_if<Recording<1>>(&record);
+    if (!line) throw std::invalid_argument("penalty_study: the [penalty] contact is 1D, the recording is not");
+    if (line->events.empty())
         throw InputError(L.file, L.penalty->pos, "penalty", "the run has no collision for the penalty contact to replay");
-    const Event1& e = events.front();
+    const Event1& e = line->events.front();
     PenaltyStudy s;
     s.a = scene.bodies[e.a].name;
     s.b = scene.bodies[e.b].name;

@@ -9,7 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "teach/lesson.h"
+#include "engine/record.h"
+#include "scenario/lesson.h"
 #include "engine/penalty.h"
 
 namespace collide {
@@ -38,10 +39,11 @@ struct PenaltyStudy {
     std::vector<Stiff> stiffer;       // the [penalty] stiffnesses (default k/4, k, 4k)
 };
 
-// Runs the lesson's scene to its first collision and the penalty contacts. Throws InputError
-// naming the lesson's file when it has no [penalty] table, no collision, or an e the spring
-// cannot match without pull (e <= exp(-2) = 0.135 needs an over-damped contact).
-PenaltyStudy penalty_study(const Lesson& lesson);
+// The penalty contacts of the first collision of `run`, the lesson's recorded run. Throws
+// InputError naming the lesson's file when it has no [penalty] table, the run no collision,
+// or the collision an e the spring cannot match without pull (e <= exp(-2) = 0.135 needs an
+// over-damped contact), or the contact cannot be integrated with its time step.
+PenaltyStudy penalty_study(const Lesson& lesson, const AnyRecording& run);
 
 // penalty.svg: the contact force against time (ms) for each damping ratio and the matched one.
 std::string penalty_svg(const PenaltyStudy& s);

@@ -8,7 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "scenario/input_error.h"
-#include "teach/lesson.h"
+#include "scenario/lesson.h"
 
 namespace collide {
 namespace {

@@ -2,7 +2,7 @@
 // writes is complete and self-contained (every internal link and image resolves, nothing is
 // fetched from the network), the answers are on the pages, and bad input writes nothing.
 #include "cli/material_cmd.h"
-#include "teach/lesson.h"
+#include "teach/answers.h"
 
 #include <filesystem>
 #include <fstream>

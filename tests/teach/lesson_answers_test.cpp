@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "teach/lesson.h"
+#include "teach/answers.h"
 #include "teach/lesson_penalty.h"
 
 namespace collide {
@@ -625,7 +625,7 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
     // The study's tables: each damping ratio's e by both formulas (no pull: the spring lets go
     // at F = 0; pull: half a period, e = exp(-zeta pi / sqrt(1 - zeta^2))), and the matched zeta
     // at each stiffness: e unchanged, the contact time (pi - 2 asin zeta) / w_d with w_0 = sqrt(k/m).
-    const PenaltyStudy st = penalty_study(L);
+    const PenaltyStudy st = penalty_study(L, record_any(L.scene, {L.scene.duration}));
     ASSERT_EQ(st.rows.size(), L.penalty->damping_ratios.size());
     for (const PenaltyStudy::Row& r : st.rows) {
         const double z = r.zeta, q = std::sqrt(1 - z * z);

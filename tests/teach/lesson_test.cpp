@@ -1,6 +1,6 @@
 // Lessons (teach/lesson.h): every bundled lesson loads, runs and answers its questions; the
 // answers match closed forms; malformed lesson files are refused with their key.
-#include "teach/lesson.h"
+#include "teach/answers.h"
 
 #include "engine/world1d.h"
 

@@ -4,14 +4,13 @@
 #pragma once
 
 #include <iosfwd>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "teach/event_problem.h"
 #include "scenario/input_error.h"
 #include "scenario/scene_file.h"
-#include "engine/record.h"
 
 namespace collide {
 
@@ -62,6 +61,18 @@ struct Lesson {
 // The top-level tables a lesson file adds to a scenario's.
 const std::vector<std::string>& lesson_tables();
 
+// What a question's quantity is: its unit, whether it names a collision (event) and a body,
+// whether it is angular (a number, the z component, in 2D; none in 1D), and whether the
+// [penalty] contact answers it.
+struct QuantityInfo {
+    const char* unit;
+    bool needs_event;
+    bool needs_body;
+    bool angular = false;
+    bool penalty = false;
+};
+const std::map<std::string, QuantityInfo>& quantity_table();
+
 // The quantities a question can ask for, each with its unit and whether it needs an event
 // and a body: "impulse" (event: P on b), "impulse_normal" (event: j = P . n),
 // "velocity_before" / "velocity_after" and "spin_before" / "spin_after" (event, body),
@@ -103,27 +114,8 @@ std::string resolve_lesson(const std::string& id_or_file, const std::string& dir
 Scene load_scenario(const std::string& arg, SceneView* view = nullptr,
                     std::optional<Lesson>* lesson = nullptr);
 
-struct LessonAnswer {
-    double value = 0.0;       // the number (a vector's: its length; see `vector`)
-    Vec3 vector = Vec3::Zero();
-    bool is_vector = false;   // 2D and 3D vectors and 3D spins
-    std::string unit;         // "N s", "m/s", ...
-    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"
-};
-// Answers every question from `run`, a recording of the lesson's scene whose last sample is
-// at its duration (the run's end). Throws InputError (naming the question) when one asks for
-// an event the run does not have or a body it lacks.
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run);
-// The same from a run of the lesson's scene sampled at its end only.
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
-
 // `collide lessons`: a table (order, id, dimension, duration, title), or with json one object
 // per line: {"id": .., "order": .., "title": .., "section": .., "dimension": .., "duration": ..}.
 void write_lesson_list(const std::vector<Lesson>& lessons, bool json, std::ostream& out);
-
-// The lesson as Markdown: title, the page's section, goals, explanation, the questions with
-// their answers (in <details>, opened on click), and a link to the worked example.
-void write_lesson_markdown(const Lesson& lesson, const std::vector<LessonAnswer>& answers,
-                           std::ostream& out);
 
 }  // namespace collide

@@ -1,4 +1,4 @@
-#include "teach/lesson.h"
+#include "scenario/lesson.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,11 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "teach/lesson_penalty.h"
-#include "teach/notation.h"
 #include "scenario/toml_reader.h"
-#include "engine/diagnostics.h"
-#include "engine/record.h"
 
 #ifndef COLLIDE_LESSONS_DIR
 #define COLLIDE_LESSONS_DIR "lessons"
@@ -31,13 +27,20 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct QuantityInfo {
-    const char* unit;
-    bool needs_event;
-    bool needs_body;
-    bool angular = false;  // spins and angular momenta: a number (z) in 2D, none in 1D
-    bool penalty = false;  // answered by the [penalty] contact
-};
+std::vector<std::string> strings(const TableReader& t, const std::string& key, const std::string& what) {
+    std::vector<std::string> out;
+    const toml::node* n = t.node(key);
+    if (!n) return out;
+    const toml::array* arr = n->as_array();
+    if (!arr) t.fail(key, "expected " + what);
+    for (const toml::node& el : *arr) {
+        if (!el.is_string()) t.fail(key, "expected " + what);
+        out.push_back(*el.value<std::string>());
+    }
+    return out;
+}
+
+}  // namespace
 
 const std::map<std::string, QuantityInfo>& quantity_table() {
     static const std::map<std::string, QuantityInfo> table = {
@@ -76,23 +79,8 @@ const std::map<std::string, QuantityInfo>& quantity_table() {
     };
     return table;
 }
-
-std::vector<std::string> strings(const TableReader& t, const std::string& key, const std::string& what) {
-    std::vector<std::string> out;
-    const toml::node* n = t.node(key);
-    if (!n) return out;
-    const toml::array* arr = n->as_array();
-    if (!arr) t.fail(key, "expected " + what);
-    for (const toml::node& el : *arr) {
-        if (!el.is_string()) t.fail(key, "expected " + what);
-        out.push_back(*el.value<std::string>());
-    }
-    return out;
-}
-
-}  // namespace
-
 const std::vector<std::string>& lesson_tables() {
+
     static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty"};
     return tables;
 }
@@ -259,9 +247,6 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
             L.questions.push_back(std::move(Q));
         }
     }
-    // The penalty contact needs a collision to replay and an e it can match: found here, when
-    // the file is read, so every command refuses such a lesson alike (a few ms of 1D run).
-    if (L.penalty) penalty_study(L);
     return L;
 }
 
@@ -331,170 +316,6 @@ Scene load_scenario(const std::string& arg, SceneView* view, std::optional<Lesso
     return parse_scene_text(text, name, view);
 }
 
-// ---- Answers ----
-
-namespace {
-
-// The two bodies' total linear momentum and angular momentum about `about` (a fixed point),
-// with the velocities before or after the impulse; static bodies left out (diagnostics.h).
-std::pair<Vec3, Vec3> pair_momenta(const Scene& scene, const CollisionInstant& c, bool after, const Vec3& about) {
-    const SolveProblem p = collision_problem(scene, c);
-    const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
-    const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
-    if (scene.dimension == 1) {
-        Body1 a = p.a.b1, b = p.b.b1;
-        a.v = va.x();
-        b.v = vb.x();
-        return {Vec3(totals(std::vector<Body1>{a, b}).momentum, 0, 0), Vec3::Zero()};
-    }
-    if (scene.dimension == 2) {
-        Body2 a = p.a.b2, b = p.b.b2;
-        a.v = va.head<2>();
-        a.w = wa.z();
-        b.v = vb.head<2>();
-        b.w = wb.z();
-        const Totals2 t = totals(std::vector<Body2>{a, b}, about.head<2>());
-        return {Vec3(t.momentum.x(), t.momentum.y(), 0), Vec3(0, 0, t.angular_momentum)};
-    }
-    Body3 a = p.a.b3, b = p.b.b3;
-    a.v = va;
-    a.w = wa;
-    b.v = vb;
-    b.w = wb;
-    const Totals3 t = totals(std::vector<Body3>{a, b}, about);
-    return {t.momentum, t.angular_momentum};
-}
-
-using collide::lift;
-Vec3 lift(double x) { return lift_line(x); }  // a 1D value along x
-Vec3 spin_of(const Body1&) { return Vec3::Zero(); }
-Vec3 spin_of(const Body2& b) { return Vec3(0, 0, b.w); }
-Vec3 spin_of(const Body3& b) { return b.w; }
-
-template <int D>
-std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run) {
-    const Scene& scene = L.scene;
-    const auto& events = run.events;
-    const auto& final_bodies = run.states.back();  // at the run's last sampled instant
-    // Event k with the bodies where they touch (once per event however many questions ask).
-    std::map<std::size_t, CollisionInstant> instants;
-    const auto instant = [&](std::size_t k) -> const CollisionInstant& {
-        if (auto it = instants.find(k); it != instants.end()) return it->second;
-        return instants.emplace(k, collision_instant(events[k])).first->second;
-    };
-    const auto body_index = [&](const std::string& name) {
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i)
-            if (scene.bodies[i].name == name) return i;
-        return scene.bodies.size();
-    };
-
-    std::optional<PenaltyStudy> study;  // [penalty]: once, when a question asks
-    std::vector<LessonAnswer> out;
-    for (std::size_t qi = 0; qi < L.questions.size(); ++qi) {
-        const LessonQuestion& q = L.questions[qi];
-        const QuantityInfo& info = quantity_table().at(q.quantity);
-        const std::string where = "question[" + std::to_string(qi + 1) + "]";
-        LessonAnswer a;
-        a.unit = info.unit;
-        const auto set_vector = [&](const Vec3& v) {
-            if (D == 1) {
-                a.value = v.x();
-            } else if (D == 2 && info.angular) {
-                a.value = v.z();
-            } else {
-                a.vector = v;
-                a.value = v.norm();
-                a.is_vector = true;
-            }
-        };
-        if (info.needs_event && static_cast<std::size_t>(q.event) > events.size())
-            throw InputError(L.file, {}, where + ".event",
-                             "asks for collision " + std::to_string(q.event) + " but the run has " +
-                                 std::to_string(events.size()));
-        std::size_t body = info.needs_body ? body_index(q.body) : 0;
-        if (info.needs_event) {
-            const CollisionInstant& c = instant(static_cast<std::size_t>(q.event - 1));
-            if (info.needs_body && body != c.a && body != c.b)
-                throw InputError(L.file, {}, where + ".body",
-                                 "'" + q.body + "' takes no part in collision " + std::to_string(q.event) +
-                                     " (" + scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + ")");
-            const bool is_a = body == c.a;
-            if (q.quantity == "impulse") set_vector(c.impulse);
-            else if (q.quantity == "impulse_normal") a.value = c.impulse.dot(c.normal);
-            else if (q.quantity == "velocity_before") set_vector(is_a ? c.before_a.v : c.before_b.v);
-            else if (q.quantity == "velocity_after") set_vector(is_a ? c.va_after : c.vb_after);
-            else if (q.quantity == "spin_before") set_vector(is_a ? c.before_a.w : c.before_b.w);
-            else if (q.quantity == "spin_after") set_vector(is_a ? c.wa_after : c.wb_after);
-            else if (q.quantity == "kinetic_energy_before") a.value = pair_kinetic_energy(scene, c, false);
-            else if (q.quantity == "kinetic_energy_after") a.value = pair_kinetic_energy(scene, c, true);
-            else if (q.quantity == "energy_lost")
-                a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
-            else if (q.quantity == "time") a.value = c.t;
-            else if (q.quantity == "point_velocity_before" || q.quantity == "point_velocity_after") {
-                const bool after = q.quantity == "point_velocity_after";
-                const CollisionInstant::Side& s = is_a ? c.before_a : c.before_b;
-                const Vec3 v = after ? (is_a ? c.va_after : c.vb_after) : s.v;
-                const Vec3 w = after ? (is_a ? c.wa_after : c.wb_after) : s.w;
-                set_vector(v + w.cross(q.at.value_or(c.point) - s.x));
-            } else if (q.quantity == "normal_velocity_before" || q.quantity == "normal_velocity_after") {
-                const bool after = q.quantity == "normal_velocity_after";
-                const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
-                const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
-                const Vec3 u = (vb + wb.cross(c.point - c.before_b.x)) - (va + wa.cross(c.point - c.before_a.x));
-                a.value = u.dot(c.normal);
-            } else if (q.quantity == "momentum_before" || q.quantity == "momentum_after") {
-                set_vector(pair_momenta(scene, c, q.quantity == "momentum_after", Vec3::Zero()).first);
-            } else if (q.quantity == "angular_momentum_before" || q.quantity == "angular_momentum_after") {
-                set_vector(pair_momenta(scene, c, q.quantity == "angular_momentum_after",
-                                        q.about.value_or(Vec3::Zero()))
-                               .second);
-            } else if (q.quantity == "spin_angular_momentum_before" ||
-                       q.quantity == "spin_angular_momentum_after") {
-                const bool after = q.quantity == "spin_angular_momentum_after";
-                const SolveProblem p = collision_problem(scene, c);
-                const Vec3 w = after ? (is_a ? c.wa_after : c.wb_after) : (is_a ? c.before_a.w : c.before_b.w);
-                const SolveBody& sb = is_a ? p.a : p.b;
-                if (scene.bodies[body].is_static()) set_vector(Vec3::Zero());
-                else if (D == 2) set_vector(Vec3(0, 0, sb.b2.inertia * w.z()));
-                else set_vector(sb.b3.inertia_world() * w);
-            }
-        } else if (q.quantity == "collisions") {
-            a.value = static_cast<double>(events.size());
-        } else if (q.quantity == "last_collision_time") {
-            if (events.empty()) throw InputError(L.file, {}, where + ".quantity", "the run has no collision");
-            a.value = events.back().t;
-        } else if (q.quantity == "final_velocity") {
-            set_vector(lift(final_bodies[body].v));
-        } else if (q.quantity == "final_spin") {
-            set_vector(spin_of(final_bodies[body]));
-        } else if (q.quantity == "final_kinetic_energy") {
-            a.value = totals(final_bodies).kinetic_energy;
-        } else if (info.penalty) {
-            if (!study) study = penalty_study(L);
-            const PenaltyRun& r = study->matched;
-            if (q.quantity == "penalty_damping_ratio") a.value = study->zeta;
-            else if (q.quantity == "penalty_damping") a.value = study->damping;
-            else if (q.quantity == "penalty_contact_time") a.value = r.contact_time;
-            else if (q.quantity == "penalty_peak_force") a.value = r.peak_force;
-            else if (q.quantity == "penalty_max_overlap") a.value = r.max_overlap;
-            else if (q.quantity == "penalty_impulse") a.value = r.impulse;
-            else if (q.quantity == "penalty_restitution") a.value = r.restitution;
-        }
-        // The text: the number (or vector) to 6 significant digits, then the unit.
-        const auto n = [](double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); };
-        if (a.is_vector) {
-            a.text = "(" + n(a.vector.x()) + ", " + n(a.vector.y()) + (D == 3 ? ", " + n(a.vector.z()) : "") + ")";
-        } else {
-            a.text = n(a.value);
-        }
-        if (!a.unit.empty()) a.text += " " + a.unit;
-        out.push_back(a);
-    }
-    return out;
-}
-
-}  // namespace
-
 void write_lesson_list(const std::vector<Lesson>& lessons, bool json, std::ostream& out) {
     if (json) {
         for (const Lesson& L : lessons)
@@ -515,39 +336,6 @@ void write_lesson_list(const std::vector<Lesson>& lessons, bool json, std::ostre
         std::snprintf(line, sizeof line, "  %2dD  %6.3g s  ", L.scene.dimension, L.scene.duration);
         out << line << L.title << "\n";
     }
-}
-
-void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& answers, std::ostream& out) {
-    out << "# " << L.title << "\n\n";
-    if (!L.section.empty()) out << "*The page's section: " << L.section << ".*\n\n";
-    if (!L.goals.empty()) {
-        out << "## Learning goals\n\n";
-        for (const std::string& g : L.goals) out << "- " << g << "\n";
-        out << "\n";
-    }
-    if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
-    out << "![before, at and after the first collision](figure.png)\n\n";
-    if (!L.questions.empty()) {
-        out << "## Questions\n\n";
-        for (std::size_t i = 0; i < L.questions.size(); ++i) {
-            const LessonQuestion& q = L.questions[i];
-            out << i + 1 << ". " << q.text << "\n\n   <details><summary>Answer</summary>\n\n   "
-                << (i < answers.size() ? answers[i].text : std::string("?"));
-            if (!q.explain.empty()) out << ". " << q.explain;
-            out << "\n\n   </details>\n\n";
-        }
-    }
-    out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";
-}
-
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run) {
-    if (lesson.scene.dimension != static_cast<int>(run.index()) + 1)
-        throw std::invalid_argument("answer_questions: the recording is of another dimension");
-    return std::visit([&](const auto& r) { return answer<std::decay_t<decltype(r)>::dimension>(lesson, r); }, run);
-}
-
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson) {
-    return answer_questions(lesson, record_any(lesson.scene, {lesson.scene.duration}));
 }
 
 }  // namespace collide
