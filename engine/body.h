@@ -97,4 +97,19 @@ ImpactBody1 at_contact(const Body1& body);
 inline Vec3 point_velocity(const ImpactBody3& b) { return b.v + b.w.cross(b.r); }
 inline Vec2 point_velocity(const ImpactBody2& b) { return b.v + cross(b.w, b.r); }
 
+// A body's state in 3D form whatever its dimension (engine/math.h's lift): 1D along x, 2D in
+// the xy plane turned by `angle` about +z. What the teaching code and the renderer show.
+struct BodyState {
+    Vec3 x = Vec3::Zero();      // m, centre of mass
+    Quat q = Quat::Identity();  // orientation (2D: lift_angle(angle))
+    double angle = 0.0;         // rad, 2D only
+    Vec3 v = Vec3::Zero();      // m/s
+    Vec3 w = Vec3::Zero();      // rad/s (2D: (0, 0, w); 1D: 0)
+};
+inline BodyState lifted(const Body1& b) { return {lift_line(b.position), Quat::Identity(), 0.0, lift_line(b.v), Vec3::Zero()}; }
+inline BodyState lifted(const Body2& b) {
+    return {lift(b.position), lift_angle(b.angle), b.angle, lift(b.v), lift_spin(b.w)};
+}
+inline BodyState lifted(const Body3& b) { return {b.position, b.orientation, 0.0, b.v, b.w}; }
+
 }  // namespace collide

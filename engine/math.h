@@ -31,6 +31,7 @@ inline Vec3 lift(const Vec3& v) { return v; }
 inline Vec3 lift_spin(double w) { return Vec3(0.0, 0.0, w); }
 inline Vec3 lift_spin(const Vec3& w) { return w; }
 inline Vec3 lift_line(double x) { return Vec3(x, 0.0, 0.0); }
+inline Quat lift_angle(double angle) { return Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ())); }
 
 // Cross-product matrix [r]x, so that [r]x a = r x a.
 inline Mat3 skew(const Vec3& r) {

@@ -21,42 +21,23 @@ FrameState frame_state(const Scene& scene, double t, const std::vector<Body1>& b
     FrameState f;
     f.t = t;
     for (std::size_t i = 0; i < bodies.size(); ++i) {
-        BodyState s;
-        s.x = Vec3(bodies[i].position, 0.5 * block_height(scene, i), 0.0);
-        s.v = Vec3(bodies[i].v, 0.0, 0.0);
+        BodyState s = lifted(bodies[i]);
+        s.x.y() = 0.5 * block_height(scene, i);  // standing on the x axis
         f.bodies.push_back(s);
     }
     return f;
 }
 
-FrameState frame_state(const Scene&, double t, const std::vector<Body2>& bodies) {
+template <class Body>
+FrameState frame_state_of(double t, const std::vector<Body>& bodies) {
     FrameState f;
     f.t = t;
-    for (const Body2& b : bodies) {
-        BodyState s;
-        s.x = Vec3(b.position.x(), b.position.y(), 0.0);
-        s.angle = b.angle;
-        s.q = Quat(Eigen::AngleAxisd(b.angle, Vec3::UnitZ()));
-        s.v = Vec3(b.v.x(), b.v.y(), 0.0);
-        s.w = Vec3(0.0, 0.0, b.w);
-        f.bodies.push_back(s);
-    }
+    for (const Body& b : bodies) f.bodies.push_back(lifted(b));
     return f;
 }
 
-FrameState frame_state(const Scene&, double t, const std::vector<Body3>& bodies) {
-    FrameState f;
-    f.t = t;
-    for (const Body3& b : bodies) {
-        BodyState s;
-        s.x = b.position;
-        s.q = b.orientation;
-        s.v = b.v;
-        s.w = b.w;
-        f.bodies.push_back(s);
-    }
-    return f;
-}
+FrameState frame_state(const Scene&, double t, const std::vector<Body2>& bodies) { return frame_state_of(t, bodies); }
+FrameState frame_state(const Scene&, double t, const std::vector<Body3>& bodies) { return frame_state_of(t, bodies); }
 
 ImpactMark impact_mark(const Scene& scene, const Event1& e) {
     ImpactMark m;

@@ -13,13 +13,7 @@
 
 namespace collide::render {
 
-struct BodyState {
-    Vec3 x = Vec3::Zero();             // m, centre of mass
-    Quat q = Quat::Identity();         // orientation (2D: about +z by angle)
-    double angle = 0.0;                // rad, 2D only
-    Vec3 v = Vec3::Zero();             // m/s
-    Vec3 w = Vec3::Zero();             // rad/s (2D: (0, 0, w))
-};
+using collide::BodyState;  // engine/body.h: every body's state lifted to 3D
 
 // One collision as the diagrams draw it (docs/conventions.md: n from a into b, +P on b).
 struct ImpactMark {

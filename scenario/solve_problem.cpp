@@ -94,7 +94,7 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
     const Vec3 v = read_vec(t, "v", dim, "m/s").value_or(Vec3::Zero());
     const Vec3 w = read_spin(t, dim);
     const double angle = t.number("angle", "an angle in rad").value_or(0.0);
-    const Quat q = dim == 3 ? read_orientation(t) : Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ()));
+    const Quat q = dim == 3 ? read_orientation(t) : lift_angle(angle);
 
     Mat3 I3 = Mat3::Identity();
     double I2 = 1.0;

@@ -42,7 +42,7 @@ SolveBody solve_body(const Scene& scene, std::size_t i, const CollisionInstant::
 void place(CollisionInstant::Side* side, const Pose2& p) {
     side->x = lift(p.x);
     side->angle = p.angle;
-    side->q = Quat(Eigen::AngleAxisd(p.angle, Vec3::UnitZ()));
+    side->q = lift_angle(p.angle);
 }
 void place(CollisionInstant::Side* side, const Pose3& p) {
     side->x = p.x;

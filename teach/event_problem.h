@@ -22,12 +22,8 @@ struct CollisionInstant {
     Vec3 point = Vec3::Zero();           // m (1D: unused)
     Vec3 normal = Vec3::UnitX();         // unit (1D: +x, b is to the right of a)
     Vec3 impulse = Vec3::Zero();         // N s on b: what the world applied
-    struct Side {
-        Vec3 x = Vec3::Zero();           // m, centre of mass at the instant
-        Quat q = Quat::Identity();       // orientation (2D: about +z by `angle`)
-        double angle = 0.0;              // rad, 2D
-        Vec3 v = Vec3::Zero(), w = Vec3::Zero();  // just before the impulse
-    } before_a, before_b;
+    using Side = BodyState;              // engine/body.h: x, q (2D: angle), v, w just before
+    Side before_a, before_b;
     // Just after it, as the world resolved it.
     Vec3 va_after = Vec3::Zero(), wa_after = Vec3::Zero(), vb_after = Vec3::Zero(), wb_after = Vec3::Zero();
 };
