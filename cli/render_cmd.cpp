@@ -44,24 +44,6 @@ namespace {
 constexpr int kBadInput = 2;
 const char* const kCommand = "";  // option errors name the option, not a file
 
-struct Quality {
-    // MSAA samples. The 2D diagram is anti-aliased by Dear ImGui itself (feathered edges):
-    // multisampling adds nothing visible there and made frames several times slower on
-    // llvmpipe, so the 2D view never uses it. The 3D view's shaded bodies need it.
-    int samples_2d;
-    int samples_3d;
-    bool smooth;          // ImGui edge anti-aliasing
-    render::PngOptions png;
-    int encoders;         // PNG threads
-};
-
-Quality quality_of(const std::string& name) {
-    if (name == "low") return {0, 0, false, {1, true, false}, 1};
-    if (name == "medium") return {0, 4, true, {1, true, false}, 1};
-    if (name == "high") return {0, 4, true, {6, false, false}, 2};  // smaller files, slower
-    throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");
-}
-
 // ---- Stopping on SIGINT / SIGTERM ----
 
 // Set by the signal handler; the render loop checks it between frames.
@@ -142,18 +124,18 @@ WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
 
 // ---- Output directory ----
 
-void prepare_directory(const RenderOptions& o) {
+void prepare_directory(const RenderRequest& rq) {
     std::error_code ec;
-    const fs::path dir(o.out_dir);
+    const fs::path dir(rq.out_dir);
     if (fs::exists(dir, ec)) {
         if (!fs::is_directory(dir, ec))
-            throw InputError(o.out_dir, {}, "", "exists and is not a directory");
-        if (!fs::is_empty(dir, ec) && !o.force)
-            throw InputError(o.out_dir, {}, "",
+            throw InputError(rq.out_dir, {}, "", "exists and is not a directory");
+        if (!fs::is_empty(dir, ec) && !rq.force)
+            throw InputError(rq.out_dir, {}, "",
                              "directory is not empty (use --force to write into it)");
     }
     fs::create_directories(dir / "frames", ec);
-    if (ec) throw std::runtime_error(o.out_dir + ": cannot create directory: " + ec.message());
+    if (ec) throw std::runtime_error(rq.out_dir + ": cannot create directory: " + ec.message());
     // --force: old frames would mix with the new ones; remove ours (and only ours).
     for (const fs::directory_entry& e : fs::directory_iterator(dir / "frames", ec)) {
         const std::string name = e.path().filename().string();
@@ -259,25 +241,6 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
 
 }  // namespace
 
-render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene, const SceneView& view,
-                                      const render::FormulaText* formula) {
-    const Quality q = quality_of(o.quality);
-    int width = 0, height = 0;
-    parse_render_size(o.size, &width, &height);
-    const bool three_d = o.view.empty() ? scene.dimension == 3 : o.view == "3d";
-    render::RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.samples = three_d ? q.samples_3d : q.samples_2d;
-    settings.smooth = q.smooth;
-    settings.view = three_d ? render::ViewKind::perspective : render::ViewKind::diagram;
-    // Time with enough decimals to change from frame to frame.
-    settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
-    if (formula) settings.formula = *formula;
-    settings.camera = {view.camera_azimuth, view.camera_elevation, view.camera_target, view.camera_distance};
-    return settings;
-}
-
 std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {
     const std::optional<Moments> m = first_moments(scene, run);
     if (!m) return std::nullopt;
@@ -294,31 +257,27 @@ std::optional<render::Image> first_collision_figure(render::GlContext& context, 
 
 namespace {
 
-double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView& view,
+double write_outputs(const RenderRequest& rq, const Scene& scene, const SceneView& view,
                      const std::vector<double>& times, const SceneRun& run, const Moments* moments,
                      const WorkedExample* worked, const Lesson* lesson,
                      std::vector<RenderReport::Variant>* variant_results, std::ostream& err) {
-    const Quality q = quality_of(o.quality);
-    int width = 0, height = 0;
-    parse_render_size(o.size, &width, &height);
-    render::GlBackend backend;
-    if (!render::parse_gl_backend(o.backend, &backend))
-        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
+    const Quality& q = rq.frame.quality;
+    const int width = rq.frame.width, height = rq.frame.height;
 
-    std::unique_ptr<render::GlContext> context = render::create_gl_context(backend);
-    const render::RenderSettings settings = frame_settings(o, scene, view, worked ? &worked->formula : nullptr);
+    std::unique_ptr<render::GlContext> context = render::create_gl_context(rq.backend);
+    const render::RenderSettings settings = frame_settings(rq.frame, scene, view, worked ? &worked->formula : nullptr);
     render::Renderer renderer(*context, scene, settings);
     renderer.prepare(run.frames, run.impacts);
 
     // Frames: rendering here, PNG encoding beside it.
     const double trail = std::min(1.0, 0.3 * scene.duration);
     render::FrameSinkOptions sink_options;
-    sink_options.dir = o.out_dir + "/frames";
+    sink_options.dir = rq.out_dir + "/frames";
     sink_options.png = q.png;
     sink_options.threads = q.encoders;
     sink_options.buffers = q.encoders + 2;
     render::FrameSink sink(width, height, sink_options);
-    const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+    const bool terminal = !rq.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
     render::ProgressBar progress(err, static_cast<long>(times.size()), terminal, "rendering");
     std::size_t next_impact = 0;
     render::Decor decor;
@@ -354,7 +313,7 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
             d.velocities = k != 1;  // at the instant: the impulse, not the velocities
             d.directions = view.directions;
             const render::Image image = renderer.render(f, d);
-            render::write_png_atomic(o.out_dir + "/" + names[k], image.width, image.height,
+            render::write_png_atomic(rq.out_dir + "/" + names[k], image.width, image.height,
                                      image.rgba.data(), q.png);
         }
         Figure fig = collision_figure(*context, scene, view, settings, *moments);
@@ -364,8 +323,8 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
         const int decimals = settings.time_decimals + 1;
         // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
         const render::Image thumb = render::shrink(panels[1], 480);
-        render::write_png_atomic(o.out_dir + "/thumb.png", thumb.width, thumb.height, thumb.rgba.data(), q.png);
-        render::write_png_atomic(o.out_dir + "/figure.png", figure.width, figure.height,
+        render::write_png_atomic(rq.out_dir + "/thumb.png", thumb.width, thumb.height, thumb.rgba.data(), q.png);
+        render::write_png_atomic(rq.out_dir + "/figure.png", figure.width, figure.height,
                                  figure.rgba.data(), q.png);
 
         // A lesson's variants: the same three moments of each, one row per scene, framed
@@ -406,7 +365,7 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
                                                       height));
             }
             const render::Image all = render::stack_vertically(rows);
-            render::write_png_atomic(o.out_dir + "/variants.png", all.width, all.height, all.rgba.data(), q.png);
+            render::write_png_atomic(rq.out_dir + "/variants.png", all.width, all.height, all.rgba.data(), q.png);
         }
     }
     return seconds;
@@ -414,61 +373,13 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
 
 }  // namespace
 
-bool parse_render_size(const std::string& text, int* width, int* height) {
-    static const std::pair<const char*, std::pair<int, int>> presets[] = {
-        {"480p", {854, 480}}, {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}}};
-    for (const auto& [name, size] : presets)
-        if (text == name) {
-            *width = size.first;
-            *height = size.second;
-            return true;
-        }
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-        return false;
-    if (w < 16 || h < 16 || w > 8192 || h > 8192) return false;
-    *width = w;
-    *height = h;
-    return true;
-}
-
-void read_render_size(const std::string& text, int* width, int* height) {
-    if (!parse_render_size(text, width, height))
-        throw InputError(kCommand, {}, "--size",
-                         "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" + text + "'");
-}
-
-RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
+RenderReport render_scenario(const RenderRequest& rq, std::ostream& err) {
     const SignalGuard signals;
     RenderReport report;
-    // Options first: nothing is written when one is wrong.
-    int width = 0, height = 0;
-    read_render_size(o.size, &width, &height);
-    if (!(o.fps > 0 && o.fps <= 100000))
-        throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
-    quality_of(o.quality);
-    if (!o.view.empty() && o.view != "2d" && o.view != "3d")
-        throw InputError(kCommand, {}, "--view", "expected 2d or 3d, got '" + o.view + "'");
-    if (o.out_dir.empty()) throw InputError(kCommand, {}, "-o", "the output directory is required");
-    render::GlBackend backend;
-    if (!render::parse_gl_backend(o.backend, &backend))
-        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
-    if (o.format != "png" && o.format != "mp4" && o.format != "gif")
-        throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + o.format + "'");
-    std::string ffmpeg;
-    if (o.format != "png") {
-        ffmpeg = render::find_program("ffmpeg");
-        if (ffmpeg.empty())
-            throw InputError(kCommand, {}, "--format",
-                             o.format + " is made by ffmpeg, which is not installed (Debian: "
-                                        "apt-get install ffmpeg); --format png writes the frames alone");
-    }
-
-    report.scene = load_scenario(o.scenario, &report.view, &report.lesson);
+    report.scene = load_scenario(rq.scenario, &report.view, &report.lesson);
     const Scene& scene = report.scene;
     Scene timing = scene;
-    timing.output_dt = 1.0 / o.fps;
+    timing.output_dt = 1.0 / rq.frame.fps;
     const std::vector<double> times = output_times(timing);
     if (times.size() > 1000000)
         throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
@@ -477,7 +388,7 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
     // A lesson's answers come first: a question the run cannot answer is bad input.
     if (report.lesson) report.answers = answer_questions(*report.lesson, run.record);
     if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson);
-    prepare_directory(o);
+    prepare_directory(rq);
 
     std::unique_ptr<Moments> moments;
     if (std::optional<Moments> m = first_moments(scene, run)) {
@@ -487,26 +398,26 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
             << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
     }
     const DataFiles data = data_files(scene, run);
-    render::write_file_atomic(o.out_dir + "/data.csv", data.csv);
-    render::write_file_atomic(o.out_dir + "/events.csv", data.events_csv);
+    render::write_file_atomic(rq.out_dir + "/data.csv", data.csv);
+    render::write_file_atomic(rq.out_dir + "/events.csv", data.events_csv);
     std::ostringstream json;
     json << "{\"title\": " << nlohmann::json(scene.title).dump()
-         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(o.fps)
+         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(rq.frame.fps)
          << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
          << "\n]}\n";
-    render::write_file_atomic(o.out_dir + "/data.json", json.str());
+    render::write_file_atomic(rq.out_dir + "/data.json", json.str());
     std::unique_ptr<WorkedExample> worked;
     if (moments) {
         worked = std::make_unique<WorkedExample>(worked_example(scene, moments->instant));
         std::ostringstream md;
         write_markdown(worked->problem, worked->solution, md);
-        render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
+        render::write_file_atomic(rq.out_dir + "/worked-example.md", md.str());
         report.problem = worked->problem;
         report.solution = worked->solution;
         report.first_collision = moments->instant;
         report.world_note = worked->formula.note;
     }
-    report.seconds = write_outputs(o, scene, report.view, times, run, moments.get(), worked.get(),
+    report.seconds = write_outputs(rq, scene, report.view, times, run, moments.get(), worked.get(),
                                    report.lesson ? &*report.lesson : nullptr, &report.variants, err);
     if (report.lesson) {
         std::ostringstream md;
@@ -514,34 +425,33 @@ RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
         md << variants_markdown(report);
         if (report.penalty) {
             write_penalty_markdown(*report.penalty, md);
-            render::write_file_atomic(o.out_dir + "/penalty.svg", penalty_svg(*report.penalty));
-            render::write_file_atomic(o.out_dir + "/penalty-overlap.svg", penalty_overlap_svg(*report.penalty));
-            render::write_file_atomic(o.out_dir + "/penalty.csv", penalty_csv(*report.penalty));
+            render::write_file_atomic(rq.out_dir + "/penalty.svg", penalty_svg(*report.penalty));
+            render::write_file_atomic(rq.out_dir + "/penalty-overlap.svg", penalty_overlap_svg(*report.penalty));
+            render::write_file_atomic(rq.out_dir + "/penalty.csv", penalty_csv(*report.penalty));
         }
-        render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
+        render::write_file_atomic(rq.out_dir + "/lesson.md", md.str());
     }
     report.frames = static_cast<long>(times.size());
-    report.width = width;
-    report.height = height;
+    report.width = rq.frame.width;
+    report.height = rq.frame.height;
     for (const ImpactMark& im : run.impacts) report.collision_times.push_back(im.t);
     for (const FrameState& f : run.frames) {
         report.t.push_back(f.t);
         report.totals.push_back(render::frame_totals(scene, f));
     }
-    if (o.format != "png") {
-        report.video = "animation." + o.format;
-        const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+    if (rq.video) {
+        report.video = rq.video->file_name();
+        const bool terminal = !rq.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
         if (terminal) err << "encoding " << report.video << " with ffmpeg ...\n";
-        render::encode_video(ffmpeg, o.out_dir + "/frames", o.fps,
-                             o.format == "mp4" ? render::VideoFormat::mp4 : render::VideoFormat::gif,
-                             o.out_dir + "/" + report.video);
+        render::encode_video(rq.video->ffmpeg, rq.out_dir + "/frames", rq.frame.fps, rq.video->format,
+                             rq.out_dir + "/" + report.video);
     }
     return report;
 }
 
 int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     try {
-        const RenderReport r = render_scenario(o, err);
+        const RenderReport r = render_scenario(parse_render_request(o), err);
         if (!o.quiet) {
             char rate[64];
             std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
