@@ -11,20 +11,14 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "teach/event_problem.h"
-#include "scenario/input_error.h"
-#include "teach/lesson.h"
-#include "teach/lesson_penalty.h"
 #include "cli/scene_run.h"
-#include "teach/notation.h"
-#include "scenario/scene_file.h"
-#include "teach/solve.h"
 #include "cli/step.h"
 #include "render/context.h"
 #include "render/frame_sink.h"
@@ -32,6 +26,13 @@
 #include "render/png.h"
 #include "render/renderer.h"
 #include "render/video.h"
+#include "scenario/input_error.h"
+#include "scenario/scene_file.h"
+#include "teach/event_problem.h"
+#include "teach/lesson.h"
+#include "teach/lesson_penalty.h"
+#include "teach/notation.h"
+#include "teach/solve.h"
 
 namespace collide {
 
@@ -146,17 +147,11 @@ void prepare_directory(const RenderRequest& rq) {
         fs::remove(dir / name, ec);
 }
 
-std::string fixed_text(double x, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
-    return buf;
-}
-
 // A lesson's variants side by side: variants.png and, per scene, the first collision's
 // impulse, velocities after and kinetic energy lost.
-std::string variants_markdown(const RenderReport& r) {
-    if (r.variants.empty()) return "";
-    const int d = r.scene.dimension;
+std::string variants_markdown(const Scene& scene, const std::vector<RenderReport::Variant>& variants) {
+    if (variants.empty()) return "";
+    const int d = scene.dimension;
     const auto V = [d](const Vec3& v) {
         if (d == 1) return notation::num_text(v.x());
         return notation::vec(v, d).txt;
@@ -165,27 +160,82 @@ std::string variants_markdown(const RenderReport& r) {
     md << "\n## Side by side\n\n![the scene and its variants](variants.png)\n\n"
        << "| | impulse on b (N s) | a after (m/s) | b after (m/s) | kinetic energy lost (J) |\n"
        << "|---|---|---|---|---|\n";
-    for (const RenderReport::Variant& v : r.variants) {
+    for (const RenderReport::Variant& v : variants) {
         if (!v.first) {
             md << "| " << v.label << " | no collision | | | |\n";
             continue;
         }
         const CollisionInstant& c = *v.first;
-        md << "| " << v.label << " (" << r.scene.bodies[c.a].name << " on " << r.scene.bodies[c.b].name
+        md << "| " << v.label << " (" << scene.bodies[c.a].name << " on " << scene.bodies[c.b].name
            << ") | " << V(c.impulse) << " | " << V(c.va_after) << " | " << V(c.vb_after) << " | "
            << notation::num_text(v.ke_before - v.ke_after) << " |\n";
     }
     return md.str();
 }
 
-// The before / at / after panels of the first collision, framed on those three moments without
-// the table (figure.png's panels), and the figure of the three with their captions.
+// ---- The first collision's pictures ----
+
+// What a collision's pictures are drawn from: a scene, its [view] table, its run, and the
+// moments of its first collision in that run.
+struct CollisionShots {
+    const Scene& scene;
+    const SceneView& view;
+    const SceneRun& run;
+    const Moments& moments;
+};
+
+// Where pictures are written, and how they are encoded.
+struct PictureOut {
+    std::string dir;
+    render::PngOptions png;
+};
+
+// The before / at / after panels framed on the moments without the table, and the figure of
+// the three with their captions.
 struct Figure {
     std::vector<render::Image> panels;
     render::Image figure;
     render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
 };
 
+// One row of variants.png: a scene (the lesson's own or a variant) and its first collision.
+struct VariantRow {
+    std::string label;
+    const Scene* scene = nullptr;
+    Moments moments;
+};
+
+std::string fixed_text(double x, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+    return buf;
+}
+
+// The captions under the three panels: the moments' times.
+std::vector<std::string> time_notes(const Moments& moments, int decimals) {
+    return {"t = " + fixed_text(moments.before, decimals) + " s", "t = " + fixed_text(moments.at, decimals) + " s",
+            "t = " + fixed_text(moments.after, decimals) + " s"};
+}
+
+// The three moments drawn by a renderer framed on them: no trails, at the instant the impulse
+// instead of the velocities.
+std::vector<render::Image> three_panels(render::Renderer& renderer, const Moments& moments) {
+    std::vector<render::Image> panels;
+    for (int k = 0; k < 3; ++k) {
+        render::Decor d;
+        d.velocities = k != 1;
+        d.trails = false;
+        panels.push_back(renderer.render(moments.states[k], d));
+    }
+    return panels;
+}
+
+void write_png(const PictureOut& out, const std::string& name, const render::Image& image) {
+    render::write_png_atomic(out.dir + "/" + name, image.width, image.height, image.rgba.data(), out.png);
+}
+
+// The before / at / after panels of the first collision, framed on those three moments without
+// the table (figure.png's panels), and the figure of the three with their captions.
 Figure collision_figure(render::GlContext& context, const Scene& scene, const SceneView& view,
                         const render::RenderSettings& settings, const Moments& moments) {
     const int height = settings.height;
@@ -214,16 +264,8 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
     render::Renderer panels_renderer(context, scene, panel);
     panels_renderer.prepare(three, moments.states[1].impacts);
-    for (int k = 0; k < 3; ++k) {
-        render::Decor d;
-        d.velocities = k != 1;
-        d.trails = false;
-        out.panels.push_back(panels_renderer.render(moments.states[k], d));
-    }
-    const int decimals = settings.time_decimals + 1;
-    std::vector<std::string> notes = {"t = " + fixed_text(moments.before, decimals) + " s",
-                                      "t = " + fixed_text(moments.at, decimals) + " s",
-                                      "t = " + fixed_text(moments.after, decimals) + " s"};
+    out.panels = three_panels(panels_renderer, moments);
+    std::vector<std::string> notes = time_notes(moments, settings.time_decimals + 1);
     if (view.directions && scene.dimension == 1) {
         // The page's captions: a (the left block) catches b before, and does not pass it
         // after. The arrows show the positive direction; the velocities may be negative.
@@ -239,51 +281,167 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     return out;
 }
 
-}  // namespace
+// The trails behind the bodies (s) in the frames and in the stills.
+double trail_seconds(const Scene& scene) { return std::min(1.0, 0.3 * scene.duration); }
 
-std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {
-    const std::optional<Moments> m = first_moments(scene, run);
-    if (!m) return std::nullopt;
-    return worked_example(scene, m->instant).formula;
+// before.png, at.png and after.png: the moments as the frames' renderer draws them (with the
+// trails up to then; at the instant the impulse instead of the velocities).
+void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out) {
+    const char* names[3] = {"before.png", "at.png", "after.png"};
+    for (int k = 0; k < 3; ++k) {
+        FrameState f = shots.moments.states[k];
+        render::add_trails(shots.run.frames, trail_seconds(shots.scene), &f);
+        render::Decor d;
+        d.velocities = k != 1;  // at the instant: the impulse, not the velocities
+        d.directions = shots.view.directions;
+        write_png(out, names[k], frames.render(f, d));
+    }
 }
 
-std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
-                                                    const SceneView& view, const render::RenderSettings& settings,
-                                                    const SceneRun& run) {
-    const std::optional<Moments> m = first_moments(scene, run);
-    if (!m) return std::nullopt;
-    return collision_figure(context, scene, view, settings, *m).figure;
+// figure.png and thumb.png (the collision panel, 480 pixels wide); returns the figure.
+Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
+                    const PictureOut& out) {
+    Figure fig = collision_figure(context, shots.scene, shots.view, settings, shots.moments);
+    // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
+    write_png(out, "thumb.png", render::shrink(fig.panels[1], 480));
+    write_png(out, "figure.png", fig.figure);
+    return fig;
 }
 
-namespace {
+// variants.png: the same three moments of each row, framed alike with `figure`'s panels.
+void write_variants(render::GlContext& context, const std::vector<VariantRow>& rows,
+                    const render::RenderSettings& settings, const Figure& figure, const PictureOut& out) {
+    std::vector<render::Image> images;
+    for (const VariantRow& row : rows) {
+        const Moments& m = row.moments;
+        std::vector<FrameState> three(m.states, m.states + 3);
+        render::Renderer r(context, *row.scene, figure.panel);
+        r.prepare(three, m.states[1].impacts);
+        images.push_back(render::compose_figure(context, three_panels(r, m), {row.label + ": before", "at collision", "after"},
+                                                time_notes(m, settings.time_decimals + 1), settings.height));
+    }
+    write_png(out, "variants.png", render::stack_vertically(images));
+}
 
-double write_outputs(const RenderRequest& rq, const Scene& scene, const SceneView& view,
-                     const std::vector<double>& times, const SceneRun& run, const Moments* moments,
-                     const WorkedExample* worked, const Lesson* lesson,
-                     std::vector<RenderReport::Variant>* variant_results, std::ostream& err) {
+// Progress goes to err only when it is the process's stderr and a terminal.
+bool shows_progress(const RenderRequest& rq, std::ostream& err) {
+    return !rq.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+}
+
+// ==== The stages of a render: load, run, analyse, write ====
+
+// 1. Load: the scene, its [view] table and its lesson, and the times of the frames.
+struct Loaded {
+    Scene scene;
+    SceneView view;
+    std::optional<Lesson> lesson;
+    std::vector<double> times;  // s: the scene sampled at the frame rate
+};
+
+Loaded load_stage(const RenderRequest& rq) {
+    Loaded in;
+    in.scene = load_scenario(rq.scenario, &in.view, &in.lesson);
+    Scene timing = in.scene;
+    timing.output_dt = 1.0 / rq.frame.fps;
+    in.times = output_times(timing);
+    if (in.times.size() > 1000000)
+        throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
+    return in;
+}
+
+// 2. Run: the scene, once (everything below reads this run), and what a lesson computes from
+// it: the answers to its questions (one the run cannot answer is bad input, found before
+// anything is written) and its penalty study.
+struct Ran {
+    SceneRun run;
+    std::vector<LessonAnswer> answers;
+    std::optional<PenaltyStudy> penalty;
+};
+
+Ran run_stage(const Loaded& in) {
+    Ran out{run_scene(in.scene, in.times), {}, std::nullopt};
+    if (in.lesson) out.answers = answer_questions(*in.lesson, out.run.record);
+    if (in.lesson && in.lesson->penalty) out.penalty = penalty_study(*in.lesson);
+    return out;
+}
+
+// 3. Analyse: the first collision's moments and worked example, and a lesson's variants (each
+// run once, sampled as the lesson's own scene). Nothing here without a collision.
+struct Analysis {
+    std::optional<Moments> moments;
+    std::optional<WorkedExample> worked;
+    std::vector<RenderReport::Variant> variants;  // the lesson's scene, then each variant
+    std::vector<VariantRow> rows;                 // variants.png: those with a collision
+};
+
+void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
+    std::vector<std::pair<std::string, const Scene*>> scenes = {
+        {in.lesson->label.empty() ? "as above" : in.lesson->label, &in.scene}};
+    for (const LessonVariant& v : in.lesson->variants) scenes.push_back({v.label, &v.scene});
+    for (const auto& [label, s] : scenes) {
+        const std::optional<Moments> m = s == &in.scene ? moments : first_moments(*s, run_scene(*s, in.times));
+        RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
+        if (m) {
+            result.first = m->instant;
+            result.ke_before = pair_kinetic_energy(*s, m->instant, false);
+            result.ke_after = pair_kinetic_energy(*s, m->instant, true);
+            out->rows.push_back({label, s, *m});
+        }
+        out->variants.push_back(result);
+    }
+}
+
+Analysis analyse_stage(const Loaded& in, const SceneRun& run) {
+    Analysis out;
+    out.moments = first_moments(in.scene, run);
+    if (!out.moments) return out;
+    out.worked = worked_example(in.scene, out.moments->instant);
+    if (in.lesson && !in.lesson->variants.empty()) analyse_variants(in, *out.moments, &out);
+    return out;
+}
+
+// 4. Write: every file, each under a temporary name renamed when complete.
+struct Written {
+    double seconds = 0.0;  // rendering and writing the frames
+    std::string video;     // its file name, or ""
+};
+
+// data.csv, events.csv and data.json.
+void write_data_files(const RenderRequest& rq, const Scene& scene, const SceneRun& run) {
+    const DataFiles data = data_files(scene, run);
+    render::write_file_atomic(rq.out_dir + "/data.csv", data.csv);
+    render::write_file_atomic(rq.out_dir + "/events.csv", data.events_csv);
+    std::ostringstream json;
+    json << "{\"title\": " << nlohmann::json(scene.title).dump()
+         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(rq.frame.fps)
+         << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
+         << "\n]}\n";
+    render::write_file_atomic(rq.out_dir + "/data.json", json.str());
+}
+
+void write_worked_example(const std::string& dir, const WorkedExample& worked) {
+    std::ostringstream md;
+    write_markdown(worked.problem, worked.solution, md);
+    render::write_file_atomic(dir + "/worked-example.md", md.str());
+}
+
+// frames/frame_00000.png ...: rendering here, PNG encoding beside it. Returns the seconds it
+// took; throws Interrupted on SIGINT / SIGTERM (the frames already handed over are finished).
+double write_frames(render::Renderer& renderer, const SceneRun& run, const RenderRequest& rq, double trail,
+                    std::ostream& err) {
     const Quality& q = rq.frame.quality;
-    const int width = rq.frame.width, height = rq.frame.height;
-
-    std::unique_ptr<render::GlContext> context = render::create_gl_context(rq.backend);
-    const render::RenderSettings settings = frame_settings(rq.frame, scene, view, worked ? &worked->formula : nullptr);
-    render::Renderer renderer(*context, scene, settings);
-    renderer.prepare(run.frames, run.impacts);
-
-    // Frames: rendering here, PNG encoding beside it.
-    const double trail = std::min(1.0, 0.3 * scene.duration);
     render::FrameSinkOptions sink_options;
     sink_options.dir = rq.out_dir + "/frames";
     sink_options.png = q.png;
     sink_options.threads = q.encoders;
     sink_options.buffers = q.encoders + 2;
-    render::FrameSink sink(width, height, sink_options);
-    const bool terminal = !rq.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
-    render::ProgressBar progress(err, static_cast<long>(times.size()), terminal, "rendering");
+    render::FrameSink sink(rq.frame.width, rq.frame.height, sink_options);
+    render::ProgressBar progress(err, static_cast<long>(run.frames.size()), shows_progress(rq, err), "rendering");
     std::size_t next_impact = 0;
     render::Decor decor;
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < run.frames.size(); ++k) {
-        if (interrupted()) {  // SIGINT / SIGTERM: the frames already handed over are finished
+        if (interrupted()) {
             sink.finish();
             progress.finish();
             throw Interrupted(sink.written());
@@ -300,176 +458,144 @@ double write_outputs(const RenderRequest& rq, const Scene& scene, const SceneVie
     }
     sink.finish();
     progress.finish();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
-    if (moments) {
-        // The three moments at the frame size, as in the animation (with trails up to then).
-        const char* names[3] = {"before.png", "at.png", "after.png"};
-        std::vector<render::Image> panels;
-        for (int k = 0; k < 3; ++k) {
-            FrameState f = moments->states[k];
-            render::add_trails(run.frames, trail, &f);
-            render::Decor d;
-            d.velocities = k != 1;  // at the instant: the impulse, not the velocities
-            d.directions = view.directions;
-            const render::Image image = renderer.render(f, d);
-            render::write_png_atomic(rq.out_dir + "/" + names[k], image.width, image.height,
-                                     image.rgba.data(), q.png);
-        }
-        Figure fig = collision_figure(*context, scene, view, settings, *moments);
-        panels = std::move(fig.panels);
-        const render::Image& figure = fig.figure;
-        const render::RenderSettings& panel = fig.panel;
-        const int decimals = settings.time_decimals + 1;
-        // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
-        const render::Image thumb = render::shrink(panels[1], 480);
-        render::write_png_atomic(rq.out_dir + "/thumb.png", thumb.width, thumb.height, thumb.rgba.data(), q.png);
-        render::write_png_atomic(rq.out_dir + "/figure.png", figure.width, figure.height,
-                                 figure.rgba.data(), q.png);
-
-        // A lesson's variants: the same three moments of each, one row per scene, framed
-        // alike (the panels of the lesson's own scene set the size).
-        if (lesson && !lesson->variants.empty()) {
-            std::vector<render::Image> rows;
-            std::vector<std::pair<std::string, const Scene*>> scenes = {
-                {lesson->label.empty() ? "as above" : lesson->label, &scene}};
-            for (const LessonVariant& v : lesson->variants) scenes.push_back({v.label, &v.scene});
-            for (const auto& [label, s] : scenes) {
-                RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
-                // Each variant is run once, sampled as the lesson's own scene.
-                const std::optional<Moments> m = s == &scene ? std::optional<Moments>(*moments)
-                                                             : first_moments(*s, run_scene(*s, times));
-                if (!m) {
-                    variant_results->push_back(result);
-                    continue;
-                }
-                result.first = m->instant;
-                result.ke_before = pair_kinetic_energy(*s, m->instant, false);
-                result.ke_after = pair_kinetic_energy(*s, m->instant, true);
-                variant_results->push_back(result);
-                std::vector<FrameState> three_v(m->states, m->states + 3);
-                render::Renderer r(*context, *s, panel);
-                r.prepare(three_v, m->states[1].impacts);
-                std::vector<render::Image> row;
-                for (int k = 0; k < 3; ++k) {
-                    render::Decor d;
-                    d.velocities = k != 1;
-                    d.trails = false;
-                    row.push_back(r.render(m->states[k], d));
-                }
-                rows.push_back(render::compose_figure(*context, row,
-                                                      {label + ": before", "at collision", "after"},
-                                                      {"t = " + fixed_text(m->before, decimals) + " s",
-                                                       "t = " + fixed_text(m->at, decimals) + " s",
-                                                       "t = " + fixed_text(m->after, decimals) + " s"},
-                                                      height));
-            }
-            const render::Image all = render::stack_vertically(rows);
-            render::write_png_atomic(rq.out_dir + "/variants.png", all.width, all.height, all.rgba.data(), q.png);
-        }
+// The frames, then the first collision's stills, figure and thumbnail, and a lesson's
+// variants.png, all in one GL context. Returns the seconds the frames took.
+double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun& run, const Analysis& a,
+                      std::ostream& err) {
+    std::unique_ptr<render::GlContext> context = render::create_gl_context(rq.backend);
+    const render::RenderSettings settings =
+        frame_settings(rq.frame, in.scene, in.view, a.worked ? &a.worked->formula : nullptr);
+    render::Renderer renderer(*context, in.scene, settings);
+    renderer.prepare(run.frames, run.impacts);
+    const double seconds = write_frames(renderer, run, rq, trail_seconds(in.scene), err);
+    if (a.moments) {
+        const CollisionShots shots{in.scene, in.view, run, *a.moments};
+        const PictureOut out{rq.out_dir, rq.frame.quality.png};
+        write_stills(renderer, shots, out);
+        const Figure figure = write_figure(*context, shots, settings, out);
+        if (!a.rows.empty()) write_variants(*context, a.rows, settings, figure, out);
     }
     return seconds;
+}
+
+// lesson.md: the lesson's text, its questions with the answers, its variants side by side and
+// its penalty study (with penalty.svg, penalty-overlap.svg and penalty.csv).
+void write_lesson(const std::string& dir, const Loaded& in, const Ran& ran, const Analysis& a) {
+    std::ostringstream md;
+    write_lesson_markdown(*in.lesson, ran.answers, md);
+    md << variants_markdown(in.scene, a.variants);
+    if (ran.penalty) {
+        write_penalty_markdown(*ran.penalty, md);
+        render::write_file_atomic(dir + "/penalty.svg", penalty_svg(*ran.penalty));
+        render::write_file_atomic(dir + "/penalty-overlap.svg", penalty_overlap_svg(*ran.penalty));
+        render::write_file_atomic(dir + "/penalty.csv", penalty_csv(*ran.penalty));
+    }
+    render::write_file_atomic(dir + "/lesson.md", md.str());
+}
+
+// animation.mp4 or .gif from the frames; returns its file name.
+std::string write_video(const RenderRequest& rq, std::ostream& err) {
+    const VideoRequest& video = *rq.video;
+    const std::string name = video.file_name();
+    if (shows_progress(rq, err)) err << "encoding " << name << " with ffmpeg ...\n";
+    render::encode_video(video.ffmpeg, rq.out_dir + "/frames", rq.frame.fps, video.format, rq.out_dir + "/" + name);
+    return name;
+}
+
+Written write_stage(const RenderRequest& rq, const Loaded& in, const Ran& ran, const Analysis& a,
+                    std::ostream& err) {
+    prepare_directory(rq);
+    if (!a.moments)
+        err << "collide render: no collision in " << in.scene.duration
+            << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
+    write_data_files(rq, in.scene, ran.run);
+    if (a.worked) write_worked_example(rq.out_dir, *a.worked);
+    Written out;
+    out.seconds = write_pictures(rq, in, ran.run, a, err);
+    if (in.lesson) write_lesson(rq.out_dir, in, ran, a);
+    if (rq.video) out.video = write_video(rq, err);
+    return out;
+}
+
+// What the stages made and computed, for the summary line and for `collide material`.
+RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, const Written& w) {
+    RenderReport r;
+    r.scene = std::move(in.scene);
+    r.view = in.view;
+    r.lesson = std::move(in.lesson);
+    r.answers = std::move(ran.answers);
+    r.penalty = std::move(ran.penalty);
+    if (a.worked) {
+        r.problem = a.worked->problem;
+        r.solution = a.worked->solution;
+        r.world_note = a.worked->formula.note;
+    }
+    if (a.moments) r.first_collision = a.moments->instant;
+    r.variants = std::move(a.variants);
+    for (const ImpactMark& im : ran.run.impacts) r.collision_times.push_back(im.t);
+    for (const FrameState& f : ran.run.frames) {
+        r.t.push_back(f.t);
+        r.totals.push_back(render::frame_totals(r.scene, f));
+    }
+    r.frames = static_cast<long>(in.times.size());
+    r.width = rq.frame.width;
+    r.height = rq.frame.height;
+    r.seconds = w.seconds;
+    r.video = w.video;
+    return r;
+}
+
+void print_summary(const RenderRequest& rq, const RenderReport& r, std::ostream& out) {
+    char rate[64];
+    std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
+                  r.seconds > 0 ? static_cast<double>(r.frames) / r.seconds : 0.0);
+    out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate << " to " << rq.out_dir
+        << "/frames";
+    if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";
+    out << ", data.csv, data.json, events.csv";
+    if (r.lesson) out << ", lesson.md";
+    if (!r.variants.empty()) out << ", variants.png";
+    if (r.penalty) out << ", penalty.svg, penalty-overlap.svg, penalty.csv";
+    if (!r.video.empty()) out << ", " << r.video;
+    // Peak resident memory of the whole process (Linux: kilobytes).
+    rusage usage{};
+    if (getrusage(RUSAGE_SELF, &usage) == 0) out << "; peak memory " << (usage.ru_maxrss + 512) / 1024 << " MB";
+    out << "\n";
 }
 
 }  // namespace
 
 RenderReport render_scenario(const RenderRequest& rq, std::ostream& err) {
     const SignalGuard signals;
-    RenderReport report;
-    report.scene = load_scenario(rq.scenario, &report.view, &report.lesson);
-    const Scene& scene = report.scene;
-    Scene timing = scene;
-    timing.output_dt = 1.0 / rq.frame.fps;
-    const std::vector<double> times = output_times(timing);
-    if (times.size() > 1000000)
-        throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
-    // The scene is run once; everything below reads this run.
-    const SceneRun run = run_scene(scene, times);
-    // A lesson's answers come first: a question the run cannot answer is bad input.
-    if (report.lesson) report.answers = answer_questions(*report.lesson, run.record);
-    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson);
-    prepare_directory(rq);
+    Loaded in = load_stage(rq);
+    Ran ran = run_stage(in);
+    Analysis analysis = analyse_stage(in, ran.run);
+    const Written written = write_stage(rq, in, ran, analysis, err);
+    return report_of(rq, std::move(in), std::move(ran), std::move(analysis), written);
+}
 
-    std::unique_ptr<Moments> moments;
-    if (std::optional<Moments> m = first_moments(scene, run)) {
-        moments = std::make_unique<Moments>(std::move(*m));
-    } else {
-        err << "collide render: no collision in " << scene.duration
-            << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
-    }
-    const DataFiles data = data_files(scene, run);
-    render::write_file_atomic(rq.out_dir + "/data.csv", data.csv);
-    render::write_file_atomic(rq.out_dir + "/events.csv", data.events_csv);
-    std::ostringstream json;
-    json << "{\"title\": " << nlohmann::json(scene.title).dump()
-         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(rq.frame.fps)
-         << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
-         << "\n]}\n";
-    render::write_file_atomic(rq.out_dir + "/data.json", json.str());
-    std::unique_ptr<WorkedExample> worked;
-    if (moments) {
-        worked = std::make_unique<WorkedExample>(worked_example(scene, moments->instant));
-        std::ostringstream md;
-        write_markdown(worked->problem, worked->solution, md);
-        render::write_file_atomic(rq.out_dir + "/worked-example.md", md.str());
-        report.problem = worked->problem;
-        report.solution = worked->solution;
-        report.first_collision = moments->instant;
-        report.world_note = worked->formula.note;
-    }
-    report.seconds = write_outputs(rq, scene, report.view, times, run, moments.get(), worked.get(),
-                                   report.lesson ? &*report.lesson : nullptr, &report.variants, err);
-    if (report.lesson) {
-        std::ostringstream md;
-        write_lesson_markdown(*report.lesson, report.answers, md);
-        md << variants_markdown(report);
-        if (report.penalty) {
-            write_penalty_markdown(*report.penalty, md);
-            render::write_file_atomic(rq.out_dir + "/penalty.svg", penalty_svg(*report.penalty));
-            render::write_file_atomic(rq.out_dir + "/penalty-overlap.svg", penalty_overlap_svg(*report.penalty));
-            render::write_file_atomic(rq.out_dir + "/penalty.csv", penalty_csv(*report.penalty));
-        }
-        render::write_file_atomic(rq.out_dir + "/lesson.md", md.str());
-    }
-    report.frames = static_cast<long>(times.size());
-    report.width = rq.frame.width;
-    report.height = rq.frame.height;
-    for (const ImpactMark& im : run.impacts) report.collision_times.push_back(im.t);
-    for (const FrameState& f : run.frames) {
-        report.t.push_back(f.t);
-        report.totals.push_back(render::frame_totals(scene, f));
-    }
-    if (rq.video) {
-        report.video = rq.video->file_name();
-        const bool terminal = !rq.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
-        if (terminal) err << "encoding " << report.video << " with ffmpeg ...\n";
-        render::encode_video(rq.video->ffmpeg, rq.out_dir + "/frames", rq.frame.fps, rq.video->format,
-                             rq.out_dir + "/" + report.video);
-    }
-    return report;
+std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {
+    const std::optional<Moments> m = first_moments(scene, run);
+    if (!m) return std::nullopt;
+    return worked_example(scene, m->instant).formula;
+}
+
+std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
+                                                    const SceneView& view, const render::RenderSettings& settings,
+                                                    const SceneRun& run) {
+    const std::optional<Moments> m = first_moments(scene, run);
+    if (!m) return std::nullopt;
+    return collision_figure(context, scene, view, settings, *m).figure;
 }
 
 int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     try {
-        const RenderReport r = render_scenario(parse_render_request(o), err);
-        if (!o.quiet) {
-            char rate[64];
-            std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
-                          r.seconds > 0 ? static_cast<double>(r.frames) / r.seconds : 0.0);
-            out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate
-                << " to " << o.out_dir << "/frames";
-            if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";
-            out << ", data.csv, data.json, events.csv";
-            if (r.lesson) out << ", lesson.md";
-            if (!r.variants.empty()) out << ", variants.png";
-            if (r.penalty) out << ", penalty.svg, penalty-overlap.svg, penalty.csv";
-            if (!r.video.empty()) out << ", " << r.video;
-            // Peak resident memory of the whole process (Linux: kilobytes).
-            rusage usage{};
-            if (getrusage(RUSAGE_SELF, &usage) == 0)
-                out << "; peak memory " << (usage.ru_maxrss + 512) / 1024 << " MB";
-            out << "\n";
-        }
+        const RenderRequest request = parse_render_request(o);
+        const RenderReport r = render_scenario(request, err);
+        if (!request.quiet) print_summary(request, r, out);
         return 0;
     } catch (const Interrupted& e) {
         err << "collide: interrupted: " << e.frames << " complete frames written to " << o.out_dir

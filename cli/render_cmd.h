@@ -64,7 +64,11 @@ struct Interrupted : std::runtime_error {
     long frames;
 };
 
-// Renders `request.scenario` into request.out_dir as the command does, without the summary.
+// Renders `request.scenario` into request.out_dir as the command does, without the summary:
+// load (the scene, its [view], its lesson), run (the scene once; a lesson's answers and
+// penalty study), analyse (the first collision's moments, its worked example, a lesson's
+// variants), write (the data files, worked-example.md, the frames, the stills, the figure,
+// variants.png, lesson.md, the video).
 // Throws InputError (bad input: nothing written), Interrupted, or std::runtime_error.
 RenderReport render_scenario(const RenderRequest& request, std::ostream& err);
 
