@@ -14,6 +14,7 @@
 #include "cli/gui_model.h"
 #include "scenario/input_error.h"
 #include "teach/lesson.h"
+#include "cli/figures.h"
 #include "cli/render_cmd.h"
 #include "cli/render_request.h"
 #include "render/png.h"

@@ -79,13 +79,8 @@ RenderReport render_scenario(const RenderRequest& request, std::ostream& err);
 // 1 any other failure. Progress goes to err when it is the process's stderr and a terminal.
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
 
-// What `collide gui` shares with the frames of `collide render` (and frame_settings,
-// cli/render_request.h): the first collision's formula overlay, and its before / at / after
-// figure (figure.png), of the scene's run (run_scene at the frame rate); nullopt when the run
-// has no collision.
+// The first collision's formula overlay of the scene's run (run_scene at the frame rate), as
+// the frames show it (`collide gui` draws it too); nullopt when the run has no collision.
 std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run);
-std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
-                                                    const SceneView& view, const render::RenderSettings& settings,
-                                                    const SceneRun& run);
 
 }  // namespace collide
