@@ -14,7 +14,9 @@
 #include "cli/gui_model.h"
 #include "scenario/input_error.h"
 #include "scenario/lesson.h"
+#include "cli/figures.h"
 #include "cli/render_cmd.h"
+#include "cli/render_request.h"
 #include "render/png.h"
 #include "render/renderer.h"
 #include "render/window.h"
@@ -34,13 +36,15 @@ namespace {
 const char* const kCommand = "";  // option errors name the option
 
 // The options, the script and the scene, read before any window: bad input is exit code 2
-// (file, line and word named) with or without a display, with or without GLFW.
-bool read_gui_input(const GuiOptions& o, std::ostream& err, int* frame_w, int* frame_h,
-                    std::vector<GuiAction>* script) {
+// (file, line and word named) with or without a display, with or without GLFW. The frames
+// are as collide render draws them at its default quality.
+bool read_gui_input(const GuiOptions& o, std::ostream& err, FrameSpec* frame, std::vector<GuiAction>* script) {
     try {
-        read_render_size(o.size, frame_w, frame_h);
+        read_render_size(o.size, &frame->width, &frame->height);
         if (!(o.fps > 0 && o.fps <= 1000))
             throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 1000]");
+        frame->fps = o.fps;
+        frame->view = read_view(o.view);
         if (!o.script.empty()) *script = parse_gui_script(o.script);
         load_scenario(o.scenario);
     } catch (const InputError& e) {
@@ -55,9 +59,9 @@ bool read_gui_input(const GuiOptions& o, std::ostream& err, int* frame_w, int* f
 #ifndef COLLIDE_HAVE_GLFW
 
 int run_gui(const GuiOptions& o, std::ostream&, std::ostream& err) {
-    int frame_w = 0, frame_h = 0;
+    FrameSpec frame;
     std::vector<GuiAction> script;
-    if (!read_gui_input(o, err, &frame_w, &frame_h, &script)) return 2;
+    if (!read_gui_input(o, err, &frame, &script)) return 2;
     err << "collide gui: " << render::window_support() << "\n";
     return 1;
 }
@@ -87,13 +91,13 @@ std::string fixed(double x, int decimals) {
 // texture the frame is shown from.
 class Session {
 public:
-    Session(render::Window& window, const GuiOptions& o, const std::string& scenario)
-        : window_(window), options_(o) {
+    Session(render::Window& window, const FrameSpec& frame, const std::string& scenario)
+        : window_(window), frame_(frame) {
         scene_source_ = load_scenario(scenario, &view_, &lesson_);
         id_ = lesson_ ? lesson_->id : scenario;
         if (const auto slash = id_.find_last_of('/'); slash != std::string::npos) id_ = id_.substr(slash + 1);
         if (const auto dot = id_.rfind(".toml"); dot != std::string::npos) id_ = id_.substr(0, dot);
-        model_ = std::make_unique<GuiModel>(scene_source_, o.fps);
+        model_ = std::make_unique<GuiModel>(scene_source_, frame.fps);
         rebuild_renderer();
     }
 
@@ -109,12 +113,8 @@ public:
     // After a change of the scene or of the panels shown: the settings, the formula and the
     // framing follow the edited scene.
     void rebuild_renderer() {
-        RenderOptions ro;
-        ro.size = options_.size;
-        ro.fps = options_.fps;
-        ro.view = options_.view;
         const std::optional<render::FormulaText> formula = first_collision_formula(model_->scene(), model_->run());
-        settings_ = frame_settings(ro, model_->scene(), view_, formula ? &*formula : nullptr);
+        settings_ = frame_settings(frame_, model_->scene(), view_, formula ? &*formula : nullptr);
         settings_.header = toggles_.header;
         settings_.table = toggles_.table;
         settings_.plots = toggles_.plots;
@@ -188,7 +188,7 @@ public:
 
 private:
     render::Window& window_;
-    GuiOptions options_;
+    FrameSpec frame_;
     Scene scene_source_;
     SceneView view_;
     std::optional<Lesson> lesson_;
@@ -430,9 +430,10 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
 }  // namespace
 
 int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
-    int frame_w = 0, frame_h = 0;
+    FrameSpec frame;
     std::vector<GuiAction> script;
-    if (!read_gui_input(o, err, &frame_w, &frame_h, &script)) return 2;
+    if (!read_gui_input(o, err, &frame, &script)) return 2;
+    const int frame_w = frame.width, frame_h = frame.height;
 
     std::unique_ptr<render::Window> window;
     const int window_h = std::max(frame_h, kMinHeight);
@@ -457,7 +458,7 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
 
     try {
         Controls controls(*window);
-        auto session = std::make_unique<Session>(*window, o, o.scenario);
+        auto session = std::make_unique<Session>(*window, frame, o.scenario);
         controls.make_current();
         Ui ui;
         std::size_t next_action = 0;
@@ -485,7 +486,7 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
                     else if (a.verb == "screenshot") screenshot = a.args[0];
                     else if (a.verb == "open") {
                         try {
-                            session = std::make_unique<Session>(*window, o, a.args[0]);
+                            session = std::make_unique<Session>(*window, frame, a.args[0]);
                         } catch (const InputError& e) {
                             throw InputError(o.script, {a.line, 1}, a.verb, e.what());
                         }
@@ -573,7 +574,7 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
                 ui.status = session->save_figure(path) ? "saved " + path : "the run has no collision to draw";
             }
             if (!switch_to.empty()) {
-                session = std::make_unique<Session>(*window, o, switch_to);
+                session = std::make_unique<Session>(*window, frame, switch_to);
                 ui.status.clear();
             }
         }

@@ -109,23 +109,28 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     render->add_option("--fps", render_options.fps, "frames per simulated second")
         ->capture_default_str();
+    // CLI11's IsMember checks below list the values in --help and refuse others in CLI11's own
+    // words; they are handed the lists of collide::render_choices(), the names that
+    // collide::parse_render_request (cli/render_request.h) reads. That parse is the one place the
+    // options are turned into what the render does: run_render calls it.
+    const collide::RenderChoices& choices = collide::render_choices();
     render->add_option("--quality", render_options.quality,
                        "low (no anti-aliasing), medium (anti-aliased, fast PNGs) or high "
                        "(anti-aliased, smaller PNGs)")
-        ->check(CLI::IsMember({"low", "medium", "high"}))
+        ->check(CLI::IsMember(choices.quality))
         ->capture_default_str();
     render->add_option("--view", render_options.view,
                        "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, "
                        "3d for 3D")
-        ->check(CLI::IsMember({"2d", "3d"}));
+        ->check(CLI::IsMember(choices.view));
     render->add_option("--format", render_options.format,
                        "png (the frames), or also DIR/animation.mp4 or DIR/animation.gif "
                        "(needs ffmpeg)")
-        ->check(CLI::IsMember({"png", "mp4", "gif"}))
+        ->check(CLI::IsMember(choices.format))
         ->capture_default_str();
     render->add_option("--backend", render_options.backend,
                        "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)")
-        ->check(CLI::IsMember({"osmesa", "egl"}))
+        ->check(CLI::IsMember(choices.backend))
         ->capture_default_str();
     render->add_flag("--quiet", render_options.quiet, "no progress bar and no summary");
     render->add_flag("--force", render_options.force,
@@ -154,7 +159,7 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     material->add_option("--fps", material_options.fps, "frames per simulated second")->capture_default_str();
     material->add_option("--quality", material_options.quality, "low, medium or high (as collide render)")
-        ->check(CLI::IsMember({"low", "medium", "high"}))
+        ->check(CLI::IsMember(choices.quality))
         ->capture_default_str();
     material->add_flag("--quiet", material_options.quiet, "no progress and no summary");
     material->add_flag("--force", material_options.force, "replace a directory that is not empty");
@@ -174,7 +179,7 @@ int main(int argc, char** argv) {
     gui->add_option("--fps", gui_options.fps, "frames per simulated second (as collide render)")
         ->capture_default_str();
     gui->add_option("--view", gui_options.view, "2d or 3d (default: 2d for 1D and 2D scenes, 3d for 3D)")
-        ->check(CLI::IsMember({"2d", "3d"}));
+        ->check(CLI::IsMember(choices.view));
     gui->add_option("--script", gui_options.script,
                     "run the actions of FILE, one a window frame (tests, demonstrations)");
     gui->add_option("-o,--output", gui_options.out_dir, "where Save frame and Save figure write")

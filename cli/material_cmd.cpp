@@ -263,27 +263,32 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             throw InputError(opt.out_dir, {}, "",
                              fs::is_directory(dir, ec) ? "directory is not empty (use --force to replace it)"
                                                        : "exists and is not a directory");
+        // The options, read once as collide render reads them: every lesson renders with them,
+        // and with an MP4 when ffmpeg is installed.
+        RenderOptions ro;
+        ro.out_dir = opt.out_dir;
+        ro.size = opt.size;
+        ro.fps = opt.fps;
+        ro.quality = opt.quality;
+        ro.quiet = true;
+        RenderRequest request = parse_render_request(ro);
+        if (const std::string ffmpeg = render::find_program("ffmpeg"); !ffmpeg.empty())
+            request.video = VideoRequest{render::VideoFormat::mp4, ffmpeg};
+        const bool video = request.video.has_value();
         // Build beside DIR, rename at the end.
         tmp = dir.parent_path() / (dir.filename().string() + ".tmp-" + std::to_string(::getpid()));
         fs::remove_all(tmp, ec);
         fs::create_directories(tmp);
-        const bool video = !render::find_program("ffmpeg").empty();
         const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
 
         std::vector<Built> built;
         for (std::size_t k = 0; k < lessons.size(); ++k) {
             const Lesson& L = lessons[k];
             const auto t0 = std::chrono::steady_clock::now();
-            RenderOptions ro;
-            ro.scenario = L.file;
-            ro.out_dir = (tmp / L.id).string();
-            ro.size = opt.size;
-            ro.fps = opt.fps;
-            ro.quality = opt.quality;
-            ro.format = video ? "mp4" : "png";
-            ro.quiet = true;
+            request.scenario = L.file;
+            request.out_dir = (tmp / L.id).string();
             std::ostringstream notes;  // "no collision" notes: not an error for a lesson page
-            Built b{L, render_scenario(ro, notes), false};
+            Built b{L, render_scenario(request, notes), false};
             // The thumbnail: the figure's collision panel (collide render writes it), else the
             // first frame.
             const fs::path lesson_dir = tmp / L.id;

@@ -6,25 +6,19 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
-#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
-#include "teach/event_problem.h"
-#include "scenario/input_error.h"
-#include "teach/answers.h"
-#include "teach/lesson_penalty.h"
+#include "cli/figures.h"
 #include "cli/scene_run.h"
-#include "teach/notation.h"
-#include "scenario/scene_file.h"
-#include "teach/solve.h"
 #include "cli/step.h"
 #include "render/context.h"
 #include "render/frame_sink.h"
@@ -32,6 +26,13 @@
 #include "render/png.h"
 #include "render/renderer.h"
 #include "render/video.h"
+#include "scenario/input_error.h"
+#include "scenario/scene_file.h"
+#include "teach/event_problem.h"
+#include "teach/answers.h"
+#include "teach/lesson_penalty.h"
+#include "teach/notation.h"
+#include "teach/solve.h"
 
 namespace collide {
 
@@ -43,24 +44,6 @@ namespace {
 
 constexpr int kBadInput = 2;
 const char* const kCommand = "";  // option errors name the option, not a file
-
-struct Quality {
-    // MSAA samples. The 2D diagram is anti-aliased by Dear ImGui itself (feathered edges):
-    // multisampling adds nothing visible there and made frames several times slower on
-    // llvmpipe, so the 2D view never uses it. The 3D view's shaded bodies need it.
-    int samples_2d;
-    int samples_3d;
-    bool smooth;          // ImGui edge anti-aliasing
-    render::PngOptions png;
-    int encoders;         // PNG threads
-};
-
-Quality quality_of(const std::string& name) {
-    if (name == "low") return {0, 0, false, {1, true, false}, 1};
-    if (name == "medium") return {0, 4, true, {1, true, false}, 1};
-    if (name == "high") return {0, 4, true, {6, false, false}, 2};  // smaller files, slower
-    throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");
-}
 
 // ---- Stopping on SIGINT / SIGTERM ----
 
@@ -142,18 +125,18 @@ WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
 
 // ---- Output directory ----
 
-void prepare_directory(const RenderOptions& o) {
+void prepare_directory(const RenderRequest& rq) {
     std::error_code ec;
-    const fs::path dir(o.out_dir);
+    const fs::path dir(rq.out_dir);
     if (fs::exists(dir, ec)) {
         if (!fs::is_directory(dir, ec))
-            throw InputError(o.out_dir, {}, "", "exists and is not a directory");
-        if (!fs::is_empty(dir, ec) && !o.force)
-            throw InputError(o.out_dir, {}, "",
+            throw InputError(rq.out_dir, {}, "", "exists and is not a directory");
+        if (!fs::is_empty(dir, ec) && !rq.force)
+            throw InputError(rq.out_dir, {}, "",
                              "directory is not empty (use --force to write into it)");
     }
     fs::create_directories(dir / "frames", ec);
-    if (ec) throw std::runtime_error(o.out_dir + ": cannot create directory: " + ec.message());
+    if (ec) throw std::runtime_error(rq.out_dir + ": cannot create directory: " + ec.message());
     // --force: old frames would mix with the new ones; remove ours (and only ours).
     for (const fs::directory_entry& e : fs::directory_iterator(dir / "frames", ec)) {
         const std::string name = e.path().filename().string();
@@ -164,17 +147,11 @@ void prepare_directory(const RenderOptions& o) {
         fs::remove(dir / name, ec);
 }
 
-std::string fixed_text(double x, int decimals) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
-    return buf;
-}
-
 // A lesson's variants side by side: variants.png and, per scene, the first collision's
 // impulse, velocities after and kinetic energy lost.
-std::string variants_markdown(const RenderReport& r) {
-    if (r.variants.empty()) return "";
-    const int d = r.scene.dimension;
+std::string variants_markdown(const Scene& scene, const std::vector<RenderReport::Variant>& variants) {
+    if (variants.empty()) return "";
+    const int d = scene.dimension;
     const auto V = [d](const Vec3& v) {
         if (d == 1) return notation::num_text(v.x());
         return notation::vec(v, d).txt;
@@ -183,148 +160,138 @@ std::string variants_markdown(const RenderReport& r) {
     md << "\n## Side by side\n\n![the scene and its variants](variants.png)\n\n"
        << "| | impulse on b (N s) | a after (m/s) | b after (m/s) | kinetic energy lost (J) |\n"
        << "|---|---|---|---|---|\n";
-    for (const RenderReport::Variant& v : r.variants) {
+    for (const RenderReport::Variant& v : variants) {
         if (!v.first) {
             md << "| " << v.label << " | no collision | | | |\n";
             continue;
         }
         const CollisionInstant& c = *v.first;
-        md << "| " << v.label << " (" << r.scene.bodies[c.a].name << " on " << r.scene.bodies[c.b].name
+        md << "| " << v.label << " (" << scene.bodies[c.a].name << " on " << scene.bodies[c.b].name
            << ") | " << V(c.impulse) << " | " << V(c.va_after) << " | " << V(c.vb_after) << " | "
            << notation::num_text(v.ke_before - v.ke_after) << " |\n";
     }
     return md.str();
 }
 
-// The before / at / after panels of the first collision, framed on those three moments without
-// the table (figure.png's panels), and the figure of the three with their captions.
-struct Figure {
-    std::vector<render::Image> panels;
-    render::Image figure;
-    render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
+// Progress goes to err only when it is the process's stderr and a terminal.
+bool shows_progress(const RenderRequest& rq, std::ostream& err) {
+    return !rq.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+}
+
+// ==== The stages of a render: load, run, analyse, write ====
+
+// 1. Load: the scene, its [view] table and its lesson, and the times of the frames.
+struct Loaded {
+    Scene scene;
+    SceneView view;
+    std::optional<Lesson> lesson;
+    std::vector<double> times;  // s: the scene sampled at the frame rate
 };
 
-Figure collision_figure(render::GlContext& context, const Scene& scene, const SceneView& view,
-                        const render::RenderSettings& settings, const Moments& moments) {
-    const int height = settings.height;
-    const bool three_d = settings.view == render::ViewKind::perspective;
-    Figure out;
-    // The figure: three panels framed on these moments, without the table.
-    render::RenderSettings panel = settings;
-    panel.header = false;
-    panel.table = false;
-    panel.plots = false;
-    panel.timeline = false;
-    panel.formula = {};
-    panel.directions = view.directions;
-    panel.font_height = height;
-    std::vector<FrameState> three(moments.states, moments.states + 3);
-    // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
-    double aspect = 4.0 / 3.0;
-    if (!three_d) {
-        render::DiagramView probe(scene, render::Style::for_height(height));
-        probe.fit(three, moments.states[1].impacts, ImVec4(0, 0, 1000, 1000));
-        const Vec2 size = probe.box_hi() - probe.box_lo();
-        if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
-    }
-    const double area = 0.62 * 0.62 * 1.3 * height * height;
-    panel.height = static_cast<int>(std::lround(std::sqrt(area / aspect)));
-    panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
-    render::Renderer panels_renderer(context, scene, panel);
-    panels_renderer.prepare(three, moments.states[1].impacts);
-    for (int k = 0; k < 3; ++k) {
-        render::Decor d;
-        d.velocities = k != 1;
-        d.trails = false;
-        out.panels.push_back(panels_renderer.render(moments.states[k], d));
-    }
-    const int decimals = settings.time_decimals + 1;
-    std::vector<std::string> notes = {"t = " + fixed_text(moments.before, decimals) + " s",
-                                      "t = " + fixed_text(moments.at, decimals) + " s",
-                                      "t = " + fixed_text(moments.after, decimals) + " s"};
-    if (view.directions && scene.dimension == 1) {
-        // The page's captions: a (the left block) catches b before, and does not pass it
-        // after. The arrows show the positive direction; the velocities may be negative.
-        // With the bodies' names (the page's a and b are the left and the right block).
-        const std::size_t a = moments.instant.a, b = moments.instant.b;
-        const std::string A = scene.bodies[a].name, B = scene.bodies[b].name;
-        const double va = moments.states[2].bodies[a].v.x(), vb = moments.states[2].bodies[b].v.x();
-        notes[0] += "     v_{" + A + "i} > v_{" + B + "i}";
-        notes[2] += "     v_{" + A + "f}" + (va <= vb ? " \u2264 " : " > ") + "v_{" + B + "f}";
-    }
-    out.figure = render::compose_figure(context, out.panels, {"before", "at collision", "after"}, notes, height);
-    out.panel = panel;
+Loaded load_stage(const RenderRequest& rq) {
+    Loaded in;
+    in.scene = load_scenario(rq.scenario, &in.view, &in.lesson);
+    Scene timing = in.scene;
+    timing.output_dt = 1.0 / rq.frame.fps;
+    in.times = output_times(timing);
+    if (in.times.size() > 1000000)
+        throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
+    return in;
+}
+
+// 2. Run: the scene, once (everything below reads this run), and what a lesson computes from
+// it: the answers to its questions (one the run cannot answer is bad input, found before
+// anything is written) and its penalty study.
+struct Ran {
+    SceneRun run;
+    std::vector<LessonAnswer> answers;
+    std::optional<PenaltyStudy> penalty;
+};
+
+Ran run_stage(const Loaded& in) {
+    Ran out{run_scene(in.scene, in.times), {}, std::nullopt};
+    if (in.lesson) out.answers = answer_questions(*in.lesson, out.run.record);
+    if (in.lesson && in.lesson->penalty) out.penalty = penalty_study(*in.lesson, out.run.record);
     return out;
 }
 
-}  // namespace
+// 3. Analyse: the first collision's moments and worked example, and a lesson's variants (each
+// run once, sampled as the lesson's own scene). Nothing here without a collision.
+struct Analysis {
+    std::optional<Moments> moments;
+    std::optional<WorkedExample> worked;
+    std::vector<RenderReport::Variant> variants;  // the lesson's scene, then each variant
+    std::vector<VariantRow> rows;                 // variants.png: those with a collision
+};
 
-render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene, const SceneView& view,
-                                      const render::FormulaText* formula) {
-    const Quality q = quality_of(o.quality);
-    int width = 0, height = 0;
-    parse_render_size(o.size, &width, &height);
-    const bool three_d = o.view.empty() ? scene.dimension == 3 : o.view == "3d";
-    render::RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
-    settings.samples = three_d ? q.samples_3d : q.samples_2d;
-    settings.smooth = q.smooth;
-    settings.view = three_d ? render::ViewKind::perspective : render::ViewKind::diagram;
-    // Time with enough decimals to change from frame to frame.
-    settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, o.fps)))), 1, 4);
-    if (formula) settings.formula = *formula;
-    settings.camera = {view.camera_azimuth, view.camera_elevation, view.camera_target, view.camera_distance};
-    return settings;
+void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
+    std::vector<std::pair<std::string, const Scene*>> scenes = {
+        {in.lesson->label.empty() ? "as above" : in.lesson->label, &in.scene}};
+    for (const LessonVariant& v : in.lesson->variants) scenes.push_back({v.label, &v.scene});
+    for (const auto& [label, s] : scenes) {
+        const std::optional<Moments> m = s == &in.scene ? moments : first_moments(*s, run_scene(*s, in.times));
+        RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
+        if (m) {
+            result.first = m->instant;
+            result.ke_before = pair_kinetic_energy(*s, m->instant, false);
+            result.ke_after = pair_kinetic_energy(*s, m->instant, true);
+            out->rows.push_back({label, s, *m});
+        }
+        out->variants.push_back(result);
+    }
 }
 
-std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {
-    const std::optional<Moments> m = first_moments(scene, run);
-    if (!m) return std::nullopt;
-    return worked_example(scene, m->instant).formula;
+Analysis analyse_stage(const Loaded& in, const SceneRun& run) {
+    Analysis out;
+    out.moments = first_moments(in.scene, run);
+    if (!out.moments) return out;
+    out.worked = worked_example(in.scene, out.moments->instant);
+    if (in.lesson && !in.lesson->variants.empty()) analyse_variants(in, *out.moments, &out);
+    return out;
 }
 
-std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
-                                                    const SceneView& view, const render::RenderSettings& settings,
-                                                    const SceneRun& run) {
-    const std::optional<Moments> m = first_moments(scene, run);
-    if (!m) return std::nullopt;
-    return collision_figure(context, scene, view, settings, *m).figure;
+// 4. Write: every file, each under a temporary name renamed when complete.
+struct Written {
+    double seconds = 0.0;  // rendering and writing the frames
+    std::string video;     // its file name, or ""
+};
+
+// data.csv, events.csv and data.json.
+void write_data_files(const RenderRequest& rq, const Scene& scene, const SceneRun& run) {
+    const DataFiles data = data_files(scene, run);
+    render::write_file_atomic(rq.out_dir + "/data.csv", data.csv);
+    render::write_file_atomic(rq.out_dir + "/events.csv", data.events_csv);
+    std::ostringstream json;
+    json << "{\"title\": " << nlohmann::json(scene.title).dump()
+         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(rq.frame.fps)
+         << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
+         << "\n]}\n";
+    render::write_file_atomic(rq.out_dir + "/data.json", json.str());
 }
 
-namespace {
+void write_worked_example(const std::string& dir, const WorkedExample& worked) {
+    std::ostringstream md;
+    write_markdown(worked.problem, worked.solution, md);
+    render::write_file_atomic(dir + "/worked-example.md", md.str());
+}
 
-double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView& view,
-                     const std::vector<double>& times, const SceneRun& run, const Moments* moments,
-                     const WorkedExample* worked, const Lesson* lesson,
-                     std::vector<RenderReport::Variant>* variant_results, std::ostream& err) {
-    const Quality q = quality_of(o.quality);
-    int width = 0, height = 0;
-    parse_render_size(o.size, &width, &height);
-    render::GlBackend backend;
-    if (!render::parse_gl_backend(o.backend, &backend))
-        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
-
-    std::unique_ptr<render::GlContext> context = render::create_gl_context(backend);
-    const render::RenderSettings settings = frame_settings(o, scene, view, worked ? &worked->formula : nullptr);
-    render::Renderer renderer(*context, scene, settings);
-    renderer.prepare(run.frames, run.impacts);
-
-    // Frames: rendering here, PNG encoding beside it.
-    const double trail = std::min(1.0, 0.3 * scene.duration);
+// frames/frame_00000.png ...: rendering here, PNG encoding beside it. Returns the seconds it
+// took; throws Interrupted on SIGINT / SIGTERM (the frames already handed over are finished).
+double write_frames(render::Renderer& renderer, const SceneRun& run, const RenderRequest& rq, double trail,
+                    std::ostream& err) {
+    const Quality& q = rq.frame.quality;
     render::FrameSinkOptions sink_options;
-    sink_options.dir = o.out_dir + "/frames";
+    sink_options.dir = rq.out_dir + "/frames";
     sink_options.png = q.png;
     sink_options.threads = q.encoders;
     sink_options.buffers = q.encoders + 2;
-    render::FrameSink sink(width, height, sink_options);
-    const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
-    render::ProgressBar progress(err, static_cast<long>(times.size()), terminal, "rendering");
+    render::FrameSink sink(rq.frame.width, rq.frame.height, sink_options);
+    render::ProgressBar progress(err, static_cast<long>(run.frames.size()), shows_progress(rq, err), "rendering");
     std::size_t next_impact = 0;
     render::Decor decor;
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < run.frames.size(); ++k) {
-        if (interrupted()) {  // SIGINT / SIGTERM: the frames already handed over are finished
+        if (interrupted()) {
             sink.finish();
             progress.finish();
             throw Interrupted(sink.written());
@@ -341,225 +308,136 @@ double write_outputs(const RenderOptions& o, const Scene& scene, const SceneView
     }
     sink.finish();
     progress.finish();
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
-    if (moments) {
-        // The three moments at the frame size, as in the animation (with trails up to then).
-        const char* names[3] = {"before.png", "at.png", "after.png"};
-        std::vector<render::Image> panels;
-        for (int k = 0; k < 3; ++k) {
-            FrameState f = moments->states[k];
-            render::add_trails(run.frames, trail, &f);
-            render::Decor d;
-            d.velocities = k != 1;  // at the instant: the impulse, not the velocities
-            d.directions = view.directions;
-            const render::Image image = renderer.render(f, d);
-            render::write_png_atomic(o.out_dir + "/" + names[k], image.width, image.height,
-                                     image.rgba.data(), q.png);
-        }
-        Figure fig = collision_figure(*context, scene, view, settings, *moments);
-        panels = std::move(fig.panels);
-        const render::Image& figure = fig.figure;
-        const render::RenderSettings& panel = fig.panel;
-        const int decimals = settings.time_decimals + 1;
-        // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
-        const render::Image thumb = render::shrink(panels[1], 480);
-        render::write_png_atomic(o.out_dir + "/thumb.png", thumb.width, thumb.height, thumb.rgba.data(), q.png);
-        render::write_png_atomic(o.out_dir + "/figure.png", figure.width, figure.height,
-                                 figure.rgba.data(), q.png);
-
-        // A lesson's variants: the same three moments of each, one row per scene, framed
-        // alike (the panels of the lesson's own scene set the size).
-        if (lesson && !lesson->variants.empty()) {
-            std::vector<render::Image> rows;
-            std::vector<std::pair<std::string, const Scene*>> scenes = {
-                {lesson->label.empty() ? "as above" : lesson->label, &scene}};
-            for (const LessonVariant& v : lesson->variants) scenes.push_back({v.label, &v.scene});
-            for (const auto& [label, s] : scenes) {
-                RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
-                // Each variant is run once, sampled as the lesson's own scene.
-                const std::optional<Moments> m = s == &scene ? std::optional<Moments>(*moments)
-                                                             : first_moments(*s, run_scene(*s, times));
-                if (!m) {
-                    variant_results->push_back(result);
-                    continue;
-                }
-                result.first = m->instant;
-                result.ke_before = pair_kinetic_energy(*s, m->instant, false);
-                result.ke_after = pair_kinetic_energy(*s, m->instant, true);
-                variant_results->push_back(result);
-                std::vector<FrameState> three_v(m->states, m->states + 3);
-                render::Renderer r(*context, *s, panel);
-                r.prepare(three_v, m->states[1].impacts);
-                std::vector<render::Image> row;
-                for (int k = 0; k < 3; ++k) {
-                    render::Decor d;
-                    d.velocities = k != 1;
-                    d.trails = false;
-                    row.push_back(r.render(m->states[k], d));
-                }
-                rows.push_back(render::compose_figure(*context, row,
-                                                      {label + ": before", "at collision", "after"},
-                                                      {"t = " + fixed_text(m->before, decimals) + " s",
-                                                       "t = " + fixed_text(m->at, decimals) + " s",
-                                                       "t = " + fixed_text(m->after, decimals) + " s"},
-                                                      height));
-            }
-            const render::Image all = render::stack_vertically(rows);
-            render::write_png_atomic(o.out_dir + "/variants.png", all.width, all.height, all.rgba.data(), q.png);
-        }
+// The frames, then the first collision's stills, figure and thumbnail, and a lesson's
+// variants.png, all in one GL context. Returns the seconds the frames took.
+double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun& run, const Analysis& a,
+                      std::ostream& err) {
+    std::unique_ptr<render::GlContext> context = render::create_gl_context(rq.backend);
+    const render::RenderSettings settings =
+        frame_settings(rq.frame, in.scene, in.view, a.worked ? &a.worked->formula : nullptr);
+    render::Renderer renderer(*context, in.scene, settings);
+    renderer.prepare(run.frames, run.impacts);
+    const double seconds = write_frames(renderer, run, rq, trail_seconds(in.scene), err);
+    if (a.moments) {
+        const CollisionShots shots{in.scene, in.view, run, *a.moments};
+        const PictureOut out{rq.out_dir, rq.frame.quality.png};
+        write_stills(renderer, shots, out);
+        const Figure figure = write_figure(*context, shots, settings, out);
+        if (!a.rows.empty()) write_variants(*context, a.rows, settings, figure, out);
     }
     return seconds;
 }
 
+// lesson.md: the lesson's text, its questions with the answers, its variants side by side and
+// its penalty study (with penalty.svg, penalty-overlap.svg and penalty.csv).
+void write_lesson(const std::string& dir, const Loaded& in, const Ran& ran, const Analysis& a) {
+    std::ostringstream md;
+    write_lesson_markdown(*in.lesson, ran.answers, md);
+    md << variants_markdown(in.scene, a.variants);
+    if (ran.penalty) {
+        write_penalty_markdown(*ran.penalty, md);
+        render::write_file_atomic(dir + "/penalty.svg", penalty_svg(*ran.penalty));
+        render::write_file_atomic(dir + "/penalty-overlap.svg", penalty_overlap_svg(*ran.penalty));
+        render::write_file_atomic(dir + "/penalty.csv", penalty_csv(*ran.penalty));
+    }
+    render::write_file_atomic(dir + "/lesson.md", md.str());
+}
+
+// animation.mp4 or .gif from the frames; returns its file name.
+std::string write_video(const RenderRequest& rq, std::ostream& err) {
+    const VideoRequest& video = *rq.video;
+    const std::string name = video.file_name();
+    if (shows_progress(rq, err)) err << "encoding " << name << " with ffmpeg ...\n";
+    render::encode_video(video.ffmpeg, rq.out_dir + "/frames", rq.frame.fps, video.format, rq.out_dir + "/" + name);
+    return name;
+}
+
+Written write_stage(const RenderRequest& rq, const Loaded& in, const Ran& ran, const Analysis& a,
+                    std::ostream& err) {
+    prepare_directory(rq);
+    if (!a.moments)
+        err << "collide render: no collision in " << in.scene.duration
+            << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
+    write_data_files(rq, in.scene, ran.run);
+    if (a.worked) write_worked_example(rq.out_dir, *a.worked);
+    Written out;
+    out.seconds = write_pictures(rq, in, ran.run, a, err);
+    if (in.lesson) write_lesson(rq.out_dir, in, ran, a);
+    if (rq.video) out.video = write_video(rq, err);
+    return out;
+}
+
+// What the stages made and computed, for the summary line and for `collide material`.
+RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, const Written& w) {
+    RenderReport r;
+    r.scene = std::move(in.scene);
+    r.view = in.view;
+    r.lesson = std::move(in.lesson);
+    r.answers = std::move(ran.answers);
+    r.penalty = std::move(ran.penalty);
+    if (a.worked) {
+        r.problem = a.worked->problem;
+        r.solution = a.worked->solution;
+        r.world_note = a.worked->formula.note;
+    }
+    if (a.moments) r.first_collision = a.moments->instant;
+    r.variants = std::move(a.variants);
+    for (const ImpactMark& im : ran.run.impacts) r.collision_times.push_back(im.t);
+    for (const FrameState& f : ran.run.frames) {
+        r.t.push_back(f.t);
+        r.totals.push_back(render::frame_totals(r.scene, f));
+    }
+    r.frames = static_cast<long>(in.times.size());
+    r.width = rq.frame.width;
+    r.height = rq.frame.height;
+    r.seconds = w.seconds;
+    r.video = w.video;
+    return r;
+}
+
+void print_summary(const RenderRequest& rq, const RenderReport& r, std::ostream& out) {
+    char rate[64];
+    std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
+                  r.seconds > 0 ? static_cast<double>(r.frames) / r.seconds : 0.0);
+    out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate << " to " << rq.out_dir
+        << "/frames";
+    if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";
+    out << ", data.csv, data.json, events.csv";
+    if (r.lesson) out << ", lesson.md";
+    if (!r.variants.empty()) out << ", variants.png";
+    if (r.penalty) out << ", penalty.svg, penalty-overlap.svg, penalty.csv";
+    if (!r.video.empty()) out << ", " << r.video;
+    // Peak resident memory of the whole process (Linux: kilobytes).
+    rusage usage{};
+    if (getrusage(RUSAGE_SELF, &usage) == 0) out << "; peak memory " << (usage.ru_maxrss + 512) / 1024 << " MB";
+    out << "\n";
+}
+
 }  // namespace
 
-bool parse_render_size(const std::string& text, int* width, int* height) {
-    static const std::pair<const char*, std::pair<int, int>> presets[] = {
-        {"480p", {854, 480}}, {"720p", {1280, 720}}, {"1080p", {1920, 1080}}, {"1440p", {2560, 1440}}};
-    for (const auto& [name, size] : presets)
-        if (text == name) {
-            *width = size.first;
-            *height = size.second;
-            return true;
-        }
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-        return false;
-    if (w < 16 || h < 16 || w > 8192 || h > 8192) return false;
-    *width = w;
-    *height = h;
-    return true;
-}
-
-void read_render_size(const std::string& text, int* width, int* height) {
-    if (!parse_render_size(text, width, height))
-        throw InputError(kCommand, {}, "--size",
-                         "expected WxH (16..8192 pixels each) or 480p, 720p, 1080p, 1440p, got '" + text + "'");
-}
-
-RenderReport render_scenario(const RenderOptions& o, std::ostream& err) {
+RenderReport render_scenario(const RenderRequest& rq, std::ostream& err) {
     const SignalGuard signals;
-    RenderReport report;
-    // Options first: nothing is written when one is wrong.
-    int width = 0, height = 0;
-    read_render_size(o.size, &width, &height);
-    if (!(o.fps > 0 && o.fps <= 100000))
-        throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
-    quality_of(o.quality);
-    if (!o.view.empty() && o.view != "2d" && o.view != "3d")
-        throw InputError(kCommand, {}, "--view", "expected 2d or 3d, got '" + o.view + "'");
-    if (o.out_dir.empty()) throw InputError(kCommand, {}, "-o", "the output directory is required");
-    render::GlBackend backend;
-    if (!render::parse_gl_backend(o.backend, &backend))
-        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + o.backend + "'");
-    if (o.format != "png" && o.format != "mp4" && o.format != "gif")
-        throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + o.format + "'");
-    std::string ffmpeg;
-    if (o.format != "png") {
-        ffmpeg = render::find_program("ffmpeg");
-        if (ffmpeg.empty())
-            throw InputError(kCommand, {}, "--format",
-                             o.format + " is made by ffmpeg, which is not installed (Debian: "
-                                        "apt-get install ffmpeg); --format png writes the frames alone");
-    }
+    Loaded in = load_stage(rq);
+    Ran ran = run_stage(in);
+    Analysis analysis = analyse_stage(in, ran.run);
+    const Written written = write_stage(rq, in, ran, analysis, err);
+    return report_of(rq, std::move(in), std::move(ran), std::move(analysis), written);
+}
 
-    report.scene = load_scenario(o.scenario, &report.view, &report.lesson);
-    const Scene& scene = report.scene;
-    Scene timing = scene;
-    timing.output_dt = 1.0 / o.fps;
-    const std::vector<double> times = output_times(timing);
-    if (times.size() > 1000000)
-        throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
-    // The scene is run once; everything below reads this run.
-    const SceneRun run = run_scene(scene, times);
-    // A lesson's answers come first: a question the run cannot answer is bad input.
-    if (report.lesson) report.answers = answer_questions(*report.lesson, run.record);
-    if (report.lesson && report.lesson->penalty) report.penalty = penalty_study(*report.lesson, run.record);
-    prepare_directory(o);
-
-    std::unique_ptr<Moments> moments;
-    if (std::optional<Moments> m = first_moments(scene, run)) {
-        moments = std::make_unique<Moments>(std::move(*m));
-    } else {
-        err << "collide render: no collision in " << scene.duration
-            << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
-    }
-    const DataFiles data = data_files(scene, run);
-    render::write_file_atomic(o.out_dir + "/data.csv", data.csv);
-    render::write_file_atomic(o.out_dir + "/events.csv", data.events_csv);
-    std::ostringstream json;
-    json << "{\"title\": " << nlohmann::json(scene.title).dump()
-         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(o.fps)
-         << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
-         << "\n]}\n";
-    render::write_file_atomic(o.out_dir + "/data.json", json.str());
-    std::unique_ptr<WorkedExample> worked;
-    if (moments) {
-        worked = std::make_unique<WorkedExample>(worked_example(scene, moments->instant));
-        std::ostringstream md;
-        write_markdown(worked->problem, worked->solution, md);
-        render::write_file_atomic(o.out_dir + "/worked-example.md", md.str());
-        report.problem = worked->problem;
-        report.solution = worked->solution;
-        report.first_collision = moments->instant;
-        report.world_note = worked->formula.note;
-    }
-    report.seconds = write_outputs(o, scene, report.view, times, run, moments.get(), worked.get(),
-                                   report.lesson ? &*report.lesson : nullptr, &report.variants, err);
-    if (report.lesson) {
-        std::ostringstream md;
-        write_lesson_markdown(*report.lesson, report.answers, md);
-        md << variants_markdown(report);
-        if (report.penalty) {
-            write_penalty_markdown(*report.penalty, md);
-            render::write_file_atomic(o.out_dir + "/penalty.svg", penalty_svg(*report.penalty));
-            render::write_file_atomic(o.out_dir + "/penalty-overlap.svg", penalty_overlap_svg(*report.penalty));
-            render::write_file_atomic(o.out_dir + "/penalty.csv", penalty_csv(*report.penalty));
-        }
-        render::write_file_atomic(o.out_dir + "/lesson.md", md.str());
-    }
-    report.frames = static_cast<long>(times.size());
-    report.width = width;
-    report.height = height;
-    for (const ImpactMark& im : run.impacts) report.collision_times.push_back(im.t);
-    for (const FrameState& f : run.frames) {
-        report.t.push_back(f.t);
-        report.totals.push_back(render::frame_totals(scene, f));
-    }
-    if (o.format != "png") {
-        report.video = "animation." + o.format;
-        const bool terminal = !o.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
-        if (terminal) err << "encoding " << report.video << " with ffmpeg ...\n";
-        render::encode_video(ffmpeg, o.out_dir + "/frames", o.fps,
-                             o.format == "mp4" ? render::VideoFormat::mp4 : render::VideoFormat::gif,
-                             o.out_dir + "/" + report.video);
-    }
-    return report;
+std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {
+    const std::optional<Moments> m = first_moments(scene, run);
+    if (!m) return std::nullopt;
+    return worked_example(scene, m->instant).formula;
 }
 
 int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
     try {
-        const RenderReport r = render_scenario(o, err);
-        if (!o.quiet) {
-            char rate[64];
-            std::snprintf(rate, sizeof rate, " in %.2f s (%.1f frames/s)", r.seconds,
-                          r.seconds > 0 ? static_cast<double>(r.frames) / r.seconds : 0.0);
-            out << "wrote " << r.frames << " frames (" << r.width << "x" << r.height << ")" << rate
-                << " to " << o.out_dir << "/frames";
-            if (r.problem) out << ", before.png, at.png, after.png, figure.png, thumb.png, worked-example.md";
-            out << ", data.csv, data.json, events.csv";
-            if (r.lesson) out << ", lesson.md";
-            if (!r.variants.empty()) out << ", variants.png";
-            if (r.penalty) out << ", penalty.svg, penalty-overlap.svg, penalty.csv";
-            if (!r.video.empty()) out << ", " << r.video;
-            // Peak resident memory of the whole process (Linux: kilobytes).
-            rusage usage{};
-            if (getrusage(RUSAGE_SELF, &usage) == 0)
-                out << "; peak memory " << (usage.ru_maxrss + 512) / 1024 << " MB";
-            out << "\n";
-        }
+        const RenderRequest request = parse_render_request(o);
+        const RenderReport r = render_scenario(request, err);
+        if (!request.quiet) print_summary(request, r, out);
         return 0;
     } catch (const Interrupted& e) {
         err << "collide: interrupted: " << e.frames << " complete frames written to " << o.out_dir

@@ -18,31 +18,15 @@
 #include <string>
 #include <vector>
 
-#include "teach/answers.h"
-#include "teach/lesson_penalty.h"
+#include "cli/render_request.h"
 #include "cli/scene_run.h"
-#include "teach/solve.h"
 #include "render/frame_state.h"
 #include "render/renderer.h"
+#include "teach/answers.h"
+#include "teach/lesson_penalty.h"
+#include "teach/solve.h"
 
 namespace collide {
-
-struct RenderOptions {
-    std::string scenario;          // a scenario file, a lesson file or a lesson id
-    std::string out_dir;           // -o DIR
-    std::string size = "720p";     // --size: WxH, or 480p, 720p, 1080p, 1440p
-    double fps = 30.0;             // --fps: frames per simulated second
-    // --quality: low: no anti-aliasing; medium: anti-aliased (2D: Dear ImGui's edges; 3D: 4x
-    // MSAA), fast PNGs (zlib level 1, no filter); high: as medium, PNGs about 10-20% smaller
-    // (level 6, adaptive filters) and 4x slower to encode (two encoder threads).
-    std::string quality = "medium";
-    std::string view;              // --view: 2d or 3d; empty: 2d for 1D and 2D scenes, 3d for 3D
-    std::string format = "png";    // --format: png (frames only), mp4 or gif (also
-                                   // DIR/animation.mp4 or .gif, through ffmpeg)
-    bool quiet = false;            // --quiet: no progress bar, no summary
-    bool force = false;            // --force: write into a non-empty DIR (replacing our files)
-    std::string backend = "osmesa";  // OpenGL context: osmesa or egl
-};
 
 // What a render made and computed, for the summary line and for `collide material`.
 struct RenderReport {
@@ -80,32 +64,23 @@ struct Interrupted : std::runtime_error {
     long frames;
 };
 
-// Renders `options.scenario` into options.out_dir as the command does, without the summary.
+// Renders `request.scenario` into request.out_dir as the command does, without the summary:
+// load (the scene, its [view], its lesson), run (the scene once; a lesson's answers and
+// penalty study), analyse (the first collision's moments, its worked example, a lesson's
+// variants), write (the data files, worked-example.md, the frames, the stills, the figure,
+// variants.png, lesson.md, the video).
 // Throws InputError (bad input: nothing written), Interrupted, or std::runtime_error.
-RenderReport render_scenario(const RenderOptions& options, std::ostream& err);
+RenderReport render_scenario(const RenderRequest& request, std::ostream& err);
 
-// Runs the command. Returns the exit code: 0 done, 130 interrupted (SIGINT / SIGTERM: the
+// Runs the command: reads the options (parse_render_request), renders, prints the summary.
+// Returns the exit code: 0 done, 130 interrupted (SIGINT / SIGTERM: the
 // files written are complete), 2 bad input (one "collide: error: ..."
 // line on err: the scenario file, an option, or an output directory that is not empty),
 // 1 any other failure. Progress goes to err when it is the process's stderr and a terminal.
 int run_render(const RenderOptions& options, std::ostream& out, std::ostream& err);
 
-// What `collide gui` shares with the frames of `collide render`:
-// the frames' settings for the options' size, quality, fps and view (and the first collision's
-// formula, when given);
-render::RenderSettings frame_settings(const RenderOptions& o, const Scene& scene, const SceneView& view,
-                                      const render::FormulaText* formula);
-// the first collision's formula overlay, and its before / at / after figure (figure.png), of
-// the scene's run (run_scene at the frame rate); nullopt when the run has no collision.
+// The first collision's formula overlay of the scene's run (run_scene at the frame rate), as
+// the frames show it (`collide gui` draws it too); nullopt when the run has no collision.
 std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run);
-std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
-                                                    const SceneView& view, const render::RenderSettings& settings,
-                                                    const SceneRun& run);
-
-// "1280x720" or a preset (480p: 854x480, 720p: 1280x720, 1080p: 1920x1080, 1440p: 2560x1440);
-// false for anything else, or sizes outside 16..8192.
-bool parse_render_size(const std::string& text, int* width, int* height);
-// The same for the --size option: throws InputError naming --size and what it accepts.
-void read_render_size(const std::string& text, int* width, int* height);
 
 }  // namespace collide

@@ -216,7 +216,7 @@ TEST(RenderCommand, ALessonRunsEachSceneOnce) {
     const std::string lesson = std::string(COLLIDE_SOURCE_DIR) + "/lessons/01-catch-up.toml";
     std::ostringstream err;
     const std::uint64_t before = RunCount::total();
-    const RenderReport r = render_scenario(tiny(lesson, dir / "out"), err);
+    const RenderReport r = render_scenario(parse_render_request(tiny(lesson, dir / "out")), err);
     const std::uint64_t runs = RunCount::total() - before;
     ASSERT_TRUE(r.lesson);
     ASSERT_EQ(r.lesson->variants.size(), 2u);  // two other values of e beside the scene's
@@ -306,6 +306,56 @@ TEST(RenderCommand, Mp4AndGifAreEncodedByFfmpeg) {
         else EXPECT_EQ(head.substr(0, 6), "GIF89a");
         for (const auto& e : fs::recursive_directory_iterator(dir / format))
             EXPECT_EQ(e.path().string().find(".tmp-"), std::string::npos) << e.path();
+    }
+}
+
+// The options are read once, into a typed request: nothing after it reads their text.
+TEST(RenderCommand, OptionsBecomeATypedRequest) {
+    RenderOptions o = tiny("s.toml", "out");
+    RenderRequest r = parse_render_request(o);
+    EXPECT_EQ(r.scenario, "s.toml");
+    EXPECT_EQ(r.out_dir, "out");
+    EXPECT_EQ(r.frame.width, 160);
+    EXPECT_EQ(r.frame.height, 120);
+    EXPECT_EQ(r.frame.fps, 10);
+    EXPECT_EQ(r.frame.quality.samples_3d, 4);  // medium
+    EXPECT_EQ(r.frame.quality.png.level, 1);
+    EXPECT_FALSE(r.frame.view);  // by the scene's dimension
+    EXPECT_FALSE(r.video);       // png: the frames alone
+    EXPECT_EQ(r.backend, render::GlBackend::osmesa);
+    EXPECT_TRUE(r.quiet);
+    EXPECT_FALSE(r.force);
+    o.quality = "high";
+    o.view = "3d";
+    o.size = "1080p";
+    r = parse_render_request(o);
+    EXPECT_EQ(r.frame.quality.encoders, 2);
+    EXPECT_EQ(r.frame.quality.png.level, 6);
+    EXPECT_EQ(r.frame.view, render::ViewKind::perspective);
+    EXPECT_EQ(r.frame.width, 1920);
+    o.quality = "low";
+    o.view = "2d";
+    r = parse_render_request(o);
+    EXPECT_EQ(r.frame.quality.samples_3d, 0);
+    EXPECT_FALSE(r.frame.quality.smooth);
+    EXPECT_EQ(r.frame.view, render::ViewKind::diagram);
+    if (!render::find_program("ffmpeg").empty()) {
+        o.format = "gif";
+        r = parse_render_request(o);
+        ASSERT_TRUE(r.video);
+        EXPECT_EQ(r.video->format, render::VideoFormat::gif);
+        EXPECT_EQ(r.video->file_name(), "animation.gif");
+        EXPECT_FALSE(r.video->ffmpeg.empty());
+    }
+    // Every value --help lists is one the parse takes.
+    for (const std::string& q : render_choices().quality) {
+        o.quality = q;
+        EXPECT_NO_THROW(parse_render_request(o)) << q;
+    }
+    o.quality = "medium";
+    for (const std::string& v : render_choices().view) {
+        o.view = v;
+        EXPECT_NO_THROW(parse_render_request(o)) << v;
     }
 }
 

@@ -1,4 +1,4 @@
-// Lessons (teach/lesson.h): every bundled lesson loads, runs and answers its questions; the
+// Lessons (scenario/lesson.h, teach/answers.h): every bundled lesson loads, runs and answers its questions; the
 // answers match closed forms; malformed lesson files are refused with their key.
 #include "teach/answers.h"
 

@@ -1,0 +1,138 @@
+#include "cli/figures.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "render/frame_state.h"
+
+namespace collide {
+
+using render::FrameState;
+
+namespace {
+
+std::string fixed_text(double x, int decimals) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.*f", decimals, x);
+    return buf;
+}
+
+// The captions under the three panels: the moments' times.
+std::vector<std::string> time_notes(const Moments& moments, int decimals) {
+    return {"t = " + fixed_text(moments.before, decimals) + " s", "t = " + fixed_text(moments.at, decimals) + " s",
+            "t = " + fixed_text(moments.after, decimals) + " s"};
+}
+
+// The three moments drawn by a renderer framed on them: no trails, at the instant the impulse
+// instead of the velocities.
+std::vector<render::Image> three_panels(render::Renderer& renderer, const Moments& moments) {
+    std::vector<render::Image> panels;
+    for (int k = 0; k < 3; ++k) {
+        render::Decor d;
+        d.velocities = k != 1;
+        d.trails = false;
+        panels.push_back(renderer.render(moments.states[k], d));
+    }
+    return panels;
+}
+
+void write_png(const PictureOut& out, const std::string& name, const render::Image& image) {
+    render::write_png_atomic(out.dir + "/" + name, image.width, image.height, image.rgba.data(), out.png);
+}
+
+// The before / at / after panels of the first collision, framed on those three moments without
+// the table (figure.png's panels), and the figure of the three with their captions.
+Figure collision_figure(render::GlContext& context, const Scene& scene, const SceneView& view,
+                        const render::RenderSettings& settings, const Moments& moments) {
+    const int height = settings.height;
+    const bool three_d = settings.view == render::ViewKind::perspective;
+    Figure out;
+    // The figure: three panels framed on these moments, without the table.
+    render::RenderSettings panel = settings;
+    panel.header = false;
+    panel.table = false;
+    panel.plots = false;
+    panel.timeline = false;
+    panel.formula = {};
+    panel.directions = view.directions;
+    panel.font_height = height;
+    std::vector<FrameState> three(moments.states, moments.states + 3);
+    // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
+    double aspect = 4.0 / 3.0;
+    if (!three_d) {
+        render::DiagramView probe(scene, render::Style::for_height(height));
+        probe.fit(three, moments.states[1].impacts, ImVec4(0, 0, 1000, 1000));
+        const Vec2 size = probe.box_hi() - probe.box_lo();
+        if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
+    }
+    const double area = 0.62 * 0.62 * 1.3 * height * height;
+    panel.height = static_cast<int>(std::lround(std::sqrt(area / aspect)));
+    panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
+    render::Renderer panels_renderer(context, scene, panel);
+    panels_renderer.prepare(three, moments.states[1].impacts);
+    out.panels = three_panels(panels_renderer, moments);
+    std::vector<std::string> notes = time_notes(moments, settings.time_decimals + 1);
+    if (view.directions && scene.dimension == 1) {
+        // The page's captions: a (the left block) catches b before, and does not pass it
+        // after. The arrows show the positive direction; the velocities may be negative.
+        // With the bodies' names (the page's a and b are the left and the right block).
+        const std::size_t a = moments.instant.a, b = moments.instant.b;
+        const std::string A = scene.bodies[a].name, B = scene.bodies[b].name;
+        const double va = moments.states[2].bodies[a].v.x(), vb = moments.states[2].bodies[b].v.x();
+        notes[0] += "     v_{" + A + "i} > v_{" + B + "i}";
+        notes[2] += "     v_{" + A + "f}" + (va <= vb ? " \u2264 " : " > ") + "v_{" + B + "f}";
+    }
+    out.figure = render::compose_figure(context, out.panels, {"before", "at collision", "after"}, notes, height);
+    out.panel = panel;
+    return out;
+}
+
+}  // namespace
+
+double trail_seconds(const Scene& scene) { return std::min(1.0, 0.3 * scene.duration); }
+
+void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out) {
+    const char* names[3] = {"before.png", "at.png", "after.png"};
+    for (int k = 0; k < 3; ++k) {
+        FrameState f = shots.moments.states[k];
+        render::add_trails(shots.run.frames, trail_seconds(shots.scene), &f);
+        render::Decor d;
+        d.velocities = k != 1;  // at the instant: the impulse, not the velocities
+        d.directions = shots.view.directions;
+        write_png(out, names[k], frames.render(f, d));
+    }
+}
+
+Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
+                    const PictureOut& out) {
+    Figure fig = collision_figure(context, shots.scene, shots.view, settings, shots.moments);
+    // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
+    write_png(out, "thumb.png", render::shrink(fig.panels[1], 480));
+    write_png(out, "figure.png", fig.figure);
+    return fig;
+}
+
+void write_variants(render::GlContext& context, const std::vector<VariantRow>& rows,
+                    const render::RenderSettings& settings, const Figure& figure, const PictureOut& out) {
+    std::vector<render::Image> images;
+    for (const VariantRow& row : rows) {
+        const Moments& m = row.moments;
+        std::vector<FrameState> three(m.states, m.states + 3);
+        render::Renderer r(context, *row.scene, figure.panel);
+        r.prepare(three, m.states[1].impacts);
+        images.push_back(render::compose_figure(context, three_panels(r, m), {row.label + ": before", "at collision", "after"},
+                                                time_notes(m, settings.time_decimals + 1), settings.height));
+    }
+    write_png(out, "variants.png", render::stack_vertically(images));
+}
+
+std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
+                                                    const SceneView& view, const render::RenderSettings& settings,
+                                                    const SceneRun& run) {
+    const std::optional<Moments> m = first_moments(scene, run);
+    if (!m) return std::nullopt;
+    return collision_figure(context, scene, view, settings, *m).figure;
+}
+
+}  // namespace collide

@@ -1,0 +1,68 @@
+// The pictures of a run's first collision that `collide render` writes beside the frames
+// (README.md, "collide render"), and the figure `collide gui` saves:
+//   before.png, at.png, after.png   a moment before, the instant, a moment after, at the frame size
+//   figure.png, thumb.png           those three moments side by side with captions; its middle panel
+//   variants.png                    a lesson's scene and its variants, a row of panels each
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cli/scene_run.h"
+#include "render/png.h"
+#include "render/renderer.h"
+#include "scenario/scene_file.h"
+
+namespace collide {
+
+// The trails behind the bodies (s) in the frames and in the stills.
+double trail_seconds(const Scene& scene);
+
+// What a collision's pictures are drawn from: a scene, its [view] table, its run, and the
+// moments of its first collision in that run.
+struct CollisionShots {
+    const Scene& scene;
+    const SceneView& view;
+    const SceneRun& run;
+    const Moments& moments;
+};
+
+// Where pictures are written, and how they are encoded.
+struct PictureOut {
+    std::string dir;
+    render::PngOptions png;
+};
+
+// The before / at / after panels framed on the moments without the table, and the figure of
+// the three with their captions.
+struct Figure {
+    std::vector<render::Image> panels;
+    render::Image figure;
+    render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
+};
+
+// One row of variants.png: a scene (the lesson's own or a variant) and its first collision.
+struct VariantRow {
+    std::string label;
+    const Scene* scene = nullptr;
+    Moments moments;
+};
+
+// before.png, at.png and after.png: the moments as the frames' renderer draws them (with the
+// trails up to then; at the instant the impulse instead of the velocities).
+void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out);
+// figure.png and thumb.png (the collision panel, 480 pixels wide); returns the figure.
+Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
+                    const PictureOut& out);
+// variants.png: the same three moments of each row, framed alike with `figure`'s panels.
+void write_variants(render::GlContext& context, const std::vector<VariantRow>& rows,
+                    const render::RenderSettings& settings, const Figure& figure, const PictureOut& out);
+
+// The first collision's before / at / after figure (figure.png) of the scene's run (run_scene
+// at the frame rate), drawn with the frames' settings; nullopt when the run has no collision.
+std::optional<render::Image> first_collision_figure(render::GlContext& context, const Scene& scene,
+                                                    const SceneView& view, const render::RenderSettings& settings,
+                                                    const SceneRun& run);
+
+}  // namespace collide
