@@ -4,11 +4,12 @@
 #include <cmath>
 #include <limits>
 
+#include "render/scale.h"
+
 namespace collide::render {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 Vec2 xy(const Vec3& v) { return Vec2(v.x(), v.y()); }
 
@@ -93,14 +94,6 @@ float norm(ImVec2 a) { return std::sqrt(dot(a, a)); }
 ImVec2 unit(ImVec2 a) {
     const float n = norm(a);
     return n > 1e-6f ? a * (1.0f / n) : ImVec2(0.0f, -1.0f);
-}
-
-// A round value 1, 2 or 5 x 10^k near x.
-double round_value(double x) {
-    if (!(x > 0)) return 0.0;
-    const double p = std::pow(10.0, std::floor(std::log10(x)));
-    const double m = x / p;
-    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
 }  // namespace

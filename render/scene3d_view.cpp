@@ -7,6 +7,7 @@
 #include <string>
 
 #include "render/imgui_layer.h"  // build_program
+#include "render/scale.h"
 
 namespace collide::render {
 
@@ -15,7 +16,6 @@ namespace {
 using Vec3f = Eigen::Vector3f;
 using Mat4f = Eigen::Matrix4f;
 using Mat3f = Eigen::Matrix3f;
-constexpr double kPi = 3.14159265358979323846;
 
 Vec3f f3(const Vec3& v) { return v.cast<float>(); }
 
@@ -47,14 +47,6 @@ Mat4f perspective(float fovy, float aspect, float near, float far) {
     m(2, 3) = 2.0f * far * near / (near - far);
     m(3, 2) = -1.0f;
     return m;
-}
-
-// A round value 1, 2 or 5 x 10^k near x.
-double round_value(double x) {
-    if (!(x > 0)) return 0.0;
-    const double p = std::pow(10.0, std::floor(std::log10(x)));
-    const double m = x / p;
-    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
 }
 
 // ---- Shaders ----
