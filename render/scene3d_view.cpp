@@ -6,6 +6,7 @@
 #include <limits>
 #include <string>
 
+#include "assets/shaders.h"  // generated from assets/shaders/ (cmake/embed.cmake)
 #include "render/imgui_layer.h"  // build_program
 #include "render/scale.h"
 
@@ -48,151 +49,6 @@ Mat4f perspective(float fovy, float aspect, float near, float far) {
     m(3, 2) = -1.0f;
     return m;
 }
-
-// ---- Shaders ----
-
-const char* kMeshVertex = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;
-layout(location = 2) in vec3 local;
-uniform mat4 model;
-uniform mat3 normal_matrix;
-uniform mat4 view_projection;
-out vec3 f_normal;
-out vec3 f_local;
-out vec3 f_world;
-void main() {
-    vec4 w = model * vec4(position, 1.0);
-    f_world = w.xyz;
-    f_normal = normal_matrix * normal;
-    f_local = local;
-    gl_Position = view_projection * w;
-})";
-
-const char* kMeshFragment = R"(#version 330 core
-uniform vec3 base;
-uniform int pattern;
-uniform vec3 eye;
-uniform vec3 key_light;
-uniform vec3 fill_light;
-in vec3 f_normal;
-in vec3 f_local;
-in vec3 f_world;
-out vec4 colour;
-void main() {
-    vec3 n = normalize(f_normal);
-    vec3 v = normalize(eye - f_world);
-    if (dot(n, v) < 0.0) n = -n;
-    vec3 c = base;
-    // A sphere's wedges (like a beach ball) make its spin visible.
-    if (pattern == 1 && f_local.x * f_local.z > 0.0) c *= 0.80;
-    float key = max(dot(n, key_light), 0.0);
-    float fill = max(dot(n, fill_light), 0.0);
-    float sky = 0.5 + 0.5 * n.y;
-    // Bright and soft, as in a textbook figure: the outlines carry the shape.
-    vec3 lit = c * (0.78 + 0.25 * key + 0.05 * fill);
-    vec3 h = normalize(key_light + v);
-    lit += vec3(0.12) * pow(max(dot(n, h), 0.0), 40.0);
-    colour = vec4(min(lit, vec3(1.0)), 1.0);
-})";
-
-// Lines of constant pixel width: each segment a quad expanded in screen space.
-const char* kLineVertex = R"(#version 330 core
-layout(location = 0) in vec3 a;
-layout(location = 1) in vec3 b;
-layout(location = 2) in vec2 corner;  // x: 0 at a, 1 at b; y: -1 or +1 across
-layout(location = 3) in vec4 colour;
-layout(location = 4) in float width;  // pixels
-uniform mat4 view_projection;
-uniform vec2 viewport;
-uniform float depth_bias;
-out vec4 f_colour;
-out float f_across;  // pixels from the centre line
-out float f_half;    // half the width, pixels
-void main() {
-    vec4 ca = view_projection * vec4(a, 1.0);
-    vec4 cb = view_projection * vec4(b, 1.0);
-    vec2 sa = ca.xy / ca.w * viewport * 0.5;
-    vec2 sb = cb.xy / cb.w * viewport * 0.5;
-    vec2 d = sb - sa;
-    float len = length(d);
-    d = len > 1e-6 ? d / len : vec2(1.0, 0.0);
-    vec2 n = vec2(-d.y, d.x);
-    vec4 c = corner.x < 0.5 ? ca : cb;
-    // Half the width across plus a pixel of fringe (faded in the fragment shader: the edges
-    // are anti-aliased without multisampling), and half the width beyond each end (square caps
-    // close the corners).
-    f_half = 0.5 * width;
-    f_across = corner.y * (f_half + 1.0);
-    vec2 offset = n * f_across + d * (corner.x < 0.5 ? -0.5 : 0.5) * width;
-    c.xy += offset / (viewport * 0.5) * c.w;
-    c.z -= depth_bias * c.w;
-    f_colour = colour;
-    gl_Position = c;
-})";
-
-const char* kLineFragment = R"(#version 330 core
-in vec4 f_colour;
-in float f_across;
-in float f_half;
-out vec4 colour;
-void main() {
-    // Coverage of this pixel by the line: 1 inside, falling to 0 over the last pixel.
-    float cover = clamp(f_half + 0.5 - abs(f_across), 0.0, 1.0);
-    colour = vec4(f_colour.rgb, f_colour.a * cover);
-})";
-
-// The ground: a grid drawn per pixel (anti-aliased with fwidth), fading with distance. The
-// bodies' soft round shadows are small quads of their own, darkening it (a loop over the
-// shadows in this shader made llvmpipe five times slower).
-const char* kGroundVertex = R"(#version 330 core
-layout(location = 0) in vec2 uv;  // plane coordinates, m
-uniform vec3 origin;
-uniform vec3 axis_u;
-uniform vec3 axis_v;
-uniform mat4 view_projection;
-out vec2 f_uv;
-out vec3 f_world;
-void main() {
-    f_uv = uv;
-    f_world = origin + uv.x * axis_u + uv.y * axis_v;
-    gl_Position = view_projection * vec4(f_world, 1.0);
-})";
-
-const char* kGroundFragment = R"(#version 330 core
-uniform vec3 paper;
-uniform vec3 ground;
-uniform vec3 line_colour;
-uniform float spacing;     // m between minor lines
-uniform float fade;        // m: the grid fades out towards this radius
-in vec2 f_uv;
-in vec3 f_world;
-out vec4 colour;
-float grid(vec2 p, float step, float width) {
-    vec2 g = abs(fract(p / step - 0.5) - 0.5) / (fwidth(p / step) * width);
-    return 1.0 - min(min(g.x, g.y), 1.0);
-}
-void main() {
-    float minor = grid(f_uv, spacing, 1.0);
-    float major = grid(f_uv, spacing * 5.0, 1.5);
-    vec3 c = ground;
-    c = mix(c, line_colour, 0.30 * minor);
-    c = mix(c, line_colour, 0.60 * major);
-    float r = length(f_uv) / fade;
-    c = mix(c, paper, smoothstep(0.55, 1.0, r));
-    colour = vec4(c, 1.0);
-})";
-
-const char* kShadowFragment = R"(#version 330 core
-uniform float radius;    // m
-uniform float strength;  // darkening at the centre, 0..1
-in vec2 f_uv;
-in vec3 f_world;
-out vec4 colour;
-void main() {
-    float d = length(f_uv) / radius;
-    colour = vec4(0.0, 0.0, 0.0, strength * (1.0 - smoothstep(0.25, 1.0, d)));
-})";
 
 struct Vertex {
     float p[3], n[3], l[3];
@@ -407,10 +263,11 @@ struct Scene3dView::Impl {
     }
 
     void build() {
-        mesh_program = build_program(gl, kMeshVertex, kMeshFragment, {});
-        line_program = build_program(gl, kLineVertex, kLineFragment, {});
-        ground_program = build_program(gl, kGroundVertex, kGroundFragment, {});
-        shadow_program = build_program(gl, kGroundVertex, kShadowFragment, {});
+        // The embedded texts end in '\0': data() is a C string.
+        mesh_program = build_program(gl, shaders::mesh_vert.data(), shaders::mesh_frag.data(), {});
+        line_program = build_program(gl, shaders::line_vert.data(), shaders::line_frag.data(), {});
+        ground_program = build_program(gl, shaders::ground_vert.data(), shaders::ground_frag.data(), {});
+        shadow_program = build_program(gl, shaders::ground_vert.data(), shaders::shadow_frag.data(), {});
         cylinder = upload(cylinder_y());
         cone = upload(cone_y());
 
