@@ -8,15 +8,13 @@
 
 #include "assets/shaders.h"  // generated from assets/shaders/ (cmake/embed.cmake)
 #include "render/imgui_layer.h"  // build_program
+#include "render/mesh.h"
 #include "render/scale.h"
 
 namespace collide::render {
 
 namespace {
 
-using Vec3f = Eigen::Vector3f;
-using Mat4f = Eigen::Matrix4f;
-using Mat3f = Eigen::Matrix3f;
 
 Vec3f f3(const Vec3& v) { return v.cast<float>(); }
 
@@ -50,18 +48,15 @@ Mat4f perspective(float fovy, float aspect, float near, float far) {
     return m;
 }
 
-struct Vertex {
-    float p[3], n[3], l[3];
-};
-
 struct LineVertex {
     float a[3], b[3], corner[2], colour[4], width;
 };
 
-struct Mesh {
+// A mesh on the GPU, and its bounds in its own frame.
+struct GpuMesh {
     GLuint vao = 0, vbo = 0;
     GLsizei count = 0;
-    Vec3f lo = Vec3f::Zero(), hi = Vec3f::Zero();  // local bounding box
+    Vec3f lo = Vec3f::Zero(), hi = Vec3f::Zero();
 };
 
 // What above_bounds() gathers: the screen box of everything a pass would draw.
@@ -76,122 +71,6 @@ struct ScreenBox {
     }
 };
 
-// Triangle soup builders, in local coordinates (the "local" attribute is the position).
-void tri(std::vector<Vertex>* out, const Vec3f& a, const Vec3f& b, const Vec3f& c,
-         const Vec3f& na, const Vec3f& nb, const Vec3f& nc) {
-    for (const auto& [p, n] : {std::pair(a, na), std::pair(b, nb), std::pair(c, nc)})
-        out->push_back({{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}, {p.x(), p.y(), p.z()}});
-}
-void flat_tri(std::vector<Vertex>* out, const Vec3f& a, const Vec3f& b, const Vec3f& c) {
-    const Vec3f n = (b - a).cross(c - a).normalized();
-    tri(out, a, b, c, n, n, n);
-}
-
-std::vector<Vertex> box_mesh(const Vec3f& h) {
-    std::vector<Vertex> v;
-    for (int axis = 0; axis < 3; ++axis)
-        for (int sign = -1; sign <= 1; sign += 2) {
-            Vec3f n = Vec3f::Zero();
-            n[axis] = static_cast<float>(sign);
-            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-            Vec3f c[4];
-            const float su[4] = {-1, 1, 1, -1}, sw[4] = {-1, -1, 1, 1};
-            for (int k = 0; k < 4; ++k) {
-                c[k] = Vec3f::Zero();
-                c[k][axis] = sign * h[axis];
-                c[k][u] = su[k] * h[u];
-                c[k][w] = sw[k] * h[w];
-            }
-            if (sign > 0) {
-                tri(&v, c[0], c[1], c[2], n, n, n);
-                tri(&v, c[0], c[2], c[3], n, n, n);
-            } else {
-                tri(&v, c[0], c[2], c[1], n, n, n);
-                tri(&v, c[0], c[3], c[2], n, n, n);
-            }
-        }
-    return v;
-}
-
-std::vector<Vertex> sphere_mesh(float r, int rings = 24, int sectors = 48) {
-    std::vector<Vertex> v;
-    const auto at = [&](int i, int j) {
-        const float th = static_cast<float>(kPi) * static_cast<float>(i) / static_cast<float>(rings);
-        const float ph = 2.0f * static_cast<float>(kPi) * static_cast<float>(j) / static_cast<float>(sectors);
-        return Vec3f(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
-    };
-    for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < sectors; ++j) {
-            const Vec3f a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-            tri(&v, a * r, c * r, b * r, a, c, b);
-            tri(&v, a * r, d * r, c * r, a, d, c);
-        }
-    return v;
-}
-
-// A convex outline (counter-clockwise, in the xy plane) extruded from z = -depth/2 to +depth/2.
-// smooth: side normals vary around (a cylinder), else flat faces (a prism).
-std::vector<Vertex> prism_mesh(const std::vector<Vec3f>& outline, float depth, bool smooth) {
-    std::vector<Vertex> v;
-    const float z = 0.5f * depth;
-    const std::size_t n = outline.size();
-    for (std::size_t k = 1; k + 1 < n; ++k) {
-        const Vec3f a = outline[0], b = outline[k], c = outline[k + 1];
-        flat_tri(&v, a + Vec3f(0, 0, z), b + Vec3f(0, 0, z), c + Vec3f(0, 0, z));
-        flat_tri(&v, a - Vec3f(0, 0, z), c - Vec3f(0, 0, z), b - Vec3f(0, 0, z));
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        const Vec3f a = outline[k], b = outline[(k + 1) % n];
-        Vec3f na, nb;
-        if (smooth) {
-            na = Vec3f(a.x(), a.y(), 0).normalized();
-            nb = Vec3f(b.x(), b.y(), 0).normalized();
-        } else {
-            na = nb = Vec3f(b.y() - a.y(), a.x() - b.x(), 0).normalized();
-        }
-        const Vec3f a0 = a - Vec3f(0, 0, z), a1 = a + Vec3f(0, 0, z);
-        const Vec3f b0 = b - Vec3f(0, 0, z), b1 = b + Vec3f(0, 0, z);
-        tri(&v, a0, b0, b1, na, nb, nb);
-        tri(&v, a0, b1, a1, na, nb, na);
-    }
-    return v;
-}
-
-// Unit arrow parts along +y: a cylinder of radius 1 from y = 0 to 1, a cone of base radius 1.
-std::vector<Vertex> cylinder_y(int segments = 20) {
-    std::vector<Vertex> v;
-    for (int k = 0; k < segments; ++k) {
-        const float a0 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / static_cast<float>(segments);
-        const float a1 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k + 1) / static_cast<float>(segments);
-        const Vec3f n0(std::cos(a0), 0, std::sin(a0)), n1(std::cos(a1), 0, std::sin(a1));
-        tri(&v, n0, n1 + Vec3f(0, 1, 0), n1, n0, n1, n1);
-        tri(&v, n0, n0 + Vec3f(0, 1, 0), n1 + Vec3f(0, 1, 0), n0, n0, n1);
-    }
-    return v;
-}
-std::vector<Vertex> cone_y(int segments = 24) {
-    std::vector<Vertex> v;
-    const Vec3f tip(0, 1, 0);
-    for (int k = 0; k < segments; ++k) {
-        const float a0 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / static_cast<float>(segments);
-        const float a1 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k + 1) / static_cast<float>(segments);
-        const Vec3f p0(std::cos(a0), 0, std::sin(a0)), p1(std::cos(a1), 0, std::sin(a1));
-        const Vec3f n0 = Vec3f(p0.x(), 1.0f, p0.z()).normalized(), n1 = Vec3f(p1.x(), 1.0f, p1.z()).normalized();
-        tri(&v, p0, tip, p1, n0, (n0 + n1).normalized(), n1);
-        flat_tri(&v, p0, p1, Vec3f::Zero());
-    }
-    return v;
-}
-
-// Rotation taking +y to the unit vector d.
-Mat3f rotation_from_y(const Vec3f& d) {
-    const Vec3f y(0, 1, 0);
-    const float c = y.dot(d);
-    if (c > 0.99999f) return Mat3f::Identity();
-    if (c < -0.99999f) return Eigen::AngleAxisf(static_cast<float>(kPi), Vec3f::UnitX()).toRotationMatrix();
-    return Eigen::Quaternionf::FromTwoVectors(y, d).toRotationMatrix();
-}
-
 }  // namespace
 
 struct Scene3dView::Impl {
@@ -200,13 +79,13 @@ struct Scene3dView::Impl {
     Style style;
 
     GLuint mesh_program = 0, line_program = 0, ground_program = 0, shadow_program = 0;
-    std::vector<Mesh> body_meshes;            // per body (count 0: none, e.g. a plane)
+    std::vector<GpuMesh> body_meshes;            // per body (count 0: none, e.g. a plane)
     std::vector<int> patterns;                // per body: 1 for spheres
     std::vector<std::vector<std::pair<Vec3f, Vec3f>>> edges;  // per body, local segments
     std::vector<int> round_kind;              // 0: none, 1: sphere, 2: cylinder (z axis)
     std::vector<float> round_radius;
     std::vector<float> sizes;                 // per body: bounding diameter (m)
-    Mesh cylinder, cone;
+    GpuMesh cylinder, cone;
     GLuint line_vao = 0, line_vbo = 0, ground_vao = 0, ground_vbo = 0;
     std::vector<LineVertex> lines;
 
@@ -236,17 +115,12 @@ struct Scene3dView::Impl {
 
     Impl(const Gl& g, const Scene& s, const Style& st) : gl(g), scene(s), style(st) {}
 
-    Mesh upload(const std::vector<Vertex>& v) {
-        Mesh m;
+    GpuMesh upload(const Mesh& v) {
+        GpuMesh m;
         m.count = static_cast<GLsizei>(v.size());
-        if (!v.empty()) {
-            m.lo = m.hi = Vec3f(v[0].p[0], v[0].p[1], v[0].p[2]);
-            for (const Vertex& x : v) {
-                const Vec3f p(x.p[0], x.p[1], x.p[2]);
-                m.lo = m.lo.cwiseMin(p);
-                m.hi = m.hi.cwiseMax(p);
-            }
-        }
+        const Box3f box = render::bounds(v);
+        m.lo = box.lo;
+        m.hi = box.hi;
         gl.GenVertexArrays(1, &m.vao);
         gl.GenBuffers(1, &m.vbo);
         gl.BindVertexArray(m.vao);
@@ -268,8 +142,8 @@ struct Scene3dView::Impl {
         line_program = build_program(gl, shaders::line_vert.data(), shaders::line_frag.data(), {});
         ground_program = build_program(gl, shaders::ground_vert.data(), shaders::ground_frag.data(), {});
         shadow_program = build_program(gl, shaders::ground_vert.data(), shaders::shadow_frag.data(), {});
-        cylinder = upload(cylinder_y());
-        cone = upload(cone_y());
+        cylinder = upload(arrow_shaft());
+        cone = upload(arrow_head());
 
         // Extrusion depth for 1D and 2D bodies: half the median body size.
         std::vector<double> extents;
@@ -286,7 +160,7 @@ struct Scene3dView::Impl {
         const float z = static_cast<float>(0.5 * extrude);
         for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
             const SceneBody& b = scene.bodies[i];
-            std::vector<Vertex> mesh;
+            Mesh mesh;
             std::vector<std::pair<Vec3f, Vec3f>> e;
             int round = 0;
             float rr = 0, size = 0;
@@ -311,11 +185,7 @@ struct Scene3dView::Impl {
                     plane_body.push_back(i);
                 } else if (b.shape2.kind == Shape2::Kind::disc) {
                     rr = static_cast<float>(b.shape2.radius);
-                    std::vector<Vec3f> o;
-                    for (int k = 0; k < 64; ++k) {
-                        const float a = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / 64.0f;
-                        o.push_back(Vec3f(rr * std::cos(a), rr * std::sin(a), 0));
-                    }
+                    const std::vector<Vec3f> o = circle_outline(rr, 64);
                     mesh = prism_mesh(o, static_cast<float>(extrude), true);
                     for (std::size_t k = 0; k < o.size(); ++k) {
                         const Vec3f a = o[k], c = o[(k + 1) % o.size()];
@@ -361,7 +231,7 @@ struct Scene3dView::Impl {
                     size = 2.0f * h.norm();
                 }
             }
-            body_meshes.push_back(mesh.empty() ? Mesh{} : upload(mesh));
+            body_meshes.push_back(mesh.empty() ? GpuMesh{} : upload(mesh));
             patterns.push_back(round == 1 ? 1 : 0);
             edges.push_back(e);
             round_kind.push_back(round);
@@ -394,11 +264,11 @@ struct Scene3dView::Impl {
     }
 
     ~Impl() {
-        for (Mesh* m : {&cylinder, &cone}) {
+        for (GpuMesh* m : {&cylinder, &cone}) {
             gl.DeleteBuffers(1, &m->vbo);
             gl.DeleteVertexArrays(1, &m->vao);
         }
-        for (Mesh& m : body_meshes) {
+        for (GpuMesh& m : body_meshes) {
             if (!m.count) continue;
             gl.DeleteBuffers(1, &m.vbo);
             gl.DeleteVertexArrays(1, &m.vao);
@@ -585,7 +455,7 @@ struct Scene3dView::Impl {
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "fill_light"), fill_light.x(), fill_light.y(), fill_light.z());
     }
 
-    void draw_mesh(const Mesh& m, const Mat4f& model, const Mat3f& normal_matrix, Colour colour,
+    void draw_mesh(const GpuMesh& m, const Mat4f& model, const Mat3f& normal_matrix, Colour colour,
                    int pattern) {
         if (collect) {
             for (int k = 0; k < 8; ++k) {
