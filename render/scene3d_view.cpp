@@ -10,6 +10,7 @@
 #include "render/imgui_layer.h"  // build_program
 #include "render/mesh.h"
 #include "render/scale.h"
+#include "render/solid.h"
 
 namespace collide::render {
 
@@ -80,19 +81,10 @@ struct Scene3dView::Impl {
 
     GLuint mesh_program = 0, line_program = 0, ground_program = 0, shadow_program = 0;
     std::vector<GpuMesh> body_meshes;            // per body (count 0: none, e.g. a plane)
-    std::vector<int> patterns;                // per body: 1 for spheres
-    std::vector<std::vector<std::pair<Vec3f, Vec3f>>> edges;  // per body, local segments
-    std::vector<int> round_kind;              // 0: none, 1: sphere, 2: cylinder (z axis)
-    std::vector<float> round_radius;
-    std::vector<float> sizes;                 // per body: bounding diameter (m)
+    Solids solids;                            // the bodies' shapes in 3D (render/solid.h)
     GpuMesh cylinder, cone;
     GLuint line_vao = 0, line_vbo = 0, ground_vao = 0, ground_vbo = 0;
     std::vector<LineVertex> lines;
-
-    // Planes: (normal, offset) in 3D.
-    std::vector<std::pair<Vec3, double>> planes;
-    std::vector<std::size_t> plane_body;
-    double extrude = 0.0;                     // 1D/2D scenes: depth along z (m)
 
     // Camera.
     ImVec4 viewport{0, 0, 1, 1};
@@ -145,99 +137,9 @@ struct Scene3dView::Impl {
         cylinder = upload(arrow_shaft());
         cone = upload(arrow_head());
 
-        // Extrusion depth for 1D and 2D bodies: half the median body size.
-        std::vector<double> extents;
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            const SceneBody& b = scene.bodies[i];
-            if (scene.dimension == 1) extents.push_back(b.length);
-            else if (scene.dimension == 2 && b.shape2.kind != Shape2::Kind::half_plane)
-                extents.push_back(2.0 * bounding_radius(b.shape2));
-        }
-        if (!extents.empty()) {
-            std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-            extrude = 0.6 * extents[extents.size() / 2];
-        }
-        const float z = static_cast<float>(0.5 * extrude);
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            const SceneBody& b = scene.bodies[i];
-            Mesh mesh;
-            std::vector<std::pair<Vec3f, Vec3f>> e;
-            int round = 0;
-            float rr = 0, size = 0;
-            const auto outline_edges = [&](const std::vector<Vec3f>& o) {
-                for (std::size_t k = 0; k < o.size(); ++k) {
-                    const Vec3f a = o[k], c = o[(k + 1) % o.size()];
-                    e.push_back({a + Vec3f(0, 0, z), c + Vec3f(0, 0, z)});
-                    e.push_back({a - Vec3f(0, 0, z), c - Vec3f(0, 0, z)});
-                    e.push_back({a - Vec3f(0, 0, z), a + Vec3f(0, 0, z)});
-                }
-            };
-            if (scene.dimension == 1) {
-                const float hx = static_cast<float>(0.5 * b.length);
-                const float hy = static_cast<float>(0.5 * block_height(scene, i));
-                const std::vector<Vec3f> o = {{-hx, -hy, 0}, {hx, -hy, 0}, {hx, hy, 0}, {-hx, hy, 0}};
-                mesh = prism_mesh(o, static_cast<float>(extrude), false);
-                outline_edges(o);
-                size = 2.0f * std::hypot(hx, hy);
-            } else if (scene.dimension == 2) {
-                if (b.shape2.kind == Shape2::Kind::half_plane) {
-                    planes.push_back({Vec3(b.shape2.normal.x(), b.shape2.normal.y(), 0.0), b.shape2.offset});
-                    plane_body.push_back(i);
-                } else if (b.shape2.kind == Shape2::Kind::disc) {
-                    rr = static_cast<float>(b.shape2.radius);
-                    const std::vector<Vec3f> o = circle_outline(rr, 64);
-                    mesh = prism_mesh(o, static_cast<float>(extrude), true);
-                    for (std::size_t k = 0; k < o.size(); ++k) {
-                        const Vec3f a = o[k], c = o[(k + 1) % o.size()];
-                        e.push_back({a + Vec3f(0, 0, z), c + Vec3f(0, 0, z)});
-                        e.push_back({a - Vec3f(0, 0, z), c - Vec3f(0, 0, z)});
-                    }
-                    e.push_back({Vec3f(0, 0, z), Vec3f(rr, 0, z)});  // the radius line
-                    round = 2;
-                    size = 2 * rr;
-                } else {
-                    std::vector<Vec3f> o;
-                    for (int k = 0; k < b.shape2.polygon.count; ++k) {
-                        const Vec2& p = b.shape2.polygon.vertices[static_cast<std::size_t>(k)];
-                        o.push_back(Vec3f(static_cast<float>(p.x()), static_cast<float>(p.y()), 0));
-                    }
-                    mesh = prism_mesh(o, static_cast<float>(extrude), false);
-                    outline_edges(o);
-                    size = static_cast<float>(2.0 * bounding_radius(b.shape2));
-                }
-            } else {
-                const Shape3& s = b.shape3;
-                if (s.kind == Shape3::Kind::half_space) {
-                    planes.push_back({s.normal, s.offset});
-                    plane_body.push_back(i);
-                } else if (s.kind == Shape3::Kind::sphere) {
-                    rr = static_cast<float>(s.radius);
-                    mesh = sphere_mesh(rr);
-                    round = 1;
-                    size = 2 * rr;
-                } else {
-                    const Vec3f h = s.half.cast<float>();
-                    mesh = box_mesh(h);
-                    for (int a = 0; a < 3; ++a)
-                        for (int k = 0; k < 4; ++k) {
-                            Vec3f p = -h, q;
-                            const int u = (a + 1) % 3, w = (a + 2) % 3;
-                            if (k & 1) p[u] = h[u];
-                            if (k & 2) p[w] = h[w];
-                            q = p;
-                            q[a] = h[a];
-                            e.push_back({p, q});
-                        }
-                    size = 2.0f * h.norm();
-                }
-            }
-            body_meshes.push_back(mesh.empty() ? GpuMesh{} : upload(mesh));
-            patterns.push_back(round == 1 ? 1 : 0);
-            edges.push_back(e);
-            round_kind.push_back(round);
-            round_radius.push_back(rr);
-            sizes.push_back(size);
-        }
+        solids = make_solids(scene);
+        for (const Solid& solid : solids.bodies)
+            body_meshes.push_back(solid.mesh.empty() ? GpuMesh{} : upload(solid.mesh));
 
         gl.GenVertexArrays(1, &line_vao);
         gl.GenBuffers(1, &line_vbo);
@@ -286,38 +188,24 @@ struct Scene3dView::Impl {
     // Every body's points over the run (corners of its bounds), for framing.
     void bounds(const BodyState& s, std::size_t i, Vec3* lo, Vec3* hi) const {
         if (!body_meshes[i].count) return;
-        const double r = 0.5 * sizes[i];
+        const double r = 0.5 * solids.bodies[i].size;
         *lo = lo->cwiseMin(s.x - Vec3(r, r, r));
         *hi = hi->cwiseMax(s.x + Vec3(r, r, r));
     }
 
-    // Where a ray from body i's centre along the unit vector d leaves its surface (m from the
-    // centre): arrows start there, outside the body, so that the body does not hide them.
-    double exit_distance(std::size_t i, const BodyState& s, const Vec3& d) const {
-        const SceneBody& b = scene.bodies[i];
-        if (round_kind[i] == 1) return round_radius[i];
-        Vec3 half;
-        if (scene.dimension == 3 && b.shape3.kind == Shape3::Kind::box) half = b.shape3.half;
-        else if (scene.dimension == 1) half = Vec3(0.5 * b.length, 0.5 * block_height(scene, i), 0.5 * extrude);
-        else return 0.5 * sizes[i];  // cylinders, prisms: their bounding sphere
-        const Vec3 local = s.q.conjugate() * d;
-        double t = std::numeric_limits<double>::infinity();
-        for (int k = 0; k < 3; ++k)
-            if (std::abs(local[k]) > 1e-12) t = std::min(t, half[k] / std::abs(local[k]));
-        return std::isfinite(t) ? t : 0.0;
-    }
     Vec3 velocity_start(std::size_t i, const BodyState& s) const {
         const double v = s.v.norm();
-        return v > 0 ? s.x + s.v / v * exit_distance(i, s, s.v / v) : s.x;
+        // From where the arrow leaves the surface, so that the body does not hide it.
+        return v > 0 ? s.x + s.v / v * exit_distance(solids.bodies[i], s.q, s.v / v) : s.x;
     }
     // The projected outline of body i (screen points, convex), for label placement.
     std::vector<ImVec2> screen_outline(std::size_t i, const BodyState& s) const {
         std::vector<ImVec2> pts;
-        if (round_kind[i] == 1) {
+        if (solids.bodies[i].kind == Solid::Kind::sphere) {
             const ImVec2 c = project(s.x);
             const Vec3f fwd = (target - eye).normalized();
             const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-            const ImVec2 e = project(s.x + right * round_radius[i]);
+            const ImVec2 e = project(s.x + right * solids.bodies[i].radius);
             const float r = std::hypot(e.x - c.x, e.y - c.y);
             for (int k = 0; k < 16; ++k) {
                 const float a = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / 16.0f;
@@ -326,7 +214,7 @@ struct Scene3dView::Impl {
             return pts;
         }
         std::vector<Vec2> screen;
-        for (const auto& [a, b] : edges[i])
+        for (const auto& [a, b] : solids.bodies[i].edges)
             for (const Vec3f& p : {a, b}) {
                 const ImVec2 q = project(s.x + s.q * p.cast<double>());
                 screen.push_back(Vec2(q.x, q.y));
@@ -529,8 +417,8 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
     }
     I.max_spin = max_spin_;
     std::vector<float> moving;
-    for (std::size_t i = 0; i < I.sizes.size(); ++i)
-        if (!I.scene.bodies[i].is_static() && I.sizes[i] > 0) moving.push_back(I.sizes[i]);
+    for (std::size_t i = 0; i < I.solids.bodies.size(); ++i)
+        if (!I.scene.bodies[i].is_static() && I.solids.bodies[i].size > 0) moving.push_back(I.solids.bodies[i].size);
     std::sort(moving.begin(), moving.end());
     const double body = moving.empty() ? 0.3 * (hi - lo).norm() : moving[moving.size() / 2];
     const double span = std::max(1e-6, (hi - lo).norm());
@@ -540,15 +428,15 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
     I.k_impulse = max_impulse > 0 ? 0.9 * arrow_len / max_impulse : 0;
     for (const ImpactMark& im : impacts)  // none longer than half the smaller body
         for (std::size_t i : {im.a, im.b})
-            if (i < I.sizes.size() && I.sizes[i] > 0 && im.impulse.norm() > 0)
-                I.k_impulse = std::min(I.k_impulse, 0.5 * I.sizes[i] / im.impulse.norm());
+            if (i < I.solids.bodies.size() && I.solids.bodies[i].size > 0 && im.impulse.norm() > 0)
+                I.k_impulse = std::min(I.k_impulse, 0.5 * I.solids.bodies[i].size / im.impulse.norm());
     I.k_spin = max_spin_ > 0 ? 0.8 * arrow_len / max_spin_ : 0;
     // Room for the velocity arrows.
     for (const FrameState& f : samples)
         for (std::size_t i = 0; i < f.bodies.size() && i < I.scene.bodies.size(); ++i) {
             if (I.scene.bodies[i].is_static() || !I.body_meshes[i].count) continue;
             const Vec3 tip = f.bodies[i].x + I.k_velocity * f.bodies[i].v +
-                             (f.bodies[i].v.norm() > 0 ? Vec3(0.5 * I.sizes[i] * f.bodies[i].v.normalized()) : Vec3(Vec3::Zero()));
+                             (f.bodies[i].v.norm() > 0 ? Vec3(0.5 * I.solids.bodies[i].size * f.bodies[i].v.normalized()) : Vec3(Vec3::Zero()));
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
         }
@@ -557,7 +445,7 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
 
     // The ground: the first plane facing up, else a floor under the lowest point.
     I.has_ground = false;
-    for (const auto& [n, offset] : I.planes) {
+    for (const auto& [n, offset] : I.solids.planes) {
         if (n.y() < 0.7) continue;
         const double nn = n.norm();
         I.ground_normal = n / nn;
@@ -746,7 +634,7 @@ void Scene3dView::draw_ground(const FrameState& frame) {
             if (!I.body_meshes[i].count) continue;
             const Vec3 d = frame.bodies[i].x - o;
             const double height = d.dot(I.ground_normal);
-            const double r = 0.5 * I.sizes[i];
+            const double r = 0.5 * I.solids.bodies[i].size;
             if (height < -0.5 * r) continue;
             const double radius = r * (1.0 + 0.25 * std::max(0.0, height) / std::max(r, 1e-9));
             const double strength = 0.30 * std::exp(-std::max(0.0, height - r) / (3 * r));
@@ -793,7 +681,7 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
         model.block<3, 1>(0, 3) = f3(s.x);
         I.draw_mesh(I.body_meshes[i], model, R,
                     is_static ? pal.static_fill : pal.fills[colour_index % Palette::kFills],
-                    I.patterns[i]);
+                    I.solids.bodies[i].kind == Solid::Kind::sphere ? 1 : 0);
     }
     gl.Disable(GL_POLYGON_OFFSET_FILL);
 
@@ -807,7 +695,7 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
             if (I.k_spin > 0 && s.w.norm() > 1e-9 * I.max_spin && s.w.norm() > 1e-12) {
                 // From the surface along the axis.
                 const Vec3 axis = s.w.normalized();
-                const Vec3 start = s.x + axis * (0.5 * I.sizes[i] * 0.9);
+                const Vec3 start = s.x + axis * (0.5 * I.solids.bodies[i].size * 0.9);
                 I.arrow(start, I.k_spin * s.w, pal.spin, thick * 0.8);
             }
         }
@@ -817,12 +705,12 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
     for (std::size_t i = 0; i < n; ++i) {
         if (!I.body_meshes[i].count) continue;
         const BodyState& s = frame.bodies[i];
-        for (const auto& [a, b] : I.edges[i])
+        for (const auto& [a, b] : I.solids.bodies[i].edges)
             I.line(s.x + s.q * a.cast<double>(), s.x + s.q * b.cast<double>(), pal.ink, outline);
         const Vec3 to_eye = I.eye.cast<double>() - s.x;
         const double d = to_eye.norm();
-        const double r = I.round_radius[i];
-        if (I.round_kind[i] == 1 && d > r) {
+        const double r = I.solids.bodies[i].radius;
+        if (I.solids.bodies[i].kind == Solid::Kind::sphere && d > r) {
             // The silhouette circle of a sphere seen from the eye.
             const Vec3 u = to_eye / d;
             const Vec3 c = s.x + u * (r * r / d);
@@ -844,13 +732,13 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
                 const Vec3 p1 = s.x + s.q * Vec3(r * std::cos(a1), 0, r * std::sin(a1));
                 I.line(p0, p1, with_alpha(pal.ink, 0.45f), outline * 0.6f);
             }
-        } else if (I.round_kind[i] == 2) {
+        } else if (I.solids.bodies[i].kind == Solid::Kind::cylinder) {
             // A cylinder (z axis): its two side silhouette lines.
             const Vec3 axis = s.q * Vec3::UnitZ();
             Vec3 side = axis.cross(to_eye);
             if (side.norm() > 1e-9) {
                 side.normalize();
-                const double h = 0.5 * I.extrude;
+                const double h = 0.5 * I.solids.extrude;
                 for (double sg : {-1.0, 1.0})
                     I.line(s.x + sg * r * side - h * axis, s.x + sg * r * side + h * axis, pal.ink, outline);
             }
@@ -884,7 +772,7 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
             s.w.norm() < 1e-12)
             return false;
         const Vec3 axis = s.w.normalized();
-        c->centre = s.x + axis * (0.5 * I.sizes[i] * 0.9 + 0.6 * I.k_spin * s.w.norm());
+        c->centre = s.x + axis * (0.5 * I.solids.bodies[i].size * 0.9 + 0.6 * I.k_spin * s.w.norm());
         c->e1 = axis.cross(Vec3::UnitY());
         if (c->e1.norm() < 1e-6) c->e1 = axis.cross(Vec3::UnitX());
         c->e1.normalize();
@@ -1014,14 +902,14 @@ void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameStat
             }
             if (I.k_spin > 0 && s.w.norm() > 1e-9 * I.max_spin && s.w.norm() > 1e-12) {
                 const Vec3 axis = s.w.normalized();
-                const ImVec2 tip = I.project(s.x + axis * (0.5 * I.sizes[i] * 0.9) + I.k_spin * s.w);
+                const ImVec2 tip = I.project(s.x + axis * (0.5 * I.solids.bodies[i].size * 0.9) + I.k_spin * s.w);
                 pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
                                    "\u03C9 = " + format_number(s.w.norm()) + " rad s\u207B\u00B9", c.spin, fonts.text});
             }
         }
     for (std::size_t i = 0; i < n; ++i) {
         if (!I.body_meshes[i].count) continue;
-        const ImVec2 top = I.project(frame.bodies[i].x + Vec3(0, 0.5 * I.sizes[i], 0));
+        const ImVec2 top = I.project(frame.bodies[i].x + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
         pending.push_back({top, ImVec2(0, -1), I.scene.bodies[i].name, c.ink, fonts.small});
     }
     const float pad = I.style.px(3.0f);
