@@ -7,6 +7,7 @@
 #include <string>
 
 #include "assets/shaders.h"  // generated from assets/shaders/ (cmake/embed.cmake)
+#include "render/camera.h"
 #include "render/imgui_layer.h"  // build_program
 #include "render/mesh.h"
 #include "render/scale.h"
@@ -16,37 +17,11 @@ namespace collide::render {
 
 namespace {
 
-
 Vec3f f3(const Vec3& v) { return v.cast<float>(); }
 
 Vec3f colour3(Colour c) {
     return Vec3f(static_cast<float>(c & 0xFF), static_cast<float>((c >> 8) & 0xFF),
                  static_cast<float>((c >> 16) & 0xFF)) / 255.0f;
-}
-
-Mat4f look_at(const Vec3f& eye, const Vec3f& target, const Vec3f& up) {
-    const Vec3f f = (target - eye).normalized();
-    const Vec3f s = f.cross(up).normalized();
-    const Vec3f u = s.cross(f);
-    Mat4f m = Mat4f::Identity();
-    m.block<1, 3>(0, 0) = s.transpose();
-    m.block<1, 3>(1, 0) = u.transpose();
-    m.block<1, 3>(2, 0) = -f.transpose();
-    m(0, 3) = -s.dot(eye);
-    m(1, 3) = -u.dot(eye);
-    m(2, 3) = f.dot(eye);
-    return m;
-}
-
-Mat4f perspective(float fovy, float aspect, float near, float far) {
-    const float t = 1.0f / std::tan(0.5f * fovy);
-    Mat4f m = Mat4f::Zero();
-    m(0, 0) = t / aspect;
-    m(1, 1) = t;
-    m(2, 2) = (far + near) / (near - far);
-    m(2, 3) = 2.0f * far * near / (near - far);
-    m(3, 2) = -1.0f;
-    return m;
 }
 
 struct LineVertex {
@@ -86,14 +61,7 @@ struct Scene3dView::Impl {
     GLuint line_vao = 0, line_vbo = 0, ground_vao = 0, ground_vbo = 0;
     std::vector<LineVertex> lines;
 
-    // Camera.
-    ImVec4 viewport{0, 0, 1, 1};
-    int frame_w = 1, frame_h = 1;
-    Vec3f eye = Vec3f(0, 0, 5), target = Vec3f::Zero();
-    Mat4f view_projection = Mat4f::Identity();   // clip space of the viewport (project())
-    // The same camera drawn on the whole frame: the ground and grid run to the frame's edges
-    // while the scene stays framed in the viewport (an off-centre projection).
-    Mat4f frame_projection = Mat4f::Identity();
+    Camera camera;
     Vec3f key_light, fill_light;
     double radius = 1.0;           // of the framed region (m)
     Vec3 centre = Vec3::Zero();
@@ -202,10 +170,9 @@ struct Scene3dView::Impl {
     std::vector<ImVec2> screen_outline(std::size_t i, const BodyState& s) const {
         std::vector<ImVec2> pts;
         if (solids.bodies[i].kind == Solid::Kind::sphere) {
-            const ImVec2 c = project(s.x);
-            const Vec3f fwd = (target - eye).normalized();
-            const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-            const ImVec2 e = project(s.x + right * solids.bodies[i].radius);
+            const ImVec2 c = camera.project(s.x);
+            const Vec3 right = camera.right().cast<double>();
+            const ImVec2 e = camera.project(s.x + right * solids.bodies[i].radius);
             const float r = std::hypot(e.x - c.x, e.y - c.y);
             for (int k = 0; k < 16; ++k) {
                 const float a = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / 16.0f;
@@ -216,7 +183,7 @@ struct Scene3dView::Impl {
         std::vector<Vec2> screen;
         for (const auto& [a, b] : solids.bodies[i].edges)
             for (const Vec3f& p : {a, b}) {
-                const ImVec2 q = project(s.x + s.q * p.cast<double>());
+                const ImVec2 q = camera.project(s.x + s.q * p.cast<double>());
                 screen.push_back(Vec2(q.x, q.y));
             }
         // Convex hull (monotone chain).
@@ -242,44 +209,14 @@ struct Scene3dView::Impl {
         return pts;
     }
 
-    ImVec2 project(const Vec3& p) const {
-        const Eigen::Vector4f c = view_projection * Eigen::Vector4f(static_cast<float>(p.x()),
-                                                                     static_cast<float>(p.y()),
-                                                                     static_cast<float>(p.z()), 1.0f);
-        const float w = std::abs(c.w()) > 1e-9f ? c.w() : 1e-9f;
-        const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-        return ImVec2(viewport.x + (c.x() / w * 0.5f + 0.5f) * vw,
-                      viewport.y + (0.5f - c.y() / w * 0.5f) * vh);
-    }
-
-    void set_camera(const Vec3f& dir, float distance, const Vec3f& look) {
-        const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-        target = look;
-        eye = look + dir * distance;
-        const float near = std::max(0.01f * distance, distance - 4.0f * static_cast<float>(radius));
-        const float far = distance + 8.0f * static_cast<float>(radius);
-        view_projection = perspective(static_cast<float>(kFovY), vw / vh, near, far) *
-                          look_at(eye, target, Vec3f(0, 1, 0));
-        // Viewport clip coordinates -> frame clip coordinates (x right, y up).
-        const float W = static_cast<float>(frame_w), H = static_cast<float>(frame_h);
-        Mat4f to_frame = Mat4f::Identity();
-        to_frame(0, 0) = vw / W;
-        to_frame(0, 3) = (2.0f * viewport.x + vw) / W - 1.0f;
-        to_frame(1, 1) = vh / H;
-        to_frame(1, 3) = 1.0f - (2.0f * viewport.y + vh) / H;
-        frame_projection = to_frame * view_projection;
-    }
-    static constexpr double kFovY = 30.0 * kPi / 180.0;
-
     // Collecting (above_bounds): the screen box of what would be drawn, instead of drawing.
     ScreenBox* collect = nullptr;
     void collect_point(const Vec3f& p, float pad) const {
-        const Eigen::Vector4f c = view_projection * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
-        if (!(c.w() > 1e-6f)) {
+        if (!camera.in_front(p)) {
             collect->everywhere = true;
             return;
         }
-        const ImVec2 q = project(p.cast<double>());
+        const ImVec2 q = camera.project(p.cast<double>());
         collect->add(q.x, q.y, pad);
     }
 
@@ -313,9 +250,9 @@ struct Scene3dView::Impl {
         if (lines.empty()) return;
         gl.UseProgram(line_program);
         gl.UniformMatrix4fv(gl.GetUniformLocation(line_program, "view_projection"), 1, GL_FALSE,
-                            frame_projection.data());
-        gl.Uniform2f(gl.GetUniformLocation(line_program, "viewport"), static_cast<float>(frame_w),
-                     static_cast<float>(frame_h));
+                            camera.frame_projection().data());
+        gl.Uniform2f(gl.GetUniformLocation(line_program, "viewport"), static_cast<float>(camera.frame_width()),
+                     static_cast<float>(camera.frame_height()));
         gl.Uniform1f(gl.GetUniformLocation(line_program, "depth_bias"), bias);
         if (depth_test) gl.Enable(GL_DEPTH_TEST);
         else gl.Disable(GL_DEPTH_TEST);
@@ -337,7 +274,8 @@ struct Scene3dView::Impl {
     void use_mesh_program() {
         gl.UseProgram(mesh_program);
         gl.UniformMatrix4fv(gl.GetUniformLocation(mesh_program, "view_projection"), 1, GL_FALSE,
-                            frame_projection.data());
+                            camera.frame_projection().data());
+        const Vec3f& eye = camera.eye();
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "eye"), eye.x(), eye.y(), eye.z());
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "key_light"), key_light.x(), key_light.y(), key_light.z());
         gl.Uniform3f(gl.GetUniformLocation(mesh_program, "fill_light"), fill_light.x(), fill_light.y(), fill_light.z());
@@ -396,9 +334,7 @@ Scene3dView::~Scene3dView() = default;
 void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
                       ImVec4 viewport, int frame_width, int frame_height) {
     Impl& I = *impl_;
-    I.viewport = viewport;
-    I.frame_w = frame_width;
-    I.frame_h = frame_height;
+    I.camera.set_viewport(viewport, frame_width, frame_height);
     const double inf = std::numeric_limits<double>::infinity();
     Vec3 lo(inf, inf, inf), hi(-inf, -inf, -inf);
     double max_speed = 0, max_impulse = 0;
@@ -471,62 +407,20 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
     I.ground_extent = 2.2 * I.radius;
     I.grid_spacing = round_value(I.radius / 5.0);
 
-    // The camera: from the front (+z), turned 30 degrees to the right and raised 22; 2D and 1D
-    // scenes a little more from the front. Then the distance and the aim are adjusted so that
-    // the bounds' projection fills 86% of the viewport.
-    const double az = camera_.azimuth.value_or(default_azimuth(I.scene.dimension)) * kPi / 180.0;
-    const double el = camera_.elevation.value_or(default_elevation(I.scene.dimension)) * kPi / 180.0;
-    const Vec3f dir(static_cast<float>(std::sin(az) * std::cos(el)), static_cast<float>(std::sin(el)),
-                    static_cast<float>(std::cos(az) * std::cos(el)));
-    float distance = static_cast<float>(I.radius / std::sin(0.5 * Impl::kFovY));
-    Vec3f look = f3(I.centre);
-    if (camera_.target) look = f3(*camera_.target);
-    if (camera_.distance) distance = static_cast<float>(*camera_.distance);
-    const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-    // What the scenario fixes stays fixed: a set target is not re-aimed, a set distance not
-    // changed.
-    for (int iteration = 0; iteration < 4 && !(camera_.target && camera_.distance); ++iteration) {
-        I.set_camera(dir, distance, look);
-        float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
-        for (int k = 0; k < 8; ++k) {
-            const Vec3 p((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(), (k & 4) ? hi.z() : lo.z());
-            const ImVec2 s = I.project(p);
-            x0 = std::min(x0, s.x);
-            x1 = std::max(x1, s.x);
-            y0 = std::min(y0, s.y);
-            y1 = std::max(y1, s.y);
-        }
-        const float fill = std::max((x1 - x0) / vw, (y1 - y0) / vh) / 0.8f;
-        // Re-aim at the projected box's centre (a shift in the view plane).
-        const float dx = (0.5f * (x0 + x1) - (viewport.x + 0.5f * vw)) / vw;
-        const float dy = (0.5f * (y0 + y1) - (viewport.y + 0.5f * vh)) / vh;
-        const Vec3f fwd = -dir;
-        const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
-        const Vec3f up = right.cross(fwd);
-        const float half_h = distance * std::tan(0.5f * static_cast<float>(Impl::kFovY));
-        const float half_w = half_h * vw / vh;
-        if (!camera_.target) look += right * (2.0f * dx * half_w) - up * (2.0f * dy * half_h);
-        if (!camera_.distance) distance *= std::clamp(fill, 0.3f, 3.0f);
-    }
-    I.set_camera(dir, distance / static_cast<float>(camera_.zoom), look);
+    // The camera on the box.
+    I.camera.frame(lo, hi, I.centre, I.radius, camera_, I.scene.dimension);
     // Lights in the viewer's frame: the key from the upper left, the fill from the right.
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
-    const Vec3f up = right.cross(fwd);
+    const Vec3f fwd = I.camera.forward(), right = I.camera.right(), up = I.camera.up();
     I.key_light = (-0.45f * right + 0.75f * up - 0.5f * fwd).normalized();
     I.fill_light = (0.8f * right + 0.1f * up - 0.4f * fwd).normalized();
 }
 
-double default_azimuth(int dimension) { return dimension < 3 ? 20.0 : 32.0; }
-double default_elevation(int dimension) { return dimension < 3 ? 16.0 : 24.0; }
-
-ImVec2 Scene3dView::to_screen(const Vec3& world) const { return impl_->project(world); }
+ImVec2 Scene3dView::to_screen(const Vec3& world) const { return impl_->camera.project(world); }
 
 double Scene3dView::pixels_per_metre() const {
     const Impl& I = *impl_;
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-    const ImVec2 a = I.project(I.centre), b = I.project(I.centre + right);
+    const Vec3 right = I.camera.right().cast<double>();
+    const ImVec2 a = I.camera.project(I.centre), b = I.camera.project(I.centre + right);
     return std::hypot(b.x - a.x, b.y - a.y);
 }
 
@@ -534,9 +428,8 @@ DiagramView::Legend Scene3dView::velocity_legend() const {
     const Impl& I = *impl_;
     if (!(I.k_velocity > 0)) return {};
     // Pixels per metre at the scene's centre, across the view.
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-    const float ppm = std::abs(I.project(I.centre + right).x - I.project(I.centre).x);
+    const Vec3 right = I.camera.right().cast<double>();
+    const float ppm = std::abs(I.camera.project(I.centre + right).x - I.camera.project(I.centre).x);
     const double px_per_unit = I.k_velocity * ppm;
     const double value = round_value(I.style.px(70.0f) / px_per_unit);
     return {value, static_cast<float>(value * px_per_unit)};
@@ -545,9 +438,8 @@ DiagramView::Legend Scene3dView::velocity_legend() const {
 DiagramView::Legend Scene3dView::impulse_legend() const {
     const Impl& I = *impl_;
     if (!(I.k_impulse > 0)) return {};
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-    const float ppm = std::abs(I.project(I.centre + right).x - I.project(I.centre).x);
+    const Vec3 right = I.camera.right().cast<double>();
+    const float ppm = std::abs(I.camera.project(I.centre + right).x - I.camera.project(I.centre).x);
     const double px_per_unit = I.k_impulse * ppm;
     const double value = round_value(I.style.px(70.0f) / px_per_unit);
     return {value, static_cast<float>(value * px_per_unit)};
@@ -577,7 +469,8 @@ bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, ImVe
     draw_above(frame, decor);
     impl_->collect = nullptr;
     if (box.everywhere) {
-        *rect = ImVec4(0, 0, static_cast<float>(impl_->frame_w), static_cast<float>(impl_->frame_h));
+        *rect = ImVec4(0, 0, static_cast<float>(impl_->camera.frame_width()),
+                       static_cast<float>(impl_->camera.frame_height()));
         return true;
     }
     if (!(box.x0 <= box.x1)) return false;
@@ -589,7 +482,7 @@ void Scene3dView::draw_ground(const FrameState& frame) {
     Impl& I = *impl_;
     const Gl& gl = I.gl;
     const Palette& pal = I.style.colours;
-    begin_pass(gl, I.frame_w, I.frame_h);
+    begin_pass(gl, I.camera.frame_width(), I.camera.frame_height());
     const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
 
     // The ground, its grid and the bodies' shadows.
@@ -608,7 +501,7 @@ void Scene3dView::draw_ground(const FrameState& frame) {
         u3("ground", colour3(rgb(238, 238, 233)));
         u3("line_colour", colour3(rgb(168, 170, 174)));
         gl.UniformMatrix4fv(gl.GetUniformLocation(I.ground_program, "view_projection"), 1, GL_FALSE,
-                            I.frame_projection.data());
+                            I.camera.frame_projection().data());
         gl.Uniform1f(gl.GetUniformLocation(I.ground_program, "spacing"), static_cast<float>(I.grid_spacing));
         gl.Uniform1f(gl.GetUniformLocation(I.ground_program, "fade"), e);
         gl.BindVertexArray(I.ground_vao);
@@ -621,7 +514,7 @@ void Scene3dView::draw_ground(const FrameState& frame) {
         // Shadows: one soft disc under each body, darker and smaller the nearer it is.
         gl.UseProgram(I.shadow_program);
         gl.UniformMatrix4fv(gl.GetUniformLocation(I.shadow_program, "view_projection"), 1, GL_FALSE,
-                            I.frame_projection.data());
+                            I.camera.frame_projection().data());
         gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "axis_u"), static_cast<float>(I.ground_u.x()),
                      static_cast<float>(I.ground_u.y()), static_cast<float>(I.ground_u.z()));
         gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "axis_v"), static_cast<float>(I.ground_v.x()),
@@ -660,7 +553,7 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
     Impl& I = *impl_;
     const Gl& gl = I.gl;
     const Palette& pal = I.style.colours;
-    begin_pass(gl, I.frame_w, I.frame_h);
+    begin_pass(gl, I.camera.frame_width(), I.camera.frame_height());
     const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
     const float outline = I.style.lw(I.style.outline);
 
@@ -707,7 +600,7 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
         const BodyState& s = frame.bodies[i];
         for (const auto& [a, b] : I.solids.bodies[i].edges)
             I.line(s.x + s.q * a.cast<double>(), s.x + s.q * b.cast<double>(), pal.ink, outline);
-        const Vec3 to_eye = I.eye.cast<double>() - s.x;
+        const Vec3 to_eye = I.camera.eye().cast<double>() - s.x;
         const double d = to_eye.norm();
         const double r = I.solids.bodies[i].radius;
         if (I.solids.bodies[i].kind == Solid::Kind::sphere && d > r) {
@@ -841,14 +734,13 @@ void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameStat
     if (decor.com)
         for (std::size_t i = 0; i < n; ++i)
             if (!I.scene.bodies[i].is_static() && I.body_meshes[i].count)
-                draw_com_marker(dl, I.project(frame.bodies[i].x), I.style.lw(I.style.com * 0.85f), c.ink,
+                draw_com_marker(dl, I.camera.project(frame.bodies[i].x), I.style.lw(I.style.com * 0.85f), c.ink,
                                 c.background, 0.0f);
     // Axes: where x, y and z point, in the view's lower left corner.
     {
-        const ImVec2 o(I.viewport.x + I.style.px(50.0f), I.viewport.w - I.style.px(50.0f));
-        const Vec3f fwd = (I.target - I.eye).normalized();
-        const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
-        const Vec3f up = right.cross(fwd);
+        const ImVec4& vp = I.camera.viewport();
+        const ImVec2 o(vp.x + I.style.px(50.0f), vp.w - I.style.px(50.0f));
+        const Vec3f right = I.camera.right(), up = I.camera.up();
         const Colour axis_colours[3] = {rgb(200, 50, 50), rgb(40, 150, 60), rgb(40, 90, 200)};
         const char* names[3] = {"x", "y", "z"};
         for (int k = 0; k < 3; ++k) {
@@ -876,16 +768,16 @@ void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameStat
     std::vector<Pending> pending;
     if (decor.impacts)
         for (const ImpactMark& im : frame.impacts) {
-            const ImVec2 p = I.project(im.point);
-            const ImVec2 tip = I.project(im.point + I.k_impulse * im.impulse);
+            const ImVec2 p = I.camera.project(im.point);
+            const ImVec2 tip = I.camera.project(im.point + I.k_impulse * im.impulse);
             pending.push_back({tip, ImVec2(tip.x - p.x, tip.y - p.y),
                                "P = " + format_number(im.impulse.norm()) + " N s", c.impulse, fonts.text});
-            const ImVec2 nt = I.project(im.point + 0.95 * I.unit * im.normal);
+            const ImVec2 nt = I.camera.project(im.point + 0.95 * I.unit * im.normal);
             pending.push_back({nt, ImVec2(nt.x - p.x, nt.y - p.y), "n", c.normal, fonts.text});
             const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
             for (const auto& [i, name] : ends) {
                 if (i >= n || !I.body_meshes[i].count) continue;
-                const ImVec2 from = I.project(frame.bodies[i].x);
+                const ImVec2 from = I.camera.project(frame.bodies[i].x);
                 pending.push_back({ImVec2(0.5f * (from.x + p.x), 0.5f * (from.y + p.y)),
                                    ImVec2(-(p.y - from.y), p.x - from.x), name, c.lever, fonts.text});
             }
@@ -894,22 +786,22 @@ void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameStat
         for (std::size_t i = 0; i < n; ++i) {
             if (I.scene.bodies[i].is_static() || !I.body_meshes[i].count) continue;
             const BodyState& s = frame.bodies[i];
-            const ImVec2 from = I.project(s.x);
+            const ImVec2 from = I.camera.project(s.x);
             if (s.v.norm() * I.k_velocity > 1e-3 * I.unit) {
-                const ImVec2 tip = I.project(I.velocity_start(i, s) + I.k_velocity * s.v);
+                const ImVec2 tip = I.camera.project(I.velocity_start(i, s) + I.k_velocity * s.v);
                 pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
                                    "v = " + format_number(s.v.norm()) + " m s\u207B\u00B9", c.velocity, fonts.text});
             }
             if (I.k_spin > 0 && s.w.norm() > 1e-9 * I.max_spin && s.w.norm() > 1e-12) {
                 const Vec3 axis = s.w.normalized();
-                const ImVec2 tip = I.project(s.x + axis * (0.5 * I.solids.bodies[i].size * 0.9) + I.k_spin * s.w);
+                const ImVec2 tip = I.camera.project(s.x + axis * (0.5 * I.solids.bodies[i].size * 0.9) + I.k_spin * s.w);
                 pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
                                    "\u03C9 = " + format_number(s.w.norm()) + " rad s\u207B\u00B9", c.spin, fonts.text});
             }
         }
     for (std::size_t i = 0; i < n; ++i) {
         if (!I.body_meshes[i].count) continue;
-        const ImVec2 top = I.project(frame.bodies[i].x + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
+        const ImVec2 top = I.camera.project(frame.bodies[i].x + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
         pending.push_back({top, ImVec2(0, -1), I.scene.bodies[i].name, c.ink, fonts.small});
     }
     const float pad = I.style.px(3.0f);

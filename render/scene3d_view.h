@@ -10,12 +10,12 @@
 #pragma once
 
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include <imgui.h>
 
 #include "engine/scene.h"
+#include "render/camera.h"  // CameraRequest, default_azimuth, default_elevation
 #include "render/diagram_view.h"  // Decor
 #include "render/draw2d.h"
 #include "render/frame_state.h"
@@ -23,20 +23,6 @@
 #include "render/style.h"
 
 namespace collide::render {
-
-// A camera asked for by the scenario ([view] table); what is not set is chosen by fit().
-struct CameraRequest {
-    std::optional<double> azimuth;    // degrees: turned right of the front (+z) about +y
-    std::optional<double> elevation;  // degrees above the horizon
-    std::optional<Vec3> target;       // m: the point looked at
-    std::optional<double> distance;   // m from the target
-    double zoom = 1.0;                // the distance divided by this (collide gui's mouse wheel)
-};
-
-// The camera's angles when the scenario sets none (degrees): 1D and 2D scenes a little more
-// from the front than 3D ones.
-double default_azimuth(int dimension);
-double default_elevation(int dimension);
 
 class Scene3dView {
 public:
