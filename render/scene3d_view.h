@@ -7,6 +7,10 @@
 //
 // 1D and 2D scenes can be shown in 3D too: blocks become boxes, discs cylinders and polygons
 // prisms, extruded along z; 2D half-planes become walls or the ground.
+//
+// The parts: camera.h (projection, framing), solid.h and mesh.h (the bodies as meshes, no GL),
+// scene3d_passes.h (what a frame draws, as geometry), batch3d.h (the GL buffers and draw
+// calls) and the GLSL programs in assets/shaders/.
 #pragma once
 
 #include <memory>
@@ -43,9 +47,10 @@ public:
     void draw_ground(const FrameState& frame);
     void draw_above(const FrameState& frame, const Decor& decor);
     // The screen rectangle draw_above() can touch (pixels, top-left origin, x0 <= x1, y0 <= y1,
-    // not clipped to the frame); false when it draws nothing. The multisampled render draws the
-    // frame's ground without MSAA and only this rectangle with it (the ground's interior
-    // pixels are the same either way), which makes anti-aliasing cost what the bodies cover.
+    // not clipped to the frame), measured on the geometry it would draw; false when it draws
+    // nothing. The multisampled render draws the frame's ground without MSAA and only this
+    // rectangle with it (the ground's interior pixels are the same either way), which makes
+    // anti-aliasing cost what the bodies cover.
     bool above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect);
     // Labels through ImGui, after draw().
     void annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
