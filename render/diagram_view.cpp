@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "render/convex_hull.h"
 #include "render/scale.h"
 
 namespace collide::render {
@@ -12,29 +13,6 @@ namespace {
 
 
 Vec2 xy(const Vec3& v) { return Vec2(v.x(), v.y()); }
-
-// Andrew's monotone chain: the convex hull, counter-clockwise.
-std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
-    std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    });
-    if (p.size() < 3) return p;
-    std::vector<Vec2> h(2 * p.size());
-    std::size_t k = 0;
-    const auto turn = [](const Vec2& o, const Vec2& a, const Vec2& b) {
-        return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-    };
-    for (std::size_t i = 0; i < p.size(); ++i) {
-        while (k >= 2 && turn(h[k - 2], h[k - 1], p[i]) <= 0) --k;
-        h[k++] = p[i];
-    }
-    for (std::size_t i = p.size() - 1, t = k + 1; i > 0; --i) {
-        while (k >= t && turn(h[k - 2], h[k - 1], p[i - 1]) <= 0) --k;
-        h[k++] = p[i - 1];
-    }
-    h.resize(k - 1);
-    return h;
-}
 
 // The part of segment a-b inside a convex polygon (screen points, either orientation).
 bool clip_to_convex(const std::vector<ImVec2>& poly, ImVec2* a, ImVec2* b) {

@@ -7,6 +7,7 @@
 
 #include "render/batch3d.h"
 #include "render/camera.h"
+#include "render/convex_hull.h"
 #include "render/mesh.h"
 #include "render/scale.h"
 #include "render/scene3d_passes.h"
@@ -70,26 +71,9 @@ struct Scene3dView::Impl {
                 const ImVec2 q = camera.project(s.x + s.q * p.cast<double>());
                 screen.push_back(Vec2(q.x, q.y));
             }
-        // Convex hull (monotone chain).
-        std::sort(screen.begin(), screen.end(), [](const Vec2& a, const Vec2& b) {
-            return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-        });
         if (screen.size() < 3) return pts;
-        std::vector<Vec2> h(2 * screen.size());
-        std::size_t k = 0;
-        const auto turn = [](const Vec2& o, const Vec2& a, const Vec2& b) {
-            return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-        };
-        for (std::size_t j = 0; j < screen.size(); ++j) {
-            while (k >= 2 && turn(h[k - 2], h[k - 1], screen[j]) <= 0) --k;
-            h[k++] = screen[j];
-        }
-        for (std::size_t j = screen.size() - 1, t = k + 1; j > 0; --j) {
-            while (k >= t && turn(h[k - 2], h[k - 1], screen[j - 1]) <= 0) --k;
-            h[k++] = screen[j - 1];
-        }
-        for (std::size_t j = 0; j + 1 < k; ++j)
-            pts.push_back(ImVec2(static_cast<float>(h[j].x()), static_cast<float>(h[j].y())));
+        for (const Vec2& p : convex_hull(screen))
+            pts.push_back(ImVec2(static_cast<float>(p.x()), static_cast<float>(p.y())));
         return pts;
     }
 };
