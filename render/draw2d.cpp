@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/math.h"  // kPi
+
 namespace collide::render {
 
 namespace {
@@ -13,7 +15,8 @@ ImVec2 sub(ImVec2 a, ImVec2 b) { return ImVec2(a.x - b.x, a.y - b.y); }
 ImVec2 mul(ImVec2 a, float s) { return ImVec2(a.x * s, a.y * s); }
 float length(ImVec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 
-constexpr float kPi = 3.14159265358979f;
+// The float nearest pi (collide::kPi rounded once), for angles on screen.
+constexpr float kPiF = static_cast<float>(kPi);
 
 // Splits rich text into runs: 0 normal, -1 subscript, +1 superscript.
 struct Run {
@@ -111,11 +114,11 @@ void draw_dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, Colour colour, float t
 void draw_com_marker(ImDrawList* dl, ImVec2 c, float r, Colour ink, Colour paper, float angle) {
     dl->AddCircleFilled(c, r, paper, 24);
     for (int q = 0; q < 2; ++q) {  // quarters 0 and 2, turning with the body
-        const float a0 = angle + static_cast<float>(q) * kPi;
+        const float a0 = angle + static_cast<float>(q) * kPiF;
         dl->PathClear();
         dl->PathLineTo(c);
         for (int k = 0; k <= 8; ++k) {
-            const float a = a0 + 0.5f * kPi * static_cast<float>(k) / 8.0f;
+            const float a = a0 + 0.5f * kPiF * static_cast<float>(k) / 8.0f;
             dl->PathLineTo(ImVec2(c.x + r * std::cos(a), c.y - r * std::sin(a)));
         }
         // Screen-clockwise order for the fill: reverse (angles grow counter-clockwise on screen).
@@ -241,7 +244,7 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
     ImVec2 d = dl > 1e-6f ? mul(direction, 1.0f / dl) : ImVec2(0.0f, -1.0f);
     // Candidate directions: the preferred one, then turning away from it both ways.
     const float base = std::atan2(d.y, d.x);
-    const float turns[] = {0.0f, 0.6f, -0.6f, 1.2f, -1.2f, 1.8f, -1.8f, 2.4f, -2.4f, kPi};
+    const float turns[] = {0.0f, 0.6f, -0.6f, 1.2f, -1.2f, 1.8f, -1.8f, 2.4f, -2.4f, kPiF};
     ImVec2 best(anchor.x - 0.5f * size.x, anchor.y - 0.5f * size.y);
     // Nearest first: at each distance every direction, then further away. Off the bodies if
     // that can be had within a few label heights, else anywhere free.

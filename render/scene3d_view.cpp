@@ -1,604 +1,63 @@
 #include "render/scene3d_view.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
 
-#include "render/imgui_layer.h"  // build_program
+#include "render/batch3d.h"
+#include "render/camera.h"
+#include "render/convex_hull.h"
+#include "render/mesh.h"
+#include "render/scale.h"
+#include "render/scene3d_passes.h"
+#include "render/solid.h"
 
 namespace collide::render {
 
-namespace {
-
-using Vec3f = Eigen::Vector3f;
-using Mat4f = Eigen::Matrix4f;
-using Mat3f = Eigen::Matrix3f;
-constexpr double kPi = 3.14159265358979323846;
-
-Vec3f f3(const Vec3& v) { return v.cast<float>(); }
-
-Vec3f colour3(Colour c) {
-    return Vec3f(static_cast<float>(c & 0xFF), static_cast<float>((c >> 8) & 0xFF),
-                 static_cast<float>((c >> 16) & 0xFF)) / 255.0f;
-}
-
-Mat4f look_at(const Vec3f& eye, const Vec3f& target, const Vec3f& up) {
-    const Vec3f f = (target - eye).normalized();
-    const Vec3f s = f.cross(up).normalized();
-    const Vec3f u = s.cross(f);
-    Mat4f m = Mat4f::Identity();
-    m.block<1, 3>(0, 0) = s.transpose();
-    m.block<1, 3>(1, 0) = u.transpose();
-    m.block<1, 3>(2, 0) = -f.transpose();
-    m(0, 3) = -s.dot(eye);
-    m(1, 3) = -u.dot(eye);
-    m(2, 3) = f.dot(eye);
-    return m;
-}
-
-Mat4f perspective(float fovy, float aspect, float near, float far) {
-    const float t = 1.0f / std::tan(0.5f * fovy);
-    Mat4f m = Mat4f::Zero();
-    m(0, 0) = t / aspect;
-    m(1, 1) = t;
-    m(2, 2) = (far + near) / (near - far);
-    m(2, 3) = 2.0f * far * near / (near - far);
-    m(3, 2) = -1.0f;
-    return m;
-}
-
-// A round value 1, 2 or 5 x 10^k near x.
-double round_value(double x) {
-    if (!(x > 0)) return 0.0;
-    const double p = std::pow(10.0, std::floor(std::log10(x)));
-    const double m = x / p;
-    return (m < 1.5 ? 1.0 : m < 3.5 ? 2.0 : m < 7.5 ? 5.0 : 10.0) * p;
-}
-
-// ---- Shaders ----
-
-const char* kMeshVertex = R"(#version 330 core
-layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 normal;
-layout(location = 2) in vec3 local;
-uniform mat4 model;
-uniform mat3 normal_matrix;
-uniform mat4 view_projection;
-out vec3 f_normal;
-out vec3 f_local;
-out vec3 f_world;
-void main() {
-    vec4 w = model * vec4(position, 1.0);
-    f_world = w.xyz;
-    f_normal = normal_matrix * normal;
-    f_local = local;
-    gl_Position = view_projection * w;
-})";
-
-const char* kMeshFragment = R"(#version 330 core
-uniform vec3 base;
-uniform int pattern;
-uniform vec3 eye;
-uniform vec3 key_light;
-uniform vec3 fill_light;
-in vec3 f_normal;
-in vec3 f_local;
-in vec3 f_world;
-out vec4 colour;
-void main() {
-    vec3 n = normalize(f_normal);
-    vec3 v = normalize(eye - f_world);
-    if (dot(n, v) < 0.0) n = -n;
-    vec3 c = base;
-    // A sphere's wedges (like a beach ball) make its spin visible.
-    if (pattern == 1 && f_local.x * f_local.z > 0.0) c *= 0.80;
-    float key = max(dot(n, key_light), 0.0);
-    float fill = max(dot(n, fill_light), 0.0);
-    float sky = 0.5 + 0.5 * n.y;
-    // Bright and soft, as in a textbook figure: the outlines carry the shape.
-    vec3 lit = c * (0.78 + 0.25 * key + 0.05 * fill);
-    vec3 h = normalize(key_light + v);
-    lit += vec3(0.12) * pow(max(dot(n, h), 0.0), 40.0);
-    colour = vec4(min(lit, vec3(1.0)), 1.0);
-})";
-
-// Lines of constant pixel width: each segment a quad expanded in screen space.
-const char* kLineVertex = R"(#version 330 core
-layout(location = 0) in vec3 a;
-layout(location = 1) in vec3 b;
-layout(location = 2) in vec2 corner;  // x: 0 at a, 1 at b; y: -1 or +1 across
-layout(location = 3) in vec4 colour;
-layout(location = 4) in float width;  // pixels
-uniform mat4 view_projection;
-uniform vec2 viewport;
-uniform float depth_bias;
-out vec4 f_colour;
-out float f_across;  // pixels from the centre line
-out float f_half;    // half the width, pixels
-void main() {
-    vec4 ca = view_projection * vec4(a, 1.0);
-    vec4 cb = view_projection * vec4(b, 1.0);
-    vec2 sa = ca.xy / ca.w * viewport * 0.5;
-    vec2 sb = cb.xy / cb.w * viewport * 0.5;
-    vec2 d = sb - sa;
-    float len = length(d);
-    d = len > 1e-6 ? d / len : vec2(1.0, 0.0);
-    vec2 n = vec2(-d.y, d.x);
-    vec4 c = corner.x < 0.5 ? ca : cb;
-    // Half the width across plus a pixel of fringe (faded in the fragment shader: the edges
-    // are anti-aliased without multisampling), and half the width beyond each end (square caps
-    // close the corners).
-    f_half = 0.5 * width;
-    f_across = corner.y * (f_half + 1.0);
-    vec2 offset = n * f_across + d * (corner.x < 0.5 ? -0.5 : 0.5) * width;
-    c.xy += offset / (viewport * 0.5) * c.w;
-    c.z -= depth_bias * c.w;
-    f_colour = colour;
-    gl_Position = c;
-})";
-
-const char* kLineFragment = R"(#version 330 core
-in vec4 f_colour;
-in float f_across;
-in float f_half;
-out vec4 colour;
-void main() {
-    // Coverage of this pixel by the line: 1 inside, falling to 0 over the last pixel.
-    float cover = clamp(f_half + 0.5 - abs(f_across), 0.0, 1.0);
-    colour = vec4(f_colour.rgb, f_colour.a * cover);
-})";
-
-// The ground: a grid drawn per pixel (anti-aliased with fwidth), fading with distance. The
-// bodies' soft round shadows are small quads of their own, darkening it (a loop over the
-// shadows in this shader made llvmpipe five times slower).
-const char* kGroundVertex = R"(#version 330 core
-layout(location = 0) in vec2 uv;  // plane coordinates, m
-uniform vec3 origin;
-uniform vec3 axis_u;
-uniform vec3 axis_v;
-uniform mat4 view_projection;
-out vec2 f_uv;
-out vec3 f_world;
-void main() {
-    f_uv = uv;
-    f_world = origin + uv.x * axis_u + uv.y * axis_v;
-    gl_Position = view_projection * vec4(f_world, 1.0);
-})";
-
-const char* kGroundFragment = R"(#version 330 core
-uniform vec3 paper;
-uniform vec3 ground;
-uniform vec3 line_colour;
-uniform float spacing;     // m between minor lines
-uniform float fade;        // m: the grid fades out towards this radius
-in vec2 f_uv;
-in vec3 f_world;
-out vec4 colour;
-float grid(vec2 p, float step, float width) {
-    vec2 g = abs(fract(p / step - 0.5) - 0.5) / (fwidth(p / step) * width);
-    return 1.0 - min(min(g.x, g.y), 1.0);
-}
-void main() {
-    float minor = grid(f_uv, spacing, 1.0);
-    float major = grid(f_uv, spacing * 5.0, 1.5);
-    vec3 c = ground;
-    c = mix(c, line_colour, 0.30 * minor);
-    c = mix(c, line_colour, 0.60 * major);
-    float r = length(f_uv) / fade;
-    c = mix(c, paper, smoothstep(0.55, 1.0, r));
-    colour = vec4(c, 1.0);
-})";
-
-const char* kShadowFragment = R"(#version 330 core
-uniform float radius;    // m
-uniform float strength;  // darkening at the centre, 0..1
-in vec2 f_uv;
-in vec3 f_world;
-out vec4 colour;
-void main() {
-    float d = length(f_uv) / radius;
-    colour = vec4(0.0, 0.0, 0.0, strength * (1.0 - smoothstep(0.25, 1.0, d)));
-})";
-
-struct Vertex {
-    float p[3], n[3], l[3];
-};
-
-struct LineVertex {
-    float a[3], b[3], corner[2], colour[4], width;
-};
-
-struct Mesh {
-    GLuint vao = 0, vbo = 0;
-    GLsizei count = 0;
-    Vec3f lo = Vec3f::Zero(), hi = Vec3f::Zero();  // local bounding box
-};
-
-// What above_bounds() gathers: the screen box of everything a pass would draw.
-struct ScreenBox {
-    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
-    bool everywhere = false;  // a point behind the eye: take the whole frame
-    void add(float x, float y, float pad) {
-        x0 = std::min(x0, x - pad);
-        y0 = std::min(y0, y - pad);
-        x1 = std::max(x1, x + pad);
-        y1 = std::max(y1, y + pad);
-    }
-};
-
-// Triangle soup builders, in local coordinates (the "local" attribute is the position).
-void tri(std::vector<Vertex>* out, const Vec3f& a, const Vec3f& b, const Vec3f& c,
-         const Vec3f& na, const Vec3f& nb, const Vec3f& nc) {
-    for (const auto& [p, n] : {std::pair(a, na), std::pair(b, nb), std::pair(c, nc)})
-        out->push_back({{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}, {p.x(), p.y(), p.z()}});
-}
-void flat_tri(std::vector<Vertex>* out, const Vec3f& a, const Vec3f& b, const Vec3f& c) {
-    const Vec3f n = (b - a).cross(c - a).normalized();
-    tri(out, a, b, c, n, n, n);
-}
-
-std::vector<Vertex> box_mesh(const Vec3f& h) {
-    std::vector<Vertex> v;
-    for (int axis = 0; axis < 3; ++axis)
-        for (int sign = -1; sign <= 1; sign += 2) {
-            Vec3f n = Vec3f::Zero();
-            n[axis] = static_cast<float>(sign);
-            const int u = (axis + 1) % 3, w = (axis + 2) % 3;
-            Vec3f c[4];
-            const float su[4] = {-1, 1, 1, -1}, sw[4] = {-1, -1, 1, 1};
-            for (int k = 0; k < 4; ++k) {
-                c[k] = Vec3f::Zero();
-                c[k][axis] = sign * h[axis];
-                c[k][u] = su[k] * h[u];
-                c[k][w] = sw[k] * h[w];
-            }
-            if (sign > 0) {
-                tri(&v, c[0], c[1], c[2], n, n, n);
-                tri(&v, c[0], c[2], c[3], n, n, n);
-            } else {
-                tri(&v, c[0], c[2], c[1], n, n, n);
-                tri(&v, c[0], c[3], c[2], n, n, n);
-            }
-        }
-    return v;
-}
-
-std::vector<Vertex> sphere_mesh(float r, int rings = 24, int sectors = 48) {
-    std::vector<Vertex> v;
-    const auto at = [&](int i, int j) {
-        const float th = static_cast<float>(kPi) * static_cast<float>(i) / static_cast<float>(rings);
-        const float ph = 2.0f * static_cast<float>(kPi) * static_cast<float>(j) / static_cast<float>(sectors);
-        return Vec3f(std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph));
-    };
-    for (int i = 0; i < rings; ++i)
-        for (int j = 0; j < sectors; ++j) {
-            const Vec3f a = at(i, j), b = at(i + 1, j), c = at(i + 1, j + 1), d = at(i, j + 1);
-            tri(&v, a * r, c * r, b * r, a, c, b);
-            tri(&v, a * r, d * r, c * r, a, d, c);
-        }
-    return v;
-}
-
-// A convex outline (counter-clockwise, in the xy plane) extruded from z = -depth/2 to +depth/2.
-// smooth: side normals vary around (a cylinder), else flat faces (a prism).
-std::vector<Vertex> prism_mesh(const std::vector<Vec3f>& outline, float depth, bool smooth) {
-    std::vector<Vertex> v;
-    const float z = 0.5f * depth;
-    const std::size_t n = outline.size();
-    for (std::size_t k = 1; k + 1 < n; ++k) {
-        const Vec3f a = outline[0], b = outline[k], c = outline[k + 1];
-        flat_tri(&v, a + Vec3f(0, 0, z), b + Vec3f(0, 0, z), c + Vec3f(0, 0, z));
-        flat_tri(&v, a - Vec3f(0, 0, z), c - Vec3f(0, 0, z), b - Vec3f(0, 0, z));
-    }
-    for (std::size_t k = 0; k < n; ++k) {
-        const Vec3f a = outline[k], b = outline[(k + 1) % n];
-        Vec3f na, nb;
-        if (smooth) {
-            na = Vec3f(a.x(), a.y(), 0).normalized();
-            nb = Vec3f(b.x(), b.y(), 0).normalized();
-        } else {
-            na = nb = Vec3f(b.y() - a.y(), a.x() - b.x(), 0).normalized();
-        }
-        const Vec3f a0 = a - Vec3f(0, 0, z), a1 = a + Vec3f(0, 0, z);
-        const Vec3f b0 = b - Vec3f(0, 0, z), b1 = b + Vec3f(0, 0, z);
-        tri(&v, a0, b0, b1, na, nb, nb);
-        tri(&v, a0, b1, a1, na, nb, na);
-    }
-    return v;
-}
-
-// Unit arrow parts along +y: a cylinder of radius 1 from y = 0 to 1, a cone of base radius 1.
-std::vector<Vertex> cylinder_y(int segments = 20) {
-    std::vector<Vertex> v;
-    for (int k = 0; k < segments; ++k) {
-        const float a0 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / static_cast<float>(segments);
-        const float a1 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k + 1) / static_cast<float>(segments);
-        const Vec3f n0(std::cos(a0), 0, std::sin(a0)), n1(std::cos(a1), 0, std::sin(a1));
-        tri(&v, n0, n1 + Vec3f(0, 1, 0), n1, n0, n1, n1);
-        tri(&v, n0, n0 + Vec3f(0, 1, 0), n1 + Vec3f(0, 1, 0), n0, n0, n1);
-    }
-    return v;
-}
-std::vector<Vertex> cone_y(int segments = 24) {
-    std::vector<Vertex> v;
-    const Vec3f tip(0, 1, 0);
-    for (int k = 0; k < segments; ++k) {
-        const float a0 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / static_cast<float>(segments);
-        const float a1 = 2.0f * static_cast<float>(kPi) * static_cast<float>(k + 1) / static_cast<float>(segments);
-        const Vec3f p0(std::cos(a0), 0, std::sin(a0)), p1(std::cos(a1), 0, std::sin(a1));
-        const Vec3f n0 = Vec3f(p0.x(), 1.0f, p0.z()).normalized(), n1 = Vec3f(p1.x(), 1.0f, p1.z()).normalized();
-        tri(&v, p0, tip, p1, n0, (n0 + n1).normalized(), n1);
-        flat_tri(&v, p0, p1, Vec3f::Zero());
-    }
-    return v;
-}
-
-// Rotation taking +y to the unit vector d.
-Mat3f rotation_from_y(const Vec3f& d) {
-    const Vec3f y(0, 1, 0);
-    const float c = y.dot(d);
-    if (c > 0.99999f) return Mat3f::Identity();
-    if (c < -0.99999f) return Eigen::AngleAxisf(static_cast<float>(kPi), Vec3f::UnitX()).toRotationMatrix();
-    return Eigen::Quaternionf::FromTwoVectors(y, d).toRotationMatrix();
-}
-
-}  // namespace
-
 struct Scene3dView::Impl {
-    const Gl& gl;
     const Scene& scene;
     Style style;
+    Solids solids;
+    Batch3d batch;
+    std::vector<Box3f> mesh_bounds;  // by mesh id (scene3d_passes.h), in the mesh's frame
+    Camera camera;
+    ArrowScales scales;
+    Ground ground;
+    Vec3 centre = Vec3::Zero();  // m: the framed region's centre
+    double radius = 1.0;         // m: and its radius
 
-    GLuint mesh_program = 0, line_program = 0, ground_program = 0, shadow_program = 0;
-    std::vector<Mesh> body_meshes;            // per body (count 0: none, e.g. a plane)
-    std::vector<int> patterns;                // per body: 1 for spheres
-    std::vector<std::vector<std::pair<Vec3f, Vec3f>>> edges;  // per body, local segments
-    std::vector<int> round_kind;              // 0: none, 1: sphere, 2: cylinder (z axis)
-    std::vector<float> round_radius;
-    std::vector<float> sizes;                 // per body: bounding diameter (m)
-    Mesh cylinder, cone;
-    GLuint line_vao = 0, line_vbo = 0, ground_vao = 0, ground_vbo = 0;
-    std::vector<LineVertex> lines;
+    Impl(const Gl& gl, const Scene& s, const Style& st)
+        : scene(s), style(st), solids(make_solids(s)), batch(gl) {
+        add(arrow_shaft());  // kShaftMesh
+        add(arrow_head());   // kHeadMesh
+        for (const Solid& solid : solids.bodies) add(solid.mesh);  // body_mesh(i)
+    }
+    void add(const Mesh& mesh) {
+        batch.add(mesh);
+        mesh_bounds.push_back(bounds(mesh));
+    }
+    View3d view() const { return {scene, style, solids, scales, camera}; }
 
-    // Planes: (normal, offset) in 3D.
-    std::vector<std::pair<Vec3, double>> planes;
-    std::vector<std::size_t> plane_body;
-    double extrude = 0.0;                     // 1D/2D scenes: depth along z (m)
-
-    // Camera.
-    ImVec4 viewport{0, 0, 1, 1};
-    int frame_w = 1, frame_h = 1;
-    Vec3f eye = Vec3f(0, 0, 5), target = Vec3f::Zero();
-    Mat4f view_projection = Mat4f::Identity();   // clip space of the viewport (project())
-    // The same camera drawn on the whole frame: the ground and grid run to the frame's edges
-    // while the scene stays framed in the viewport (an off-centre projection).
-    Mat4f frame_projection = Mat4f::Identity();
-    Vec3f key_light, fill_light;
-    double radius = 1.0;           // of the framed region (m)
-    Vec3 centre = Vec3::Zero();
-    double unit = 0.1;             // arrow thickness reference (m)
-    double k_velocity = 0, k_impulse = 0, k_spin = 0, max_spin = 0;
-    // The ground (the first upward plane, or a reference floor under the bodies).
-    bool has_ground = false;
-    Vec3 ground_origin = Vec3::Zero(), ground_u = Vec3::UnitX(), ground_v = -Vec3::UnitZ();
-    Vec3 ground_normal = Vec3::UnitY();
-    double ground_extent = 5.0, grid_spacing = 0.5;
-
-    Impl(const Gl& g, const Scene& s, const Style& st) : gl(g), scene(s), style(st) {}
-
-    Mesh upload(const std::vector<Vertex>& v) {
-        Mesh m;
-        m.count = static_cast<GLsizei>(v.size());
-        if (!v.empty()) {
-            m.lo = m.hi = Vec3f(v[0].p[0], v[0].p[1], v[0].p[2]);
-            for (const Vertex& x : v) {
-                const Vec3f p(x.p[0], x.p[1], x.p[2]);
-                m.lo = m.lo.cwiseMin(p);
-                m.hi = m.hi.cwiseMax(p);
-            }
-        }
-        gl.GenVertexArrays(1, &m.vao);
-        gl.GenBuffers(1, &m.vbo);
-        gl.BindVertexArray(m.vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, m.vbo);
-        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(v.size() * sizeof(Vertex)), v.data(),
-                      GL_STATIC_DRAW);
-        for (GLuint a = 0; a < 3; ++a) {
-            gl.EnableVertexAttribArray(a);
-            gl.VertexAttribPointer(a, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                                   reinterpret_cast<const void*>(static_cast<std::size_t>(a) * 3 * sizeof(float)));
-        }
-        gl.BindVertexArray(0);
-        return m;
+    // A legend for arrows of `metres_per_unit`: a round value about 70 px (at 720p) long at the
+    // scene's centre, across the view.
+    DiagramView::Legend legend_for(double metres_per_unit) const {
+        if (!(metres_per_unit > 0)) return {};
+        const Vec3 right = camera.right().cast<double>();
+        const float ppm = std::abs(camera.project(centre + right).x - camera.project(centre).x);
+        const double px_per_unit = metres_per_unit * ppm;
+        const double value = round_value(style.px(70.0f) / px_per_unit);
+        return {value, static_cast<float>(value * px_per_unit)};
     }
 
-    void build() {
-        mesh_program = build_program(gl, kMeshVertex, kMeshFragment, {});
-        line_program = build_program(gl, kLineVertex, kLineFragment, {});
-        ground_program = build_program(gl, kGroundVertex, kGroundFragment, {});
-        shadow_program = build_program(gl, kGroundVertex, kShadowFragment, {});
-        cylinder = upload(cylinder_y());
-        cone = upload(cone_y());
-
-        // Extrusion depth for 1D and 2D bodies: half the median body size.
-        std::vector<double> extents;
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            const SceneBody& b = scene.bodies[i];
-            if (scene.dimension == 1) extents.push_back(b.length);
-            else if (scene.dimension == 2 && b.shape2.kind != Shape2::Kind::half_plane)
-                extents.push_back(2.0 * bounding_radius(b.shape2));
-        }
-        if (!extents.empty()) {
-            std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-            extrude = 0.6 * extents[extents.size() / 2];
-        }
-        const float z = static_cast<float>(0.5 * extrude);
-        for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
-            const SceneBody& b = scene.bodies[i];
-            std::vector<Vertex> mesh;
-            std::vector<std::pair<Vec3f, Vec3f>> e;
-            int round = 0;
-            float rr = 0, size = 0;
-            const auto outline_edges = [&](const std::vector<Vec3f>& o) {
-                for (std::size_t k = 0; k < o.size(); ++k) {
-                    const Vec3f a = o[k], c = o[(k + 1) % o.size()];
-                    e.push_back({a + Vec3f(0, 0, z), c + Vec3f(0, 0, z)});
-                    e.push_back({a - Vec3f(0, 0, z), c - Vec3f(0, 0, z)});
-                    e.push_back({a - Vec3f(0, 0, z), a + Vec3f(0, 0, z)});
-                }
-            };
-            if (scene.dimension == 1) {
-                const float hx = static_cast<float>(0.5 * b.length);
-                const float hy = static_cast<float>(0.5 * block_height(scene, i));
-                const std::vector<Vec3f> o = {{-hx, -hy, 0}, {hx, -hy, 0}, {hx, hy, 0}, {-hx, hy, 0}};
-                mesh = prism_mesh(o, static_cast<float>(extrude), false);
-                outline_edges(o);
-                size = 2.0f * std::hypot(hx, hy);
-            } else if (scene.dimension == 2) {
-                if (b.shape2.kind == Shape2::Kind::half_plane) {
-                    planes.push_back({Vec3(b.shape2.normal.x(), b.shape2.normal.y(), 0.0), b.shape2.offset});
-                    plane_body.push_back(i);
-                } else if (b.shape2.kind == Shape2::Kind::disc) {
-                    rr = static_cast<float>(b.shape2.radius);
-                    std::vector<Vec3f> o;
-                    for (int k = 0; k < 64; ++k) {
-                        const float a = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / 64.0f;
-                        o.push_back(Vec3f(rr * std::cos(a), rr * std::sin(a), 0));
-                    }
-                    mesh = prism_mesh(o, static_cast<float>(extrude), true);
-                    for (std::size_t k = 0; k < o.size(); ++k) {
-                        const Vec3f a = o[k], c = o[(k + 1) % o.size()];
-                        e.push_back({a + Vec3f(0, 0, z), c + Vec3f(0, 0, z)});
-                        e.push_back({a - Vec3f(0, 0, z), c - Vec3f(0, 0, z)});
-                    }
-                    e.push_back({Vec3f(0, 0, z), Vec3f(rr, 0, z)});  // the radius line
-                    round = 2;
-                    size = 2 * rr;
-                } else {
-                    std::vector<Vec3f> o;
-                    for (int k = 0; k < b.shape2.polygon.count; ++k) {
-                        const Vec2& p = b.shape2.polygon.vertices[static_cast<std::size_t>(k)];
-                        o.push_back(Vec3f(static_cast<float>(p.x()), static_cast<float>(p.y()), 0));
-                    }
-                    mesh = prism_mesh(o, static_cast<float>(extrude), false);
-                    outline_edges(o);
-                    size = static_cast<float>(2.0 * bounding_radius(b.shape2));
-                }
-            } else {
-                const Shape3& s = b.shape3;
-                if (s.kind == Shape3::Kind::half_space) {
-                    planes.push_back({s.normal, s.offset});
-                    plane_body.push_back(i);
-                } else if (s.kind == Shape3::Kind::sphere) {
-                    rr = static_cast<float>(s.radius);
-                    mesh = sphere_mesh(rr);
-                    round = 1;
-                    size = 2 * rr;
-                } else {
-                    const Vec3f h = s.half.cast<float>();
-                    mesh = box_mesh(h);
-                    for (int a = 0; a < 3; ++a)
-                        for (int k = 0; k < 4; ++k) {
-                            Vec3f p = -h, q;
-                            const int u = (a + 1) % 3, w = (a + 2) % 3;
-                            if (k & 1) p[u] = h[u];
-                            if (k & 2) p[w] = h[w];
-                            q = p;
-                            q[a] = h[a];
-                            e.push_back({p, q});
-                        }
-                    size = 2.0f * h.norm();
-                }
-            }
-            body_meshes.push_back(mesh.empty() ? Mesh{} : upload(mesh));
-            patterns.push_back(round == 1 ? 1 : 0);
-            edges.push_back(e);
-            round_kind.push_back(round);
-            round_radius.push_back(rr);
-            sizes.push_back(size);
-        }
-
-        gl.GenVertexArrays(1, &line_vao);
-        gl.GenBuffers(1, &line_vbo);
-        gl.BindVertexArray(line_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, line_vbo);
-        const auto attr = [&](GLuint index, int n, std::size_t offset) {
-            gl.EnableVertexAttribArray(index);
-            gl.VertexAttribPointer(index, n, GL_FLOAT, GL_FALSE, sizeof(LineVertex),
-                                   reinterpret_cast<const void*>(offset));
-        };
-        attr(0, 3, offsetof(LineVertex, a));
-        attr(1, 3, offsetof(LineVertex, b));
-        attr(2, 2, offsetof(LineVertex, corner));
-        attr(3, 4, offsetof(LineVertex, colour));
-        attr(4, 1, offsetof(LineVertex, width));
-        gl.GenVertexArrays(1, &ground_vao);
-        gl.GenBuffers(1, &ground_vbo);
-        gl.BindVertexArray(ground_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, ground_vbo);
-        gl.EnableVertexAttribArray(0);
-        gl.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
-        gl.BindVertexArray(0);
-        check_gl(gl, "building the 3D view");
-    }
-
-    ~Impl() {
-        for (Mesh* m : {&cylinder, &cone}) {
-            gl.DeleteBuffers(1, &m->vbo);
-            gl.DeleteVertexArrays(1, &m->vao);
-        }
-        for (Mesh& m : body_meshes) {
-            if (!m.count) continue;
-            gl.DeleteBuffers(1, &m.vbo);
-            gl.DeleteVertexArrays(1, &m.vao);
-        }
-        gl.DeleteBuffers(1, &line_vbo);
-        gl.DeleteVertexArrays(1, &line_vao);
-        gl.DeleteBuffers(1, &ground_vbo);
-        gl.DeleteVertexArrays(1, &ground_vao);
-        gl.DeleteProgram(mesh_program);
-        gl.DeleteProgram(line_program);
-        gl.DeleteProgram(ground_program);
-        gl.DeleteProgram(shadow_program);
-    }
-
-    // Every body's points over the run (corners of its bounds), for framing.
-    void bounds(const BodyState& s, std::size_t i, Vec3* lo, Vec3* hi) const {
-        if (!body_meshes[i].count) return;
-        const double r = 0.5 * sizes[i];
-        *lo = lo->cwiseMin(s.x - Vec3(r, r, r));
-        *hi = hi->cwiseMax(s.x + Vec3(r, r, r));
-    }
-
-    // Where a ray from body i's centre along the unit vector d leaves its surface (m from the
-    // centre): arrows start there, outside the body, so that the body does not hide them.
-    double exit_distance(std::size_t i, const BodyState& s, const Vec3& d) const {
-        const SceneBody& b = scene.bodies[i];
-        if (round_kind[i] == 1) return round_radius[i];
-        Vec3 half;
-        if (scene.dimension == 3 && b.shape3.kind == Shape3::Kind::box) half = b.shape3.half;
-        else if (scene.dimension == 1) half = Vec3(0.5 * b.length, 0.5 * block_height(scene, i), 0.5 * extrude);
-        else return 0.5 * sizes[i];  // cylinders, prisms: their bounding sphere
-        const Vec3 local = s.q.conjugate() * d;
-        double t = std::numeric_limits<double>::infinity();
-        for (int k = 0; k < 3; ++k)
-            if (std::abs(local[k]) > 1e-12) t = std::min(t, half[k] / std::abs(local[k]));
-        return std::isfinite(t) ? t : 0.0;
-    }
-    Vec3 velocity_start(std::size_t i, const BodyState& s) const {
-        const double v = s.v.norm();
-        return v > 0 ? s.x + s.v / v * exit_distance(i, s, s.v / v) : s.x;
-    }
     // The projected outline of body i (screen points, convex), for label placement.
     std::vector<ImVec2> screen_outline(std::size_t i, const BodyState& s) const {
+        const Solid& solid = solids.bodies[i];
         std::vector<ImVec2> pts;
-        if (round_kind[i] == 1) {
-            const ImVec2 c = project(s.x);
-            const Vec3f fwd = (target - eye).normalized();
-            const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-            const ImVec2 e = project(s.x + right * round_radius[i]);
+        if (solid.kind == Solid::Kind::sphere) {
+            const ImVec2 c = camera.project(s.x);
+            const Vec3 right = camera.right().cast<double>();
+            const ImVec2 e = camera.project(s.x + right * solid.radius);
             const float r = std::hypot(e.x - c.x, e.y - c.y);
             for (int k = 0; k < 16; ++k) {
                 const float a = 2.0f * static_cast<float>(kPi) * static_cast<float>(k) / 16.0f;
@@ -607,198 +66,42 @@ struct Scene3dView::Impl {
             return pts;
         }
         std::vector<Vec2> screen;
-        for (const auto& [a, b] : edges[i])
+        for (const auto& [a, b] : solid.edges)
             for (const Vec3f& p : {a, b}) {
-                const ImVec2 q = project(s.x + s.q * p.cast<double>());
+                const ImVec2 q = camera.project(s.x + s.q * p.cast<double>());
                 screen.push_back(Vec2(q.x, q.y));
             }
-        // Convex hull (monotone chain).
-        std::sort(screen.begin(), screen.end(), [](const Vec2& a, const Vec2& b) {
-            return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-        });
         if (screen.size() < 3) return pts;
-        std::vector<Vec2> h(2 * screen.size());
-        std::size_t k = 0;
-        const auto turn = [](const Vec2& o, const Vec2& a, const Vec2& b) {
-            return (a - o).x() * (b - o).y() - (a - o).y() * (b - o).x();
-        };
-        for (std::size_t j = 0; j < screen.size(); ++j) {
-            while (k >= 2 && turn(h[k - 2], h[k - 1], screen[j]) <= 0) --k;
-            h[k++] = screen[j];
-        }
-        for (std::size_t j = screen.size() - 1, t = k + 1; j > 0; --j) {
-            while (k >= t && turn(h[k - 2], h[k - 1], screen[j - 1]) <= 0) --k;
-            h[k++] = screen[j - 1];
-        }
-        for (std::size_t j = 0; j + 1 < k; ++j)
-            pts.push_back(ImVec2(static_cast<float>(h[j].x()), static_cast<float>(h[j].y())));
+        for (const Vec2& p : convex_hull(screen))
+            pts.push_back(ImVec2(static_cast<float>(p.x()), static_cast<float>(p.y())));
         return pts;
-    }
-
-    ImVec2 project(const Vec3& p) const {
-        const Eigen::Vector4f c = view_projection * Eigen::Vector4f(static_cast<float>(p.x()),
-                                                                     static_cast<float>(p.y()),
-                                                                     static_cast<float>(p.z()), 1.0f);
-        const float w = std::abs(c.w()) > 1e-9f ? c.w() : 1e-9f;
-        const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-        return ImVec2(viewport.x + (c.x() / w * 0.5f + 0.5f) * vw,
-                      viewport.y + (0.5f - c.y() / w * 0.5f) * vh);
-    }
-
-    void set_camera(const Vec3f& dir, float distance, const Vec3f& look) {
-        const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-        target = look;
-        eye = look + dir * distance;
-        const float near = std::max(0.01f * distance, distance - 4.0f * static_cast<float>(radius));
-        const float far = distance + 8.0f * static_cast<float>(radius);
-        view_projection = perspective(static_cast<float>(kFovY), vw / vh, near, far) *
-                          look_at(eye, target, Vec3f(0, 1, 0));
-        // Viewport clip coordinates -> frame clip coordinates (x right, y up).
-        const float W = static_cast<float>(frame_w), H = static_cast<float>(frame_h);
-        Mat4f to_frame = Mat4f::Identity();
-        to_frame(0, 0) = vw / W;
-        to_frame(0, 3) = (2.0f * viewport.x + vw) / W - 1.0f;
-        to_frame(1, 1) = vh / H;
-        to_frame(1, 3) = 1.0f - (2.0f * viewport.y + vh) / H;
-        frame_projection = to_frame * view_projection;
-    }
-    static constexpr double kFovY = 30.0 * kPi / 180.0;
-
-    // Collecting (above_bounds): the screen box of what would be drawn, instead of drawing.
-    ScreenBox* collect = nullptr;
-    void collect_point(const Vec3f& p, float pad) const {
-        const Eigen::Vector4f c = view_projection * Eigen::Vector4f(p.x(), p.y(), p.z(), 1.0f);
-        if (!(c.w() > 1e-6f)) {
-            collect->everywhere = true;
-            return;
-        }
-        const ImVec2 q = project(p.cast<double>());
-        collect->add(q.x, q.y, pad);
-    }
-
-    // Thick lines (pixels) through the line program.
-    void line(const Vec3& a, const Vec3& b, Colour colour, float width) {
-        if (collect) {
-            collect_point(f3(a), 0.5f * width + 2.0f);
-            collect_point(f3(b), 0.5f * width + 2.0f);
-            return;
-        }
-        const float col[4] = {static_cast<float>(colour & 0xFF) / 255.0f,
-                              static_cast<float>((colour >> 8) & 0xFF) / 255.0f,
-                              static_cast<float>((colour >> 16) & 0xFF) / 255.0f,
-                              static_cast<float>((colour >> 24) & 0xFF) / 255.0f};
-        const float corners[6][2] = {{0, -1}, {1, -1}, {1, 1}, {0, -1}, {1, 1}, {0, 1}};
-        for (const auto& c : corners) {
-            LineVertex v;
-            for (int k = 0; k < 3; ++k) {
-                v.a[k] = static_cast<float>(a[k]);
-                v.b[k] = static_cast<float>(b[k]);
-            }
-            v.corner[0] = c[0];
-            v.corner[1] = c[1];
-            std::copy(col, col + 4, v.colour);
-            v.width = width;
-            lines.push_back(v);
-        }
-    }
-
-    void flush_lines(bool depth_test, float bias) {
-        if (lines.empty()) return;
-        gl.UseProgram(line_program);
-        gl.UniformMatrix4fv(gl.GetUniformLocation(line_program, "view_projection"), 1, GL_FALSE,
-                            frame_projection.data());
-        gl.Uniform2f(gl.GetUniformLocation(line_program, "viewport"), static_cast<float>(frame_w),
-                     static_cast<float>(frame_h));
-        gl.Uniform1f(gl.GetUniformLocation(line_program, "depth_bias"), bias);
-        if (depth_test) gl.Enable(GL_DEPTH_TEST);
-        else gl.Disable(GL_DEPTH_TEST);
-        gl.Enable(GL_BLEND);
-        gl.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        // Lines do not write depth: their faded fringes would punch holes in what is drawn later.
-        gl.DepthMask(GL_FALSE);
-        gl.BindVertexArray(line_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, line_vbo);
-        gl.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(lines.size() * sizeof(LineVertex)),
-                      lines.data(), GL_STREAM_DRAW);
-        gl.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(lines.size()));
-        gl.BindVertexArray(0);
-        gl.Disable(GL_BLEND);
-        gl.DepthMask(GL_TRUE);
-        lines.clear();
-    }
-
-    void use_mesh_program() {
-        gl.UseProgram(mesh_program);
-        gl.UniformMatrix4fv(gl.GetUniformLocation(mesh_program, "view_projection"), 1, GL_FALSE,
-                            frame_projection.data());
-        gl.Uniform3f(gl.GetUniformLocation(mesh_program, "eye"), eye.x(), eye.y(), eye.z());
-        gl.Uniform3f(gl.GetUniformLocation(mesh_program, "key_light"), key_light.x(), key_light.y(), key_light.z());
-        gl.Uniform3f(gl.GetUniformLocation(mesh_program, "fill_light"), fill_light.x(), fill_light.y(), fill_light.z());
-    }
-
-    void draw_mesh(const Mesh& m, const Mat4f& model, const Mat3f& normal_matrix, Colour colour,
-                   int pattern) {
-        if (collect) {
-            for (int k = 0; k < 8; ++k) {
-                const Vec3f local((k & 1) ? m.hi.x() : m.lo.x(), (k & 2) ? m.hi.y() : m.lo.y(),
-                                  (k & 4) ? m.hi.z() : m.lo.z());
-                collect_point((model * local.homogeneous()).head<3>(), 2.0f);
-            }
-            return;
-        }
-        gl.UniformMatrix4fv(gl.GetUniformLocation(mesh_program, "model"), 1, GL_FALSE, model.data());
-        gl.UniformMatrix3fv(gl.GetUniformLocation(mesh_program, "normal_matrix"), 1, GL_FALSE,
-                            normal_matrix.data());
-        const Vec3f c = colour3(colour);
-        gl.Uniform3f(gl.GetUniformLocation(mesh_program, "base"), c.x(), c.y(), c.z());
-        gl.Uniform1i(gl.GetUniformLocation(mesh_program, "pattern"), pattern);
-        gl.BindVertexArray(m.vao);
-        gl.DrawArrays(GL_TRIANGLES, 0, m.count);
-    }
-
-    // A shaded arrow from p along d (world vector); length |d|.
-    void arrow(const Vec3& p, const Vec3& d, Colour colour, double thickness) {
-        const double len = d.norm();
-        if (len < 1e-9) return;
-        double head = 4.5 * thickness, head_r = 2.2 * thickness;
-        if (len < 1.5 * head) {
-            head_r *= len / (1.5 * head);
-            head = len / 1.5;
-        }
-        const Mat3f R = rotation_from_y(f3(d / len));
-        const auto model = [&](const Vec3& at, float rx, float ly) {
-            Mat4f m = Mat4f::Identity();
-            m.block<3, 3>(0, 0) = R * Eigen::DiagonalMatrix<float, 3>(rx, ly, rx);
-            m.block<3, 1>(0, 3) = f3(at);
-            return m;
-        };
-        const double shaft = len - head;
-        if (shaft > 0)
-            draw_mesh(cylinder, model(p, static_cast<float>(thickness), static_cast<float>(shaft)), R, colour, 0);
-        draw_mesh(cone, model(p + d / len * shaft, static_cast<float>(head_r), static_cast<float>(head)), R, colour, 0);
     }
 };
 
 Scene3dView::Scene3dView(const Gl& gl, const Scene& scene, const Style& style)
-    : impl_(std::make_unique<Impl>(gl, scene, style)) {
-    impl_->build();
-}
+    : impl_(std::make_unique<Impl>(gl, scene, style)) {}
 
 Scene3dView::~Scene3dView() = default;
 
 void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
                       ImVec4 viewport, int frame_width, int frame_height) {
     Impl& I = *impl_;
-    I.viewport = viewport;
-    I.frame_w = frame_width;
-    I.frame_h = frame_height;
+    const std::vector<Solid>& solids = I.solids.bodies;
+    I.camera.set_viewport(viewport, frame_width, frame_height);
+
+    // 1. The box the bodies cover over the run (their bounding spheres), and how fast they move
+    // and spin.
     const double inf = std::numeric_limits<double>::infinity();
     Vec3 lo(inf, inf, inf), hi(-inf, -inf, -inf);
     double max_speed = 0, max_impulse = 0;
     max_spin_ = 0;
     for (const FrameState& f : samples)
         for (std::size_t i = 0; i < f.bodies.size() && i < I.scene.bodies.size(); ++i) {
-            I.bounds(f.bodies[i], i, &lo, &hi);
+            if (solids[i].drawn()) {
+                const double r = 0.5 * solids[i].size;
+                lo = lo.cwiseMin(f.bodies[i].x - Vec3(r, r, r));
+                hi = hi.cwiseMax(f.bodies[i].x + Vec3(r, r, r));
+            }
             if (I.scene.bodies[i].is_static()) continue;
             max_speed = std::max(max_speed, f.bodies[i].v.norm());
             max_spin_ = std::max(max_spin_, f.bodies[i].w.norm());
@@ -808,156 +111,64 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
         lo = Vec3(-1, -1, -1);
         hi = Vec3(1, 1, 1);
     }
-    I.max_spin = max_spin_;
+
+    // 2. The scales: the unit about the median moving body's size, the fastest velocity arrow
+    // about a body long (between 12% and 35% of the box), impulses a little shorter and none
+    // longer than half the smaller body it acts on.
+    ArrowScales& k = I.scales;
+    k.max_spin = max_spin_;
     std::vector<float> moving;
-    for (std::size_t i = 0; i < I.sizes.size(); ++i)
-        if (!I.scene.bodies[i].is_static() && I.sizes[i] > 0) moving.push_back(I.sizes[i]);
+    for (std::size_t i = 0; i < solids.size(); ++i)
+        if (!I.scene.bodies[i].is_static() && solids[i].size > 0) moving.push_back(solids[i].size);
     std::sort(moving.begin(), moving.end());
     const double body = moving.empty() ? 0.3 * (hi - lo).norm() : moving[moving.size() / 2];
     const double span = std::max(1e-6, (hi - lo).norm());
-    I.unit = std::clamp(body, 0.05 * span, 0.4 * span);
+    k.unit = std::clamp(body, 0.05 * span, 0.4 * span);
     const double arrow_len = std::clamp(body * 1.1, 0.12 * span, 0.35 * span);
-    I.k_velocity = max_speed > 0 ? arrow_len / max_speed : 0;
-    I.k_impulse = max_impulse > 0 ? 0.9 * arrow_len / max_impulse : 0;
-    for (const ImpactMark& im : impacts)  // none longer than half the smaller body
+    k.k_velocity = max_speed > 0 ? arrow_len / max_speed : 0;
+    k.k_impulse = max_impulse > 0 ? 0.9 * arrow_len / max_impulse : 0;
+    for (const ImpactMark& im : impacts)
         for (std::size_t i : {im.a, im.b})
-            if (i < I.sizes.size() && I.sizes[i] > 0 && im.impulse.norm() > 0)
-                I.k_impulse = std::min(I.k_impulse, 0.5 * I.sizes[i] / im.impulse.norm());
-    I.k_spin = max_spin_ > 0 ? 0.8 * arrow_len / max_spin_ : 0;
-    // Room for the velocity arrows.
+            if (i < solids.size() && solids[i].size > 0 && im.impulse.norm() > 0)
+                k.k_impulse = std::min(k.k_impulse, 0.5 * solids[i].size / im.impulse.norm());
+    k.k_spin = max_spin_ > 0 ? 0.8 * arrow_len / max_spin_ : 0;
+
+    // 3. Room for the velocity arrows (their tips, from the bounding sphere).
     for (const FrameState& f : samples)
         for (std::size_t i = 0; i < f.bodies.size() && i < I.scene.bodies.size(); ++i) {
-            if (I.scene.bodies[i].is_static() || !I.body_meshes[i].count) continue;
-            const Vec3 tip = f.bodies[i].x + I.k_velocity * f.bodies[i].v +
-                             (f.bodies[i].v.norm() > 0 ? Vec3(0.5 * I.sizes[i] * f.bodies[i].v.normalized()) : Vec3(Vec3::Zero()));
+            if (I.scene.bodies[i].is_static() || !solids[i].drawn()) continue;
+            const Vec3 tip = f.bodies[i].x + k.k_velocity * f.bodies[i].v +
+                             (f.bodies[i].v.norm() > 0 ? Vec3(0.5 * solids[i].size * f.bodies[i].v.normalized()) : Vec3(Vec3::Zero()));
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
         }
     I.centre = 0.5 * (lo + hi);
-    I.radius = std::max(1e-3, 0.5 * (hi - lo).norm());
 
-    // The ground: the first plane facing up, else a floor under the lowest point.
-    I.has_ground = false;
-    for (const auto& [n, offset] : I.planes) {
-        if (n.y() < 0.7) continue;
-        const double nn = n.norm();
-        I.ground_normal = n / nn;
-        const double o = offset / nn;
-        I.ground_origin = I.centre - (I.ground_normal.dot(I.centre) - o) * I.ground_normal;
-        I.has_ground = true;
-        break;
-    }
-    if (!I.has_ground) {
-        I.ground_normal = Vec3::UnitY();
-        I.ground_origin = Vec3(I.centre.x(), lo.y(), I.centre.z());
-    }
-    // Plane coordinates: u along x where possible, v = n x u.
-    I.ground_u = Vec3::UnitX() - Vec3::UnitX().dot(I.ground_normal) * I.ground_normal;
-    if (I.ground_u.norm() < 0.3) I.ground_u = Vec3::UnitZ() - Vec3::UnitZ().dot(I.ground_normal) * I.ground_normal;
-    I.ground_u.normalize();
-    I.ground_v = I.ground_normal.cross(I.ground_u);
-    // Include the ground's foot in the framing.
-    lo = lo.cwiseMin(I.ground_origin);
-    hi = hi.cwiseMax(I.ground_origin);
+    // 4. The ground under it all, its foot included in the framing; the grid a round step.
+    I.ground = ground_under(I.solids.planes, I.centre, lo.y());
+    lo = lo.cwiseMin(I.ground.origin);
+    hi = hi.cwiseMax(I.ground.origin);
     I.centre = 0.5 * (lo + hi);
     I.radius = std::max(1e-3, 0.5 * (hi - lo).norm());
-    I.ground_extent = 2.2 * I.radius;
-    I.grid_spacing = round_value(I.radius / 5.0);
+    I.ground.extent = 2.2 * I.radius;
+    I.ground.spacing = round_value(I.radius / 5.0);
 
-    // The camera: from the front (+z), turned 30 degrees to the right and raised 22; 2D and 1D
-    // scenes a little more from the front. Then the distance and the aim are adjusted so that
-    // the bounds' projection fills 86% of the viewport.
-    const double az = camera_.azimuth.value_or(default_azimuth(I.scene.dimension)) * kPi / 180.0;
-    const double el = camera_.elevation.value_or(default_elevation(I.scene.dimension)) * kPi / 180.0;
-    const Vec3f dir(static_cast<float>(std::sin(az) * std::cos(el)), static_cast<float>(std::sin(el)),
-                    static_cast<float>(std::cos(az) * std::cos(el)));
-    float distance = static_cast<float>(I.radius / std::sin(0.5 * Impl::kFovY));
-    Vec3f look = f3(I.centre);
-    if (camera_.target) look = f3(*camera_.target);
-    if (camera_.distance) distance = static_cast<float>(*camera_.distance);
-    const float vw = viewport.z - viewport.x, vh = viewport.w - viewport.y;
-    // What the scenario fixes stays fixed: a set target is not re-aimed, a set distance not
-    // changed.
-    for (int iteration = 0; iteration < 4 && !(camera_.target && camera_.distance); ++iteration) {
-        I.set_camera(dir, distance, look);
-        float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
-        for (int k = 0; k < 8; ++k) {
-            const Vec3 p((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(), (k & 4) ? hi.z() : lo.z());
-            const ImVec2 s = I.project(p);
-            x0 = std::min(x0, s.x);
-            x1 = std::max(x1, s.x);
-            y0 = std::min(y0, s.y);
-            y1 = std::max(y1, s.y);
-        }
-        const float fill = std::max((x1 - x0) / vw, (y1 - y0) / vh) / 0.8f;
-        // Re-aim at the projected box's centre (a shift in the view plane).
-        const float dx = (0.5f * (x0 + x1) - (viewport.x + 0.5f * vw)) / vw;
-        const float dy = (0.5f * (y0 + y1) - (viewport.y + 0.5f * vh)) / vh;
-        const Vec3f fwd = -dir;
-        const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
-        const Vec3f up = right.cross(fwd);
-        const float half_h = distance * std::tan(0.5f * static_cast<float>(Impl::kFovY));
-        const float half_w = half_h * vw / vh;
-        if (!camera_.target) look += right * (2.0f * dx * half_w) - up * (2.0f * dy * half_h);
-        if (!camera_.distance) distance *= std::clamp(fill, 0.3f, 3.0f);
-    }
-    I.set_camera(dir, distance / static_cast<float>(camera_.zoom), look);
-    // Lights in the viewer's frame: the key from the upper left, the fill from the right.
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
-    const Vec3f up = right.cross(fwd);
-    I.key_light = (-0.45f * right + 0.75f * up - 0.5f * fwd).normalized();
-    I.fill_light = (0.8f * right + 0.1f * up - 0.4f * fwd).normalized();
+    // 5. The camera on the box.
+    I.camera.frame(lo, hi, I.centre, I.radius, camera_, I.scene.dimension);
+    I.batch.set_camera(I.camera);
 }
 
-double default_azimuth(int dimension) { return dimension < 3 ? 20.0 : 32.0; }
-double default_elevation(int dimension) { return dimension < 3 ? 16.0 : 24.0; }
-
-ImVec2 Scene3dView::to_screen(const Vec3& world) const { return impl_->project(world); }
+ImVec2 Scene3dView::to_screen(const Vec3& world) const { return impl_->camera.project(world); }
 
 double Scene3dView::pixels_per_metre() const {
     const Impl& I = *impl_;
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-    const ImVec2 a = I.project(I.centre), b = I.project(I.centre + right);
+    const Vec3 right = I.camera.right().cast<double>();
+    const ImVec2 a = I.camera.project(I.centre), b = I.camera.project(I.centre + right);
     return std::hypot(b.x - a.x, b.y - a.y);
 }
 
-DiagramView::Legend Scene3dView::velocity_legend() const {
-    const Impl& I = *impl_;
-    if (!(I.k_velocity > 0)) return {};
-    // Pixels per metre at the scene's centre, across the view.
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-    const float ppm = std::abs(I.project(I.centre + right).x - I.project(I.centre).x);
-    const double px_per_unit = I.k_velocity * ppm;
-    const double value = round_value(I.style.px(70.0f) / px_per_unit);
-    return {value, static_cast<float>(value * px_per_unit)};
-}
-
-DiagramView::Legend Scene3dView::impulse_legend() const {
-    const Impl& I = *impl_;
-    if (!(I.k_impulse > 0)) return {};
-    const Vec3f fwd = (I.target - I.eye).normalized();
-    const Vec3 right = fwd.cross(Vec3f(0, 1, 0)).normalized().cast<double>();
-    const float ppm = std::abs(I.project(I.centre + right).x - I.project(I.centre).x);
-    const double px_per_unit = I.k_impulse * ppm;
-    const double value = round_value(I.style.px(70.0f) / px_per_unit);
-    return {value, static_cast<float>(value * px_per_unit)};
-}
-
-namespace {
-
-void begin_pass(const Gl& gl, int width, int height) {
-    gl.Viewport(0, 0, width, height);
-    gl.Enable(GL_DEPTH_TEST);
-    gl.DepthFunc(GL_LEQUAL);
-    gl.DepthMask(GL_TRUE);
-    gl.Disable(GL_BLEND);
-    gl.Disable(GL_CULL_FACE);
-}
-
-}  // namespace
+DiagramView::Legend Scene3dView::velocity_legend() const { return impl_->legend_for(impl_->scales.k_velocity); }
+DiagramView::Legend Scene3dView::impulse_legend() const { return impl_->legend_for(impl_->scales.k_impulse); }
 
 void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
     draw_ground(frame);
@@ -965,301 +176,67 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
 }
 
 bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect) {
-    ScreenBox box;
-    impl_->collect = &box;
-    draw_above(frame, decor);
-    impl_->collect = nullptr;
-    if (box.everywhere) {
-        *rect = ImVec4(0, 0, static_cast<float>(impl_->frame_w), static_cast<float>(impl_->frame_h));
-        return true;
-    }
-    if (!(box.x0 <= box.x1)) return false;
-    *rect = ImVec4(box.x0, box.y0, box.x1, box.y1);
-    return true;
+    const Impl& I = *impl_;
+    return overlay_bounds(overlay(I.view(), frame, decor), I.camera, I.mesh_bounds, rect);
 }
 
 void Scene3dView::draw_ground(const FrameState& frame) {
     Impl& I = *impl_;
-    const Gl& gl = I.gl;
-    const Palette& pal = I.style.colours;
-    begin_pass(gl, I.frame_w, I.frame_h);
-    const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
-
-    // The ground, its grid and the bodies' shadows.
-    {
-        const float e = static_cast<float>(I.ground_extent);
-        const float quad[12] = {-e, -e, e, -e, e, e, -e, -e, e, e, -e, e};
-        gl.UseProgram(I.ground_program);
-        const auto u3 = [&](const char* name, const Vec3f& v) {
-            gl.Uniform3f(gl.GetUniformLocation(I.ground_program, name), v.x(), v.y(), v.z());
-        };
-        const Vec3 o = I.ground_origin;
-        u3("origin", f3(o));
-        u3("axis_u", f3(I.ground_u));
-        u3("axis_v", f3(I.ground_v));
-        u3("paper", colour3(pal.background));
-        u3("ground", colour3(rgb(238, 238, 233)));
-        u3("line_colour", colour3(rgb(168, 170, 174)));
-        gl.UniformMatrix4fv(gl.GetUniformLocation(I.ground_program, "view_projection"), 1, GL_FALSE,
-                            I.frame_projection.data());
-        gl.Uniform1f(gl.GetUniformLocation(I.ground_program, "spacing"), static_cast<float>(I.grid_spacing));
-        gl.Uniform1f(gl.GetUniformLocation(I.ground_program, "fade"), e);
-        gl.BindVertexArray(I.ground_vao);
-        gl.BindBuffer(GL_ARRAY_BUFFER, I.ground_vbo);
-        gl.BufferData(GL_ARRAY_BUFFER, sizeof quad, quad, GL_STREAM_DRAW);
-        gl.Enable(GL_POLYGON_OFFSET_FILL);
-        gl.PolygonOffset(2.0f, 2.0f);
-        gl.DrawArrays(GL_TRIANGLES, 0, 6);
-
-        // Shadows: one soft disc under each body, darker and smaller the nearer it is.
-        gl.UseProgram(I.shadow_program);
-        gl.UniformMatrix4fv(gl.GetUniformLocation(I.shadow_program, "view_projection"), 1, GL_FALSE,
-                            I.frame_projection.data());
-        gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "axis_u"), static_cast<float>(I.ground_u.x()),
-                     static_cast<float>(I.ground_u.y()), static_cast<float>(I.ground_u.z()));
-        gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "axis_v"), static_cast<float>(I.ground_v.x()),
-                     static_cast<float>(I.ground_v.y()), static_cast<float>(I.ground_v.z()));
-        gl.Enable(GL_BLEND);
-        gl.BlendFuncSeparate(GL_ZERO, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);  // dst *= 1 - a
-        gl.DepthMask(GL_FALSE);
-        gl.PolygonOffset(1.0f, 1.0f);
-        for (std::size_t i = 0; i < n; ++i) {
-            if (!I.body_meshes[i].count) continue;
-            const Vec3 d = frame.bodies[i].x - o;
-            const double height = d.dot(I.ground_normal);
-            const double r = 0.5 * I.sizes[i];
-            if (height < -0.5 * r) continue;
-            const double radius = r * (1.0 + 0.25 * std::max(0.0, height) / std::max(r, 1e-9));
-            const double strength = 0.30 * std::exp(-std::max(0.0, height - r) / (3 * r));
-            const Vec3 foot = frame.bodies[i].x - height * I.ground_normal;
-            const float q = static_cast<float>(radius);
-            const float sq[12] = {-q, -q, q, -q, q, q, -q, -q, q, q, -q, q};
-            gl.Uniform3f(gl.GetUniformLocation(I.shadow_program, "origin"), static_cast<float>(foot.x()),
-                         static_cast<float>(foot.y()), static_cast<float>(foot.z()));
-            gl.Uniform1f(gl.GetUniformLocation(I.shadow_program, "radius"), q);
-            gl.Uniform1f(gl.GetUniformLocation(I.shadow_program, "strength"), static_cast<float>(strength));
-            gl.BufferData(GL_ARRAY_BUFFER, sizeof sq, sq, GL_STREAM_DRAW);
-            gl.DrawArrays(GL_TRIANGLES, 0, 6);
-        }
-        gl.DepthMask(GL_TRUE);
-        gl.Disable(GL_BLEND);
-    }
-    gl.Disable(GL_POLYGON_OFFSET_FILL);
-    gl.BindVertexArray(0);
-    check_gl(gl, "drawing the 3D view's ground");
+    I.batch.begin();
+    I.batch.ground(ground_draw(I.ground, I.style), shadows(I.view(), I.ground, frame));
+    I.batch.end("drawing the 3D view's ground");
 }
 
 void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
     Impl& I = *impl_;
-    const Gl& gl = I.gl;
-    const Palette& pal = I.style.colours;
-    begin_pass(gl, I.frame_w, I.frame_h);
-    const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
-    const float outline = I.style.lw(I.style.outline);
-
-    // Bodies (pushed back a little in depth so that their outlines win).
-    gl.Enable(GL_POLYGON_OFFSET_FILL);
-    gl.PolygonOffset(1.0f, 1.0f);
-    I.use_mesh_program();
-    int order = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-        const bool is_static = I.scene.bodies[i].is_static();
-        const int colour_index = order;
-        if (!is_static) ++order;
-        if (!I.body_meshes[i].count) continue;
-        const BodyState& s = frame.bodies[i];
-        const Mat3f R = s.q.cast<float>().toRotationMatrix();
-        Mat4f model = Mat4f::Identity();
-        model.block<3, 3>(0, 0) = R;
-        model.block<3, 1>(0, 3) = f3(s.x);
-        I.draw_mesh(I.body_meshes[i], model, R,
-                    is_static ? pal.static_fill : pal.fills[colour_index % Palette::kFills],
-                    I.patterns[i]);
-    }
-    gl.Disable(GL_POLYGON_OFFSET_FILL);
-
-    // Arrows: velocities, spins (on the axis), impulses.
-    const double thick = 0.03 * I.unit;
-    if (decor.velocities) {
-        for (std::size_t i = 0; i < n; ++i) {
-            if (I.scene.bodies[i].is_static() || !I.body_meshes[i].count) continue;
-            const BodyState& s = frame.bodies[i];
-            I.arrow(I.velocity_start(i, s), I.k_velocity * s.v, pal.velocity, thick);
-            if (I.k_spin > 0 && s.w.norm() > 1e-9 * I.max_spin && s.w.norm() > 1e-12) {
-                // From the surface along the axis.
-                const Vec3 axis = s.w.normalized();
-                const Vec3 start = s.x + axis * (0.5 * I.sizes[i] * 0.9);
-                I.arrow(start, I.k_spin * s.w, pal.spin, thick * 0.8);
-            }
-        }
-    }
-
-    // Outlines: box edges, prism edges, the silhouettes of spheres and cylinders.
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!I.body_meshes[i].count) continue;
-        const BodyState& s = frame.bodies[i];
-        for (const auto& [a, b] : I.edges[i])
-            I.line(s.x + s.q * a.cast<double>(), s.x + s.q * b.cast<double>(), pal.ink, outline);
-        const Vec3 to_eye = I.eye.cast<double>() - s.x;
-        const double d = to_eye.norm();
-        const double r = I.round_radius[i];
-        if (I.round_kind[i] == 1 && d > r) {
-            // The silhouette circle of a sphere seen from the eye.
-            const Vec3 u = to_eye / d;
-            const Vec3 c = s.x + u * (r * r / d);
-            const double rs = r * std::sqrt(1.0 - r * r / (d * d));
-            Vec3 e1 = u.cross(Vec3::UnitY());
-            if (e1.norm() < 1e-6) e1 = u.cross(Vec3::UnitX());
-            e1.normalize();
-            const Vec3 e2 = u.cross(e1);
-            const int segs = 96;
-            for (int k = 0; k < segs; ++k) {
-                const double a0 = 2 * kPi * k / segs, a1 = 2 * kPi * (k + 1) / segs;
-                I.line(c + rs * (std::cos(a0) * e1 + std::sin(a0) * e2),
-                       c + rs * (std::cos(a1) * e1 + std::sin(a1) * e2), pal.ink, outline);
-            }
-            // The equator, so that spin shows in the outline too.
-            for (int k = 0; k < segs; ++k) {
-                const double a0 = 2 * kPi * k / segs, a1 = 2 * kPi * (k + 1) / segs;
-                const Vec3 p0 = s.x + s.q * Vec3(r * std::cos(a0), 0, r * std::sin(a0));
-                const Vec3 p1 = s.x + s.q * Vec3(r * std::cos(a1), 0, r * std::sin(a1));
-                I.line(p0, p1, with_alpha(pal.ink, 0.45f), outline * 0.6f);
-            }
-        } else if (I.round_kind[i] == 2) {
-            // A cylinder (z axis): its two side silhouette lines.
-            const Vec3 axis = s.q * Vec3::UnitZ();
-            Vec3 side = axis.cross(to_eye);
-            if (side.norm() > 1e-9) {
-                side.normalize();
-                const double h = 0.5 * I.extrude;
-                for (double sg : {-1.0, 1.0})
-                    I.line(s.x + sg * r * side - h * axis, s.x + sg * r * side + h * axis, pal.ink, outline);
-            }
-        }
-    }
-    // Trails.
-    if (decor.trails)
-        for (std::size_t i = 0; i < n && i < frame.trails.size(); ++i) {
-            const auto& trail = frame.trails[i];
-            if (I.scene.bodies[i].is_static() || trail.size() < 2) continue;
-            int colour_index = 0;
-            for (std::size_t j = 0; j < i; ++j) colour_index += I.scene.bodies[j].is_static() ? 0 : 1;
-            const double span = std::max(1e-9, trail.back().t - trail.front().t);
-            for (std::size_t k = 1; k < trail.size(); ++k) {
-                const double age = (frame.t - trail[k].t) / span;
-                I.line(trail[k - 1].x, trail[k].x,
-                       with_alpha(pal.darks[colour_index % Palette::kFills],
-                                  static_cast<float>(0.55 * std::clamp(1.0 - age, 0.0, 1.0))),
-                       I.style.lw(2.0f));
-            }
-        }
-    // Spin curls: three quarters of a circle (radius rc, in the plane e1, e2 about `centre`)
-    // around the spin arrow near its tip; false for bodies that show none.
-    struct Curl {
-        Vec3 centre, e1, e2;
-        double rc;
-    };
-    const auto curl_of = [&](std::size_t i, Curl* c) {
-        const BodyState& s = frame.bodies[i];
-        if (I.scene.bodies[i].is_static() || !(I.k_spin > 0) || s.w.norm() < 1e-9 * I.max_spin ||
-            s.w.norm() < 1e-12)
-            return false;
-        const Vec3 axis = s.w.normalized();
-        c->centre = s.x + axis * (0.5 * I.sizes[i] * 0.9 + 0.6 * I.k_spin * s.w.norm());
-        c->e1 = axis.cross(Vec3::UnitY());
-        if (c->e1.norm() < 1e-6) c->e1 = axis.cross(Vec3::UnitX());
-        c->e1.normalize();
-        c->e2 = axis.cross(c->e1);
-        c->rc = 0.22 * I.unit;
-        return true;
-    };
-    if (decor.velocities)
-        for (std::size_t i = 0; i < n; ++i) {
-            Curl curl;
-            if (!curl_of(i, &curl)) continue;
-            const auto& [centre, e1, e2, rc] = curl;
-            const int segs = 40;
-            for (int k = 0; k < segs; ++k) {
-                const double a0 = 1.5 * kPi * k / segs, a1 = 1.5 * kPi * (k + 1) / segs;
-                I.line(centre + rc * (std::cos(a0) * e1 + std::sin(a0) * e2),
-                       centre + rc * (std::cos(a1) * e1 + std::sin(a1) * e2), pal.spin,
-                       I.style.lw(2.5f));
-            }
-        }
-    I.flush_lines(true, 0.0005f);
-
-    // Spin curl heads, shaded.
-    I.use_mesh_program();
-    gl.Enable(GL_DEPTH_TEST);
-    if (decor.velocities)
-        for (std::size_t i = 0; i < n; ++i) {
-            Curl curl;
-            if (!curl_of(i, &curl)) continue;
-            const auto& [centre, e1, e2, rc] = curl;
-            const double a = 1.5 * kPi;
-            const Vec3 end = centre + rc * (std::cos(a) * e1 + std::sin(a) * e2);
-            const Vec3 tangent = (-std::sin(a) * e1 + std::cos(a) * e2);
-            I.arrow(end - tangent * (0.12 * I.unit), tangent * (0.16 * I.unit), pal.spin, thick * 0.6);
-        }
-    // Over everything (they start inside the bodies): at a collision the r vectors, the normal
-    // and the impulses.
-    if (decor.impacts && !frame.impacts.empty()) {
-        for (const ImpactMark& im : frame.impacts) {
-            for (std::size_t i : {im.a, im.b})
-                if (i < n && I.body_meshes[i].count)
-                    I.line(frame.bodies[i].x, im.point, with_alpha(pal.lever, 0.9f), I.style.lw(I.style.thin));
-            I.line(im.point, im.point + 0.75 * I.unit * im.normal, pal.normal, I.style.lw(2.0f));
-        }
-        I.flush_lines(false, 0.0f);
-        if (!I.collect) gl.Clear(GL_DEPTH_BUFFER_BIT);
-        I.use_mesh_program();
-        for (const ImpactMark& im : frame.impacts) {
-            I.arrow(im.point, I.k_impulse * im.impulse, pal.impulse, thick * 1.2);
-            if (im.a < n && !I.scene.bodies[im.a].is_static())
-                I.arrow(im.point, -I.k_impulse * im.impulse, pal.impulse, thick);
-            I.arrow(im.point + 0.75 * I.unit * im.normal, 0.2 * I.unit * im.normal, pal.normal, thick * 0.6);
-        }
-    }
-    gl.Disable(GL_DEPTH_TEST);
-    gl.BindVertexArray(0);
-    check_gl(gl, "drawing the 3D view");
+    const Overlay o = overlay(I.view(), frame, decor);
+    Batch3d& b = I.batch;
+    b.begin();
+    b.meshes(o.bodies, MeshDepth::behind_lines);
+    b.meshes(o.arrows, MeshDepth::tested);
+    b.lines(o.lines, true, 0.0005f);
+    b.meshes(o.curl_heads, MeshDepth::tested);
+    b.lines(o.impact_lines, false, 0.0f);
+    b.meshes(o.impact_arrows, MeshDepth::over);
+    b.end("drawing the 3D view");
 }
 
 void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame,
                            const Decor& decor, LabelPlacer* labels) const {
     const Impl& I = *impl_;
+    const Camera& cam = I.camera;
+    const ArrowScales& k = I.scales;
     const Palette& c = I.style.colours;
     const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
     // Centre-of-mass markers, seen through the bodies.
     if (decor.com)
         for (std::size_t i = 0; i < n; ++i)
-            if (!I.scene.bodies[i].is_static() && I.body_meshes[i].count)
-                draw_com_marker(dl, I.project(frame.bodies[i].x), I.style.lw(I.style.com * 0.85f), c.ink,
+            if (!I.scene.bodies[i].is_static() && I.solids.bodies[i].drawn())
+                draw_com_marker(dl, cam.project(frame.bodies[i].x), I.style.lw(I.style.com * 0.85f), c.ink,
                                 c.background, 0.0f);
     // Axes: where x, y and z point, in the view's lower left corner.
     {
-        const ImVec2 o(I.viewport.x + I.style.px(50.0f), I.viewport.w - I.style.px(50.0f));
-        const Vec3f fwd = (I.target - I.eye).normalized();
-        const Vec3f right = fwd.cross(Vec3f(0, 1, 0)).normalized();
-        const Vec3f up = right.cross(fwd);
+        const ImVec4& vp = cam.viewport();
+        const ImVec2 o(vp.x + I.style.px(50.0f), vp.w - I.style.px(50.0f));
+        const Vec3f right = cam.right(), up = cam.up();
         const Colour axis_colours[3] = {rgb(200, 50, 50), rgb(40, 150, 60), rgb(40, 90, 200)};
         const char* names[3] = {"x", "y", "z"};
-        for (int k = 0; k < 3; ++k) {
+        for (int a = 0; a < 3; ++a) {
             Vec3f e = Vec3f::Zero();
-            e[k] = 1.0f;
+            e[a] = 1.0f;
             const ImVec2 d(e.dot(right), -e.dot(up));
             const float L = I.style.px(34.0f);
             const ImVec2 tip(o.x + d.x * L, o.y + d.y * L);
-            draw_arrow(dl, o, tip, axis_colours[k], I.style.px(2.0f), I.style.px(9.0f), I.style.px(7.0f));
+            draw_arrow(dl, o, tip, axis_colours[a], I.style.px(2.0f), I.style.px(9.0f), I.style.px(7.0f));
             dl->AddText(fonts.small, fonts.small->FontSize,
                         ImVec2(tip.x + d.x * I.style.px(8.0f) - 0.3f * fonts.small->FontSize,
                                tip.y + d.y * I.style.px(8.0f) - 0.5f * fonts.small->FontSize),
-                        axis_colours[k], names[k]);
+                        axis_colours[a], names[a]);
         }
     }
     if (!decor.labels || !labels) return;
     for (std::size_t i = 0; i < n; ++i)
-        if (I.body_meshes[i].count) labels->avoid(I.screen_outline(i, frame.bodies[i]));
+        if (I.solids.bodies[i].drawn()) labels->avoid(I.screen_outline(i, frame.bodies[i]));
     struct Pending {
         ImVec2 anchor, direction;
         std::string text;
@@ -1269,40 +246,40 @@ void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameStat
     std::vector<Pending> pending;
     if (decor.impacts)
         for (const ImpactMark& im : frame.impacts) {
-            const ImVec2 p = I.project(im.point);
-            const ImVec2 tip = I.project(im.point + I.k_impulse * im.impulse);
+            const ImVec2 p = cam.project(im.point);
+            const ImVec2 tip = cam.project(im.point + k.k_impulse * im.impulse);
             pending.push_back({tip, ImVec2(tip.x - p.x, tip.y - p.y),
                                "P = " + format_number(im.impulse.norm()) + " N s", c.impulse, fonts.text});
-            const ImVec2 nt = I.project(im.point + 0.95 * I.unit * im.normal);
+            const ImVec2 nt = cam.project(im.point + 0.95 * k.unit * im.normal);
             pending.push_back({nt, ImVec2(nt.x - p.x, nt.y - p.y), "n", c.normal, fonts.text});
             const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
             for (const auto& [i, name] : ends) {
-                if (i >= n || !I.body_meshes[i].count) continue;
-                const ImVec2 from = I.project(frame.bodies[i].x);
+                if (i >= n || !I.solids.bodies[i].drawn()) continue;
+                const ImVec2 from = cam.project(frame.bodies[i].x);
                 pending.push_back({ImVec2(0.5f * (from.x + p.x), 0.5f * (from.y + p.y)),
                                    ImVec2(-(p.y - from.y), p.x - from.x), name, c.lever, fonts.text});
             }
         }
     if (decor.velocities)
         for (std::size_t i = 0; i < n; ++i) {
-            if (I.scene.bodies[i].is_static() || !I.body_meshes[i].count) continue;
+            const Solid& solid = I.solids.bodies[i];
+            if (I.scene.bodies[i].is_static() || !solid.drawn()) continue;
             const BodyState& s = frame.bodies[i];
-            const ImVec2 from = I.project(s.x);
-            if (s.v.norm() * I.k_velocity > 1e-3 * I.unit) {
-                const ImVec2 tip = I.project(I.velocity_start(i, s) + I.k_velocity * s.v);
+            const ImVec2 from = cam.project(s.x);
+            if (s.v.norm() * k.k_velocity > 1e-3 * k.unit) {
+                const ImVec2 tip = cam.project(velocity_start(solid, s) + k.k_velocity * s.v);
                 pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
                                    "v = " + format_number(s.v.norm()) + " m s\u207B\u00B9", c.velocity, fonts.text});
             }
-            if (I.k_spin > 0 && s.w.norm() > 1e-9 * I.max_spin && s.w.norm() > 1e-12) {
-                const Vec3 axis = s.w.normalized();
-                const ImVec2 tip = I.project(s.x + axis * (0.5 * I.sizes[i] * 0.9) + I.k_spin * s.w);
+            if (shows_spin(k, s)) {
+                const ImVec2 tip = cam.project(spin_start(solid, s) + k.k_spin * s.w);
                 pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
                                    "\u03C9 = " + format_number(s.w.norm()) + " rad s\u207B\u00B9", c.spin, fonts.text});
             }
         }
     for (std::size_t i = 0; i < n; ++i) {
-        if (!I.body_meshes[i].count) continue;
-        const ImVec2 top = I.project(frame.bodies[i].x + Vec3(0, 0.5 * I.sizes[i], 0));
+        if (!I.solids.bodies[i].drawn()) continue;
+        const ImVec2 top = cam.project(frame.bodies[i].x + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
         pending.push_back({top, ImVec2(0, -1), I.scene.bodies[i].name, c.ink, fonts.small});
     }
     const float pad = I.style.px(3.0f);

@@ -7,15 +7,19 @@
 //
 // 1D and 2D scenes can be shown in 3D too: blocks become boxes, discs cylinders and polygons
 // prisms, extruded along z; 2D half-planes become walls or the ground.
+//
+// The parts: camera.h (projection, framing), solid.h and mesh.h (the bodies as meshes, no GL),
+// scene3d_passes.h (what a frame draws, as geometry), batch3d.h (the GL buffers and draw
+// calls) and the GLSL programs in assets/shaders/.
 #pragma once
 
 #include <memory>
-#include <optional>
 #include <vector>
 
 #include <imgui.h>
 
 #include "engine/scene.h"
+#include "render/camera.h"  // CameraRequest, default_azimuth, default_elevation
 #include "render/diagram_view.h"  // Decor
 #include "render/draw2d.h"
 #include "render/frame_state.h"
@@ -23,20 +27,6 @@
 #include "render/style.h"
 
 namespace collide::render {
-
-// A camera asked for by the scenario ([view] table); what is not set is chosen by fit().
-struct CameraRequest {
-    std::optional<double> azimuth;    // degrees: turned right of the front (+z) about +y
-    std::optional<double> elevation;  // degrees above the horizon
-    std::optional<Vec3> target;       // m: the point looked at
-    std::optional<double> distance;   // m from the target
-    double zoom = 1.0;                // the distance divided by this (collide gui's mouse wheel)
-};
-
-// The camera's angles when the scenario sets none (degrees): 1D and 2D scenes a little more
-// from the front than 3D ones.
-double default_azimuth(int dimension);
-double default_elevation(int dimension);
 
 class Scene3dView {
 public:
@@ -57,9 +47,10 @@ public:
     void draw_ground(const FrameState& frame);
     void draw_above(const FrameState& frame, const Decor& decor);
     // The screen rectangle draw_above() can touch (pixels, top-left origin, x0 <= x1, y0 <= y1,
-    // not clipped to the frame); false when it draws nothing. The multisampled render draws the
-    // frame's ground without MSAA and only this rectangle with it (the ground's interior
-    // pixels are the same either way), which makes anti-aliasing cost what the bodies cover.
+    // not clipped to the frame), measured on the geometry it would draw; false when it draws
+    // nothing. The multisampled render draws the frame's ground without MSAA and only this
+    // rectangle with it (the ground's interior pixels are the same either way), which makes
+    // anti-aliasing cost what the bodies cover.
     bool above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect);
     // Labels through ImGui, after draw().
     void annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
