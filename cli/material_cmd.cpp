@@ -11,6 +11,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "assets/site.h"
 #include "teach/html.h"
 #include "scenario/input_error.h"
 #include "teach/answers.h"
@@ -42,56 +43,7 @@ std::string spin(const Vec3& w, int dim) { return dim == 2 ? n(w.z()) : vec(w, 3
 
 // ---- Pages ----
 
-const char* kStyle = R"(/* Collide teaching material: one stylesheet for screen and print. */
-:root { --ink: #1c1c1e; --muted: #5f6368; --paper: #fbfbf8; --rule: #d6d6d0; --accent: #1d4ed8; --red: #ce2029; }
-* { box-sizing: border-box; }
-body { margin: 0; background: var(--paper); color: var(--ink);
-       font: 17px/1.55 "DejaVu Sans", "Helvetica Neue", Arial, sans-serif; }
-header.site { background: #fff; border-bottom: 1px solid var(--rule); padding: 0.8rem 1.5rem; }
-header.site a { color: var(--ink); text-decoration: none; font-weight: bold; }
-main { max-width: 62rem; margin: 0 auto; padding: 1.5rem; }
-h1 { font-size: 1.9rem; margin: 0.2rem 0 0.3rem; }
-h2 { font-size: 1.3rem; margin-top: 2.2rem; border-bottom: 1px solid var(--rule); padding-bottom: 0.2rem; }
-h3 { font-size: 1.05rem; margin: 1.2rem 0 0.3rem; }
-.section { color: var(--muted); margin: 0 0 1rem; }
-figure { margin: 1rem 0; }
-figure img, video { width: 100%; height: auto; border: 1px solid var(--rule); background: #fff; }
-figcaption { color: var(--muted); font-size: 0.9rem; margin-top: 0.3rem; }
-.math { font-family: "DejaVu Serif", Georgia, serif; background: #fff; border-left: 3px solid var(--rule);
-        padding: 0.15rem 0.7rem; margin: 0.25rem 0; overflow-x: auto; white-space: nowrap; }
-.math.result { border-left-color: var(--red); }
-.note { color: var(--muted); font-size: 0.95rem; }
-table { border-collapse: collapse; margin: 0.8rem 0; background: #fff; font-size: 0.95rem; }
-th, td { border: 1px solid var(--rule); padding: 0.3rem 0.7rem; text-align: right; }
-th:first-child, td:first-child { text-align: left; }
-th { background: #f1f1ec; }
-.plots { display: grid; grid-template-columns: repeat(auto-fit, minmax(22rem, 1fr)); gap: 1rem; }
-.plots img { width: 100%; border: 1px solid var(--rule); }
-ol.questions > li { margin: 0.8rem 0; }
-details { margin: 0.4rem 0 0; background: #fff; border: 1px solid var(--rule); border-radius: 4px; padding: 0.3rem 0.7rem; }
-summary { cursor: pointer; color: var(--accent); }
-.answer { font-weight: bold; }
-.grid { display: grid; grid-template-columns: repeat(auto-fill, minmax(17rem, 1fr)); gap: 1.2rem; padding: 0; }
-.card { list-style: none; background: #fff; border: 1px solid var(--rule); border-radius: 6px; overflow: hidden; }
-.card a { color: var(--ink); text-decoration: none; display: block; }
-.card img { width: 100%; aspect-ratio: 16 / 9; object-fit: contain; background: var(--paper); display: block; border-bottom: 1px solid var(--rule); }
-.card .text { padding: 0.6rem 0.8rem 0.8rem; }
-.card .num { color: var(--muted); font-size: 0.85rem; }
-.card h2 { font-size: 1.05rem; margin: 0.1rem 0 0.2rem; border: none; padding: 0; }
-nav.pager { display: flex; justify-content: space-between; margin-top: 2.5rem; }
-nav.pager a { color: var(--accent); }
-@media print {
-  body { background: #fff; font-size: 11pt; }
-  header.site, nav.pager, video, .noprint { display: none; }
-  main { max-width: none; padding: 0; }
-  h2 { break-after: avoid; }
-  figure, table, .plots, details { break-inside: avoid; }
-  details > summary { display: none; }
-  details { border: none; padding: 0; }
-  details:not([open]) > * { display: block; }
-  a { color: var(--ink); text-decoration: none; }
-}
-)";
+// The stylesheet is assets/site/style.css, compiled in (cmake/embed.cmake).
 
 std::string page_head(const std::string& title, const std::string& root) {
     return "<!doctype html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
@@ -330,7 +282,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                                       lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr,
                                                   k + 1 < built.size() ? &built[k + 1] : nullptr));
         render::write_file_atomic((tmp / "index.html").string(), index_page(built));
-        render::write_file_atomic((tmp / "style.css").string(), kStyle);
+        render::write_file_atomic((tmp / "style.css").string(), std::string(assets::site_style_css));
 
         // Into place: an old DIR (with --force) goes aside first, then away.
         fs::path old;

@@ -19,7 +19,6 @@
 # this script).
 include_guard(GLOBAL)
 
-set(_COLLIDE_EMBED_SCRIPT "${CMAKE_CURRENT_LIST_FILE}")
 
 function(collide_embed)
   cmake_parse_arguments(PARSE_ARGV 0 E "" "TARGET;HEADER;NAMESPACE" "FILES;NAMES")
@@ -70,14 +69,14 @@ function(collide_embed)
   # quoting lists on a command line (paths with a quote or a backslash are not supported).
   set(arguments "${stem}.embed-args.cmake")
   file(CONFIGURE OUTPUT "${arguments}" @ONLY CONTENT
-"include(\"${_COLLIDE_EMBED_SCRIPT}\")
+"include(\"${CMAKE_CURRENT_FUNCTION_LIST_FILE}\")
 _collide_embed_write(\"${header}\" \"${source}\" \"${E_HEADER}\" \"${E_NAMESPACE}\"
                      \"${files}\" \"${names}\")
 ")
   add_custom_command(
     OUTPUT "${header}" "${source}"
     COMMAND "${CMAKE_COMMAND}" -P "${arguments}"
-    DEPENDS ${files} "${_COLLIDE_EMBED_SCRIPT}" "${arguments}"
+    DEPENDS ${files} "${CMAKE_CURRENT_FUNCTION_LIST_FILE}" "${arguments}"
     COMMENT "Embedding ${file_count} file(s) in ${E_HEADER}"
     VERBATIM)
   target_sources(${E_TARGET} PRIVATE "${header}" "${source}")
