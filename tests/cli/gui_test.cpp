@@ -15,7 +15,7 @@
 
 #include "cli/render_cmd.h"
 #include "render/png.h"
-#include "test_util.h"
+#include "tests/render/test_util.h"
 
 namespace collide {
 namespace {

@@ -13,7 +13,7 @@
 
 #include "render/png.h"
 #include "render/video.h"
-#include "test_util.h"
+#include "tests/render/test_util.h"
 
 namespace collide {
 namespace {

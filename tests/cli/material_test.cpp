@@ -11,7 +11,7 @@
 
 #include <gtest/gtest.h>
 
-#include "test_util.h"
+#include "tests/render/test_util.h"
 
 namespace collide {
 namespace {
