@@ -97,7 +97,7 @@ void GuiModel::scale_size(std::size_t i, double k) {
     b.body2.inertia *= k * k;  // the same mass spread k times wider
     b.body3.inertia *= k * k;
     for (std::size_t j = 0; j < scene_.bodies.size(); ++j)
-        if (j != i && start_overlap(scene_, b, scene_.bodies[j]) > 1e-9) {
+        if (j != i && start_overlap(scene_, b, scene_.bodies[j]) > kOverlapTolerance) {
             error_ = "'" + b.name + "' would overlap '" + scene_.bodies[j].name + "' at the start";
             return;
         }

@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "teach/notation.h"
 #include "cli/step.h"
+#include "scenario/scene_file.h"
+#include "teach/notation.h"
 
 namespace collide {
 
 namespace {
 
-constexpr double kOverlapTolerance = 1e-9;  // m: as in scenario files, touching is fine
 constexpr double kMaxMagnitude = 1e12;      // as in scenario files
 
 const char* const kHelp[] = {

@@ -10,7 +10,6 @@ namespace collide {
 
 namespace {
 
-constexpr double kOverlapTolerance = 1e-9;  // m: touching is fine, overlapping is not
 constexpr double kMaxOutputSteps = 1e6;
 // The 2D and 3D worlds find a contact to an absolute 1e-10 m: on a body smaller than 1 um that
 // would be more than 1e-4 of its size (tests/engine/numerical_edges_test.cpp), so it is refused.

@@ -24,8 +24,10 @@ struct SceneView {
 // `view`, when given, receives the [view] table (which is checked either way).
 Scene parse_scene_file(const std::string& path, SceneView* view = nullptr);
 // How far two bodies overlap where they are (m; <= 0: apart or touching). A file may not
-// start with two bodies overlapping by more than 1e-9 m (nor may collide gui's edits).
+// start with two bodies overlapping by more than kOverlapTolerance (nor may collide gui's or
+// the interactive mode's edits): touching is fine, overlapping is not.
 double start_overlap(const Scene& s, const SceneBody& a, const SceneBody& b);
+constexpr double kOverlapTolerance = 1e-9;  // m
 // `also_allowed`: more top-level tables the caller reads itself (a lesson's [lesson] and
 // [[question]]).
 Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view = nullptr,
