@@ -52,13 +52,9 @@ bool clip_to_convex(const std::vector<ImVec2>& poly, ImVec2* a, ImVec2* b) {
 // Diagonal hatching (45 degrees) clipped to a convex screen polygon.
 void hatch_convex(ImDrawList* dl, const std::vector<ImVec2>& poly, float step, Colour colour,
                   float thickness) {
-    float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
-    for (const ImVec2& p : poly) {
-        x0 = std::min(x0, p.x);
-        y0 = std::min(y0, p.y);
-        x1 = std::max(x1, p.x);
-        y1 = std::max(y1, p.y);
-    }
+    if (poly.empty()) return;
+    const ImVec4 box = bounds_of(poly);
+    const float x0 = box.x, y0 = box.y, x1 = box.z, y1 = box.w;
     // Lines x - y = c.
     for (float c = x0 - y1; c <= x1 - y0; c += step) {
         ImVec2 a(c + y0, y0), b(c + y1, y1);

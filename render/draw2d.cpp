@@ -185,18 +185,24 @@ std::string format_number(double x, int digits) {
     return format_fixed(x, decimals);
 }
 
+ImVec4 bounds_of(const std::vector<ImVec2>& poly) {
+    ImVec4 box(1e30f, 1e30f, -1e30f, -1e30f);
+    for (const ImVec2& p : poly) {
+        box.x = std::min(box.x, p.x);
+        box.y = std::min(box.y, p.y);
+        box.z = std::max(box.z, p.x);
+        box.w = std::max(box.w, p.y);
+    }
+    return box;
+}
+
 namespace {
 
 // Separating axes: does the rectangle overlap the convex polygon?
 bool overlaps(const ImVec4& r, const std::vector<ImVec2>& poly) {
     if (poly.size() < 3) return false;
-    float x0 = 1e30f, y0 = 1e30f, x1 = -1e30f, y1 = -1e30f;
-    for (const ImVec2& p : poly) {
-        x0 = std::min(x0, p.x);
-        y0 = std::min(y0, p.y);
-        x1 = std::max(x1, p.x);
-        y1 = std::max(y1, p.y);
-    }
+    const ImVec4 box = bounds_of(poly);
+    const float x0 = box.x, y0 = box.y, x1 = box.z, y1 = box.w;
     if (r.x >= x1 || r.z <= x0 || r.y >= y1 || r.w <= y0) return false;
     const ImVec2 corners[4] = {{r.x, r.y}, {r.z, r.y}, {r.z, r.w}, {r.x, r.w}};
     for (std::size_t i = 0; i < poly.size(); ++i) {

@@ -26,6 +26,9 @@ void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Co
                        float thickness, float head_length, float head_width);
 void draw_dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, Colour colour, float thickness,
                       float dash, float gap);
+// The screen box (x0, y0, x1, y1) around a polygon's points; inverted (x0 > x1) when empty.
+ImVec4 bounds_of(const std::vector<ImVec2>& poly);
+
 // The classic centre-of-mass symbol: a circle with two opposite quarters filled.
 void draw_com_marker(ImDrawList* dl, ImVec2 c, float r, Colour ink, Colour paper, float angle);
 

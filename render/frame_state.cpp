@@ -53,27 +53,20 @@ ImpactMark impact_mark(const Scene& scene, const Event1& e) {
     return m;
 }
 
-ImpactMark impact_mark(const Scene&, const Event2& e) {
+template <int D>
+ImpactMark impact_mark_of(const Event<D>& e) {
     ImpactMark m;
     m.t = e.t;
     m.a = e.a;
     m.b = e.b;
-    m.point = Vec3(e.point.x(), e.point.y(), 0.0);
-    m.normal = Vec3(e.normal.x(), e.normal.y(), 0.0);
-    m.impulse = Vec3(e.impulse.x(), e.impulse.y(), 0.0);
+    m.point = lift(e.point);
+    m.normal = lift(e.normal);
+    m.impulse = lift(e.impulse);
     return m;
 }
 
-ImpactMark impact_mark(const Scene&, const Event3& e) {
-    ImpactMark m;
-    m.t = e.t;
-    m.a = e.a;
-    m.b = e.b;
-    m.point = e.point;
-    m.normal = e.normal;
-    m.impulse = e.impulse;
-    return m;
-}
+ImpactMark impact_mark(const Scene&, const Event2& e) { return impact_mark_of(e); }
+ImpactMark impact_mark(const Scene&, const Event3& e) { return impact_mark_of(e); }
 
 void add_trails(const std::vector<FrameState>& history, double span, FrameState* frame) {
     frame->trails.assign(frame->bodies.size(), {});
