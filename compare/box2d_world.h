@@ -55,7 +55,7 @@ struct Box2DSettings {
 // Box2D 2.4.1's constants that explain differences (b2_common.h), in SI units.
 constexpr double kBox2DThreshold = 1.0;        // m/s: b2FixtureDef::restitutionThreshold default
 constexpr double kBox2DMaxTranslation = 2.0;   // m per step: b2_maxTranslation
-constexpr double kBox2DMaxRotation = 0.5 * 3.14159265358979323846;  // rad per step: b2_maxRotation
+constexpr double kBox2DMaxRotation = 0.5 * kPi;  // rad per step: b2_maxRotation
 constexpr double kBox2DSkin = 0.01;            // m: b2_polygonRadius
 constexpr int kBox2DMaxVertices = 8;           // b2_maxPolygonVertices
 constexpr double kPlaneLength = 1.0e3;         // m: half-length of the edge standing for a plane

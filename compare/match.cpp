@@ -9,7 +9,7 @@ namespace collide::compare {
 
 namespace {
 
-constexpr double kDegrees = 180.0 / 3.14159265358979323846;
+constexpr double kDegrees = 180.0 / kPi;
 
 std::string short_number(double x) {
     char buf[32];

@@ -91,7 +91,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         b.shape2.radius = r;
         b.shape3.kind = Shape3::Kind::sphere;
         b.shape3.radius = r;
-        extent = dim == 2 ? M_PI * r * r : 4.0 / 3.0 * M_PI * r * r * r;
+        extent = dim == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
     } else if (b.shape == "rectangle" || b.shape == "box") {
         const std::string what = dim == 2 ? "[width, height], full edge lengths in m"
                                           : "[x, y, z] full edge lengths in m";

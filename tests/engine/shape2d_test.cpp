@@ -63,7 +63,7 @@ TEST(Shape2d, BoxOnGroundHasTwoPoints) {
 // A box tilted by 45 degrees touches the ground with one corner, sqrt(2)/2 below its centre.
 TEST(Shape2d, TiltedBoxCornerOnGround) {
     const double h = std::sqrt(0.5);
-    const Manifold2 m = collide(ground(), at(0, 0), rect(1, 1), at(0, h - 1e-3, M_PI / 4));
+    const Manifold2 m = collide(ground(), at(0, 0), rect(1, 1), at(0, h - 1e-3, kPi / 4));
     EXPECT_NEAR(m.separation, -1e-3, 1e-12);
     ASSERT_EQ(m.count, 1);
     EXPECT_NEAR(m.points[0].x(), 0.0, 1e-12);
@@ -108,7 +108,7 @@ Vec2 rotated(const Vec2& v, double angle) {
 // ~1e-17 m away. It came back with the normal (0.894, -0.447): the direction of the rounding
 // noise between the two nearest points.
 TEST(Shape2d, CornerTouchingFaceExactlyLesson6) {
-    const Pose2 pa = at(-0.012132034355964327, 0, M_PI / 4);
+    const Pose2 pa = at(-0.012132034355964327, 0, kPi / 4);
     const Pose2 pb = at(0.3, 0.25);
     const Vec2 corner = pa.apply(rect(0.4, 0.2).polygon.vertices[0]);  // (w, -h): right-most
     ASSERT_NEAR(corner.x(), 0.2, 1e-15);
@@ -139,7 +139,7 @@ TEST(Shape2d, CornerTouchingFaceSweep) {
     for (double theta = 0.05; theta <= 1.5 + 1e-9; theta += 0.01)
         for (const double height : {-0.04, 0.0707, 0.25, 0.5})  // corner height on B's face
             for (const double gap : {0.0, 1e-15, -1e-15, 1e-12, -1e-12})
-                for (const double turn : {0.0, M_PI / 2, M_PI, 1.5 * M_PI, 0.3})
+                for (const double turn : {0.0, kPi / 2, kPi, 1.5 * kPi, 0.3})
                     for (const bool swap : {false, true}) {
                         // In B's frame: the corner (w, -h) of A, turned by theta, at (0.2 - gap, height).
                         const Vec2 c_local = rotated(Vec2(0.2, -0.1), theta);
@@ -173,7 +173,7 @@ TEST(Shape2d, CornerTouchingFaceSweep) {
 // the overlap, in any orientation of the scene.
 TEST(Shape2d, FaceOnFaceTouchingExactly) {
     int cases = 0;
-    for (double turn = 0.0; turn < 2 * M_PI; turn += 0.05)
+    for (double turn = 0.0; turn < 2 * kPi; turn += 0.05)
         for (const double gap : {0.0, 1e-15, -1e-15, 1e-12, -1e-12})
             for (const double shift : {-0.3, 0.0, 0.45}) {
                 // Before the turn: A 1 x 1 at the origin, B 2 x 0.5 above it, its bottom face at
@@ -204,8 +204,8 @@ TEST(Shape2d, FaceOnFaceTouchingExactly) {
 TEST(Shape2d, CornerTouchingCornerExactly) {
     const Shape2 a = rect(1, 0.5), b = rect(0.6, 0.8);
     int cases = 0;
-    for (double ta = 0.0; ta < 2 * M_PI; ta += 0.1)
-        for (double tb = 0.0; tb < 2 * M_PI; tb += 0.1) {
+    for (double ta = 0.0; ta < 2 * kPi; ta += 0.1)
+        for (double tb = 0.0; tb < 2 * kPi; tb += 0.1) {
             // A's corner i and B's corner j pointing at each other: the pair with A's corner
             // furthest along d and B's furthest along -d, d the direction from A to B.
             const Vec2 d = rotated(Vec2(1, 0), 0.5 * (ta + tb) + 0.25);

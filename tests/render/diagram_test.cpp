@@ -115,7 +115,7 @@ TEST_F(RenderTest, ADiscIsDrawnWhereTheStateSays) {
             sx += coverage * (x + 0.5);
             sy += coverage * (y + 0.5);
         }
-    EXPECT_NEAR(n, M_PI * r_px * r_px, 0.06 * M_PI * r_px * r_px);
+    EXPECT_NEAR(n, kPi * r_px * r_px, 0.06 * kPi * r_px * r_px);
     EXPECT_NEAR(sx / n, c.x, 0.5);
     EXPECT_NEAR(sy / n, c.y, 0.5);
 }
@@ -374,7 +374,7 @@ TEST_F(RenderTest, TheScenariosCameraIsHonoured) {
     EXPECT_NEAR(up.x, c.x, 0.5f);
     EXPECT_LT(up.y, c.y - 10.0f);
     // 1 m at 5 m with a 30 degree vertical field of view: 240 / (2 * 5 tan 15 deg) pixels.
-    EXPECT_NEAR(c.y - up.y, 240.0 / (2.0 * 5.0 * std::tan(15.0 * M_PI / 180.0)), 1.0);
+    EXPECT_NEAR(c.y - up.y, 240.0 / (2.0 * 5.0 * std::tan(15.0 * kPi / 180.0)), 1.0);
 }
 
 TEST_F(RenderTest, MultisamplingOnlyWhereTheBodiesAreGivesTheWholeFramesMultisampledPicture) {

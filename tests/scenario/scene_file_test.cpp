@@ -57,8 +57,8 @@ TEST(SceneFile, ValidSceneYieldsBodies) {
     EXPECT_NEAR(s.bodies[0].shape2.normal.y(), 1.0, 1e-15);
     // Disc of density 100 kg/m^2 and radius 0.1: m = 100 pi 0.01, I = m r^2 / 2.
     const Body2& ball = s.bodies[1].body2;
-    EXPECT_NEAR(ball.mass, M_PI, 1e-12);
-    EXPECT_NEAR(ball.inertia, 0.5 * M_PI * 0.01, 1e-12);
+    EXPECT_NEAR(ball.mass, kPi, 1e-12);
+    EXPECT_NEAR(ball.inertia, 0.5 * kPi * 0.01, 1e-12);
     EXPECT_EQ(ball.w, 3.0);
     // Polygon: default name, centre of mass at the centroid (1, 1) from its position;
     // polar moment of the right triangle about it: m (a^2 + b^2) / 18.

@@ -600,11 +600,11 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
     const double zeta = a[0].value;
     ASSERT_GT(zeta, 0.0);
     ASSERT_LT(zeta, 1.0);
-    EXPECT_NEAR(std::exp(-zeta * (M_PI - 2 * std::asin(zeta)) / std::sqrt(1 - zeta * zeta)), e, 1e-12);
+    EXPECT_NEAR(std::exp(-zeta * (kPi - 2 * std::asin(zeta)) / std::sqrt(1 - zeta * zeta)), e, 1e-12);
     const double c = 2 * zeta * std::sqrt(k * m);
     EXPECT_NEAR(a[1].value, c, 1e-12 * c);
     const double w0 = std::sqrt(k / m), wd = w0 * std::sqrt(1 - zeta * zeta), sg = zeta * w0;
-    const double tc = (M_PI - 2 * std::asin(zeta)) / wd;
+    const double tc = (kPi - 2 * std::asin(zeta)) / wd;
     EXPECT_NEAR(a[2].value, tc, 1e-9 * tc);
     // The maxima of the closed forms over the contact, densely sampled (error < 1e-9 relative).
     double peak = 0, deepest = 0;
@@ -629,14 +629,14 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
     ASSERT_EQ(st.rows.size(), L.penalty->damping_ratios.size());
     for (const PenaltyStudy::Row& r : st.rows) {
         const double z = r.zeta, q = std::sqrt(1 - z * z);
-        EXPECT_NEAR(r.push.restitution, std::exp(-z * (M_PI - 2 * std::asin(z)) / q), 1e-9) << z;
-        EXPECT_NEAR(r.pull.restitution, std::exp(-z * M_PI / q), 1e-9) << z;
+        EXPECT_NEAR(r.push.restitution, std::exp(-z * (kPi - 2 * std::asin(z)) / q), 1e-9) << z;
+        EXPECT_NEAR(r.pull.restitution, std::exp(-z * kPi / q), 1e-9) << z;
     }
     ASSERT_EQ(st.stiffer.size(), L.penalty->stiffnesses.size());
     for (const PenaltyStudy::Stiff& r : st.stiffer) {
         const double wdk = std::sqrt(r.stiffness / m) * std::sqrt(1 - zeta * zeta);
         EXPECT_NEAR(r.run.restitution, e, 1e-9) << r.stiffness;
-        EXPECT_NEAR(r.run.contact_time, (M_PI - 2 * std::asin(zeta)) / wdk, 1e-9 * tc) << r.stiffness;
+        EXPECT_NEAR(r.run.contact_time, (kPi - 2 * std::asin(zeta)) / wdk, 1e-9 * tc) << r.stiffness;
         EXPECT_NEAR(r.run.impulse, P, 1e-9 * P) << r.stiffness;
     }
 }

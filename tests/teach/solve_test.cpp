@@ -25,7 +25,7 @@ constexpr double kTol = 1e-12;
 TEST(SolveExamples, RodOnGroundMatchesClosedForm) {
     const SolveProblem P = parse_solve_file(example("rod-on-ground.toml"));
     const Solution s = solve(P);
-    const double m = 1, L = 1, e = 0.5, v0 = 2, th = M_PI / 6, I = m * L * L / 12;
+    const double m = 1, L = 1, e = 0.5, v0 = 2, th = kPi / 6, I = m * L * L / 12;
     const double j = (1 + e) * m * v0 / (1 + 3 * std::cos(th) * std::cos(th));
     EXPECT_NEAR(s.P.y(), j, kTol);
     EXPECT_NEAR(s.P.x(), 0.0, kTol);
