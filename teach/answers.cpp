@@ -2,6 +2,7 @@
 // engine's functions from the recorded collision or final state; and the lesson as Markdown.
 #include "teach/answers.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <ostream>
@@ -166,12 +167,17 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
             else if (q.quantity == "penalty_impulse") a.value = r.impulse;
             else if (q.quantity == "penalty_restitution") a.value = r.restitution;
         }
-        // The text: the number (or vector) to 6 significant digits, then the unit.
-        const auto n = [](double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); };
+        // The text: the number (or vector) to 6 significant digits, then the unit. A vector's
+        // components below 1e-9 of its largest print as 0: the world finds contacts to 1e-10 m
+        // (World::kTouch), so a normal, and what follows from it, is known to about that
+        // (a tangential impulse of 1e-10 N s on a 0.3 N s blow is that, not friction).
+        const auto n = [](double x, double floor) { return notation::num_text(std::abs(x) < floor ? 0.0 : x); };
         if (a.is_vector) {
-            a.text = "(" + n(a.vector.x()) + ", " + n(a.vector.y()) + (D == 3 ? ", " + n(a.vector.z()) : "") + ")";
+            const double floor = std::max(1e-12, 1e-9 * a.vector.cwiseAbs().maxCoeff());
+            a.text = "(" + n(a.vector.x(), floor) + ", " + n(a.vector.y(), floor) +
+                     (D == 3 ? ", " + n(a.vector.z(), floor) : "") + ")";
         } else {
-            a.text = n(a.value);
+            a.text = n(a.value, 1e-12);
         }
         if (!a.unit.empty()) a.text += " " + a.unit;
         out.push_back(a);

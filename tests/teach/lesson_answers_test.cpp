@@ -162,6 +162,13 @@ TEST(LessonAnswers, ContactPointVelocity) {
     expect_vec2(a[2], h.P, 1e-7);
     expect_vec2(a[3], h.vb, 1e-7);
     expect_vec2(a[4], h.va + spin_x(h.wa, ra), 1e-7);
+    // The closed form's impulse and the ball's velocity are along n alone: the world's
+    // tangential part (its contact found to 1e-10 m) is below 1e-9 of the normal one and the
+    // text writes it as 0, as the lesson's explanation does.
+    ASSERT_EQ(h.P.x(), 0.0);
+    ASSERT_LT(std::abs(a[2].vector.x()), 1e-9 * std::abs(a[2].vector.y()));
+    EXPECT_EQ(a[2].text.rfind("(0, ", 0), 0u) << a[2].text;
+    EXPECT_EQ(a[3].text.rfind("(0, ", 0), 0u) << a[3].text;
 }
 
 TEST(LessonAnswers, Restitution) {
