@@ -75,11 +75,7 @@ private:
     struct sigaction old_int_ {}, old_term_ {};
 };
 
-std::string num(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", x);
-    return buf;
-}
+std::string num(double x) { return notation::num_data(x); }
 
 // ---- The worked example of the first collision ----
 

@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "scenario/input_error.h"
+#include "teach/notation.h"
 
 namespace collide {
 
@@ -13,11 +14,7 @@ namespace {
 
 const char* const kCommand = "";  // option errors name the option, not a file
 
-std::string num(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", x);
-    return buf;
-}
+std::string num(double x) { return notation::num_data(x); }
 
 // The named values of an option: the names CLI11 lists, and what each means.
 template <class T>

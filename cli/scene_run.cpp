@@ -6,6 +6,7 @@
 #include <variant>
 
 #include "cli/step.h"
+#include "teach/notation.h"
 
 namespace collide {
 
@@ -19,11 +20,7 @@ decltype(auto) visit_record(const SceneRun& run, F&& f) {
     return std::visit(std::forward<F>(f), run.record);
 }
 
-std::string num(double x) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.10g", x);
-    return buf;
-}
+std::string num(double x) { return notation::num_data(x); }
 
 // A CSV field as RFC 4180 writes it: quoted, with its quotes doubled, when it holds a comma or
 // a quote (a body may be named "cart, left"); as it is otherwise.

@@ -105,6 +105,12 @@ std::string num_text(double x) {
     return buf;
 }
 
+std::string num_data(double x) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.10g", x);
+    return buf;
+}
+
 F num(double x) {
     const std::string t = num_text(x);
     const std::size_t e = t.find('e');

@@ -29,6 +29,9 @@ F unit(const std::string& u);
 // A number to 6 significant digits ("-0" shown as "0"; 1e-07 as 1\times10^{-7} in LaTeX).
 F num(double x);
 std::string num_text(double x);
+// Ten significant digits (printf %.10g, "-0" kept): the data files (data.csv, events.csv)
+// and numbers quoted back in messages.
+std::string num_data(double x);
 // A vector of the problem's dimension: 1D a number, 2D (x, y), 3D (x, y, z).
 F vec(const Vec3& v, int dim);
 // An angular velocity: 2D the z component, 3D the vector.
