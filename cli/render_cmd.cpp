@@ -206,8 +206,8 @@ struct Ran {
 
 Ran run_stage(const Loaded& in) {
     Ran out{run_scene(in.scene, in.times), {}, std::nullopt};
-    if (in.lesson) out.answers = answer_questions(*in.lesson, out.run.record);
     if (in.lesson && in.lesson->penalty) out.penalty = penalty_study(*in.lesson, out.run.record);
+    if (in.lesson) out.answers = answer_questions(*in.lesson, out.run.record, out.penalty ? &*out.penalty : nullptr);
     return out;
 }
 

@@ -59,7 +59,8 @@ Vec3 spin_of(const Body2& b) { return Vec3(0, 0, b.w); }
 Vec3 spin_of(const Body3& b) { return b.w; }
 
 template <int D>
-std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const AnyRecording& record) {
+std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const AnyRecording& record,
+                                 const PenaltyStudy* given) {
     const Scene& scene = L.scene;
     const auto& events = run.events;
     const auto& final_bodies = run.states.back();  // at the run's last sampled instant
@@ -75,7 +76,13 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
         return scene.bodies.size();
     };
 
-    std::optional<PenaltyStudy> study;  // [penalty]: once, when a question asks
+    // [penalty]: the study given, or made once when a question asks.
+    std::optional<PenaltyStudy> made;
+    const auto study = [&]() -> const PenaltyStudy& {
+        if (given) return *given;
+        if (!made) made = penalty_study(L, record);
+        return *made;
+    };
     std::vector<LessonAnswer> out;
     for (std::size_t qi = 0; qi < L.questions.size(); ++qi) {
         const LessonQuestion& q = L.questions[qi];
@@ -157,10 +164,9 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
         } else if (q.quantity == "final_kinetic_energy") {
             a.value = totals(final_bodies).kinetic_energy;
         } else if (info.penalty) {
-            if (!study) study = penalty_study(L, record);
-            const PenaltyRun& r = study->matched;
-            if (q.quantity == "penalty_damping_ratio") a.value = study->zeta;
-            else if (q.quantity == "penalty_damping") a.value = study->damping;
+            const PenaltyRun& r = study().matched;
+            if (q.quantity == "penalty_damping_ratio") a.value = study().zeta;
+            else if (q.quantity == "penalty_damping") a.value = study().damping;
             else if (q.quantity == "penalty_contact_time") a.value = r.contact_time;
             else if (q.quantity == "penalty_peak_force") a.value = r.peak_force;
             else if (q.quantity == "penalty_max_overlap") a.value = r.max_overlap;
@@ -210,10 +216,11 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
     out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";
 }
 
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run) {
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run,
+                                          const PenaltyStudy* penalty) {
     if (lesson.scene.dimension != static_cast<int>(run.index()) + 1)
         throw std::invalid_argument("answer_questions: the recording is of another dimension");
-    return std::visit([&](const auto& r) { return answer<std::decay_t<decltype(r)>::dimension>(lesson, r, run); }, run);
+    return std::visit([&](const auto& r) { return answer<std::decay_t<decltype(r)>::dimension>(lesson, r, run, penalty); }, run);
 }
 
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson) {

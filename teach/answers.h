@@ -11,6 +11,8 @@
 
 namespace collide {
 
+struct PenaltyStudy;
+
 struct LessonAnswer {
     double value = 0.0;       // the number (a vector's: its length; see `vector`)
     Vec3 vector = Vec3::Zero();
@@ -20,8 +22,11 @@ struct LessonAnswer {
 };
 // Answers every question from `run`, a recording of the lesson's scene whose last sample is
 // at its duration (the run's end). Throws InputError (naming the question) when one asks for
-// an event the run does not have or a body it lacks.
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run);
+// an event the run does not have or a body it lacks. `penalty`: the lesson's penalty study of
+// this run (teach/lesson_penalty.h) when the caller has made it; else it is made here when a
+// question asks for a penalty quantity.
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run,
+                                          const PenaltyStudy* penalty = nullptr);
 // The same from a run of the lesson's scene sampled at its end only.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
 
