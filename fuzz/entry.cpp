@@ -18,14 +18,35 @@ namespace {
 
 constexpr const char* kName = "fuzz.toml";
 
+// Thrown by the impact hook once a run has had kMaxEvents impacts: one advance may hold many
+// (a bounce series), so the count is checked at each impact, not between advances.
+struct EventBudgetSpent {};
+constexpr double kChunk = 0.01;  // s
+
 template <int D>
 void run(const Scene& scene) {
     typename Stepping<D>::World world(scene);
     std::vector<typename Stepping<D>::Event> events;
     const std::vector<double> times = output_times(scene);
     const std::size_t n = std::min(times.size(), kMaxOutputSteps + 1);
-    for (std::size_t k = 0; k < n && events.size() <= kMaxEvents; ++k) {
-        world.advance_to(times[k], &events);
+    std::size_t impacts = 0;
+    const auto budget = [&impacts](double) {
+        if (++impacts > kMaxEvents) throw EventBudgetSpent{};
+    };
+    bool spent = false;
+    std::size_t chunks = 0;
+    for (std::size_t k = 0; k < n && !spent; ++k) {
+        // In steps of at most kChunk, so that the substeps can be counted on the way (a long
+        // output step of a resting scene is thousands of substeps).
+        while (world.time() < times[k] && !spent) {
+            try {
+                world.advance_to(std::min(times[k], world.time() + kChunk), &events, budget);
+            } catch (const EventBudgetSpent&) {
+                spent = true;  // the events so far are still formatted below
+            }
+            spent = spent || ++chunks > kMaxSubsteps;  // (1D: no substeps; a long run of chunks)
+            if constexpr (D > 1) spent = spent || world.counters().substeps > kMaxSubsteps;
+        }
         for (const auto& b : world.bodies())
             if (!b.state_finite())
                 throw std::logic_error("a body's state is not finite at t = " +

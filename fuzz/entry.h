@@ -20,12 +20,14 @@ void solve(const std::string& text);
 // A lesson file: parse_lesson_text (its scene, questions, variants, [penalty]).
 void lesson(const std::string& text);
 // A scenario parsed and then stepped like `collide step`, cut short so one input stays well
-// under a second: at most kMaxBodies bodies, kMaxOutputSteps output instants and kMaxEvents
-// collisions. Besides an InputError, the world may refuse a run with std::runtime_error (a
+// under a second: at most kMaxBodies bodies, kMaxOutputSteps output instants, kMaxEvents
+// collisions and (2D, 3D) kMaxSubsteps substeps of the world (a resting body costs one solve
+// per millisecond of simulated time: World::kRestStep). Besides an InputError, the world may refuse a run with std::runtime_error (a
 // stuck simulation: step.h); every state it reports must be finite.
 inline constexpr std::size_t kMaxBodies = 8;
 inline constexpr std::size_t kMaxOutputSteps = 40;
 inline constexpr std::size_t kMaxEvents = 2000;
+inline constexpr std::uint64_t kMaxSubsteps = 300;
 void step(const std::string& text);
 
 // The entry points by name ("scene", "solve", "lesson", "step"); nullptr for another name.

@@ -23,7 +23,8 @@ Writes under DIR/fuzz-run/ (inside the gitignored build directory):
   artifacts/TARGET/  crash-*, timeout-*, leak-*, oom-* inputs that failed
   TARGET.log         libFuzzer's output
 Exits 1 if any target found a crash, a hang (> 5 s for one input), a leak or undefined
-behaviour, printing each failing input's path. Replay one with DIR/fuzz/TARGET_fuzz FILE;
+behaviour, printing each failing input (its path, and its bytes in base64 for a log read
+elsewhere). Replay one with DIR/fuzz/TARGET_fuzz FILE;
 keep it as a regression test in tests/fuzz-regressions/TARGET/ once it is fixed.
 USAGE
 }
@@ -98,7 +99,14 @@ for t in "${targets[@]}"; do
     failed=1
     echo "  $t: FAILED (exit code $code); log: $out/$t.log"
     grep -E 'ERROR: |runtime error:|SUMMARY:|terminate called|what\(\):' "$out/$t.log" | head -5 | sed 's/^/    /'
-    for f in "$out/artifacts/$t"/*; do [[ -e $f ]] && echo "    input: $f"; done
+    for f in "$out/artifacts/$t"/*; do
+      [[ -e $f ]] || continue
+      echo "    input: $f"
+      # The input itself, so that a finding on a CI machine can be replayed here:
+      # base64 -d > tests/fuzz-regressions/TARGET/NAME
+      echo "    input (base64, $(wc -c <"$f") bytes):"
+      base64 -w 100 "$f" | head -120 | sed 's/^/      /'
+    done
   fi
 done
 exit $failed
