@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <sstream>
 
 #include "render/frame_state.h"
+#include "teach/notation.h"
 
 namespace collide {
 
@@ -26,13 +28,16 @@ std::vector<std::string> time_notes(const Moments& moments, int decimals) {
 
 // The three moments drawn by a renderer framed on them: no trails, at the instant the impulse
 // instead of the velocities.
-std::vector<render::Image> three_panels(render::Renderer& renderer, const Moments& moments) {
+// What each panel drew goes to `annotations` when given.
+std::vector<render::Image> three_panels(render::Renderer& renderer, const Moments& moments,
+                                        std::vector<render::Annotations>* annotations = nullptr) {
     std::vector<render::Image> panels;
     for (int k = 0; k < 3; ++k) {
         render::Decor d;
         d.velocities = k != 1;
         d.trails = false;
         panels.push_back(renderer.render(moments.states[k], d));
+        if (annotations) annotations->push_back(renderer.annotations());
     }
     return panels;
 }
@@ -71,7 +76,10 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
     render::Renderer panels_renderer(context, scene, panel);
     panels_renderer.prepare(three, moments.states[1].impacts);
-    out.panels = three_panels(panels_renderer, moments);
+    out.panels = three_panels(panels_renderer, moments, &out.annotations);
+    out.times[0] = moments.before;
+    out.times[1] = moments.at;
+    out.times[2] = moments.after;
     std::vector<std::string> notes = time_notes(moments, settings.time_decimals + 1);
     if (view.directions && scene.dimension == 1) {
         // The page's captions: a (the left block) catches b before, and does not pass it
@@ -104,9 +112,33 @@ void write_stills(render::Renderer& frames, const CollisionShots& shots, const P
     }
 }
 
+std::string annotations_json(const Scene& scene, const Figure* figure) {
+    std::vector<std::string> names;
+    for (const SceneBody& b : scene.bodies) names.push_back(b.name);
+    std::ostringstream out;
+    out << "{\n  \"dimension\": " << scene.dimension << ",\n";
+    if (!figure || figure->annotations.size() != 3) {
+        out << "  \"panels\": {}\n}\n";  // no collision: no figure
+        return out.str();
+    }
+    const char* keys[3] = {"before", "at", "after"};
+    out << "  \"panel_size\": [" << figure->panel.width << ", " << figure->panel.height << "],\n";
+    out << "  \"times\": {";
+    for (int k = 0; k < 3; ++k) out << (k ? ", " : "") << "\"" << keys[k] << "\": " << notation::num_data(figure->times[k]);
+    out << "},\n  \"panels\": {";
+    for (int k = 0; k < 3; ++k) {
+        out << (k ? ",\n" : "\n") << "    \"" << keys[k] << "\": ";
+        render::write_annotations_json(out, figure->annotations[static_cast<std::size_t>(k)], scene.dimension,
+                                       names, 4);
+    }
+    out << "\n  }\n}\n";
+    return out.str();
+}
+
 Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
                     const PictureOut& out) {
     Figure fig = collision_figure(context, shots.scene, shots.view, settings, shots.moments);
+    render::write_file_atomic(out.dir + "/annotations.json", annotations_json(shots.scene, &fig));
     // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
     write_png(out, "thumb.png", render::shrink(fig.panels[1], 480));
     write_png(out, "figure.png", fig.figure);

@@ -38,6 +38,8 @@ struct PictureOut {
 // the three with their captions.
 struct Figure {
     std::vector<render::Image> panels;
+    std::vector<render::Annotations> annotations;  // what each panel drew
+    double times[3] = {0, 0, 0};                    // s: the panels' moments
     render::Image figure;
     render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
 };
@@ -52,7 +54,13 @@ struct VariantRow {
 // before.png, at.png and after.png: the moments as the frames' renderer draws them (with the
 // trails up to then; at the instant the impulse instead of the velocities).
 void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out);
-// figure.png and thumb.png (the collision panel, 480 pixels wide); returns the figure.
+// annotations.json: what the figure's three panels draw (render/annotation.h), as
+//   {"dimension": D, "panel_size": [w, h], "times": {"before": t, "at": t, "after": t},
+//    "panels": {"before": [items], "at": [items], "after": [items]}}
+// ("panels": {} when there is no figure: `figure` null, the run has no collision).
+std::string annotations_json(const Scene& scene, const Figure* figure);
+// figure.png, thumb.png (the collision panel, 480 pixels wide) and annotations.json; returns
+// the figure.
 Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
                     const PictureOut& out);
 // variants.png: the same three moments of each row, framed alike with `figure`'s panels.

@@ -323,6 +323,8 @@ double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun&
         write_stills(renderer, shots, out);
         const Figure figure = write_figure(*context, shots, settings, out);
         if (!a.rows.empty()) write_variants(*context, a.rows, settings, figure, out);
+    } else {
+        render::write_file_atomic(rq.out_dir + "/annotations.json", annotations_json(in.scene, nullptr));
     }
     return seconds;
 }

@@ -130,17 +130,7 @@ void DiagramView::draw_axis_1d(ImDrawList* dl) const {
                style_.lw(12), style_.lw(9));
 }
 
-void DiagramView::label_axis_1d(ImDrawList* dl, const FontSet& fonts, LabelPlacer* labels) const {
-    const float y = to_screen(Vec3::Zero()).y;
-    const float x1 = viewport_.z - style_.px(8);
-    const ImVec2 size = rich_text_size(fonts, fonts.text, "+x");
-    const ImVec2 at(x1 - size.x, y + style_.px(6));
-    draw_rich_text(dl, fonts, fonts.text, at, style_.colours.ink, "+x");
-    labels->reserve(ImVec4(at.x, at.y, at.x + size.x, at.y + size.y));
-}
-
-void DiagramView::draw_body(ImDrawList* dl, std::size_t i, const BodyState& s,
-                            const Decor& decor) const {
+void DiagramView::draw_body(ImDrawList* dl, std::size_t i, const BodyState& s, bool com) const {
     const Palette& c = style_.colours;
     const SceneBody& body = scene_.bodies[i];
     int order = 0;  // colour by the order among moving bodies
@@ -184,51 +174,114 @@ void DiagramView::draw_body(ImDrawList* dl, std::size_t i, const BodyState& s,
             angle = static_cast<float>(std::atan2(d.y(), d.x()));
         }
     }
-    if (decor.com && !body.is_static() && kind(i) != Kind::plane && kind(i) != Kind::none)
+    if (com && !body.is_static() && kind(i) != Kind::plane && kind(i) != Kind::none)
         draw_com_marker(dl, centre, style_.lw(style_.com), c.ink, c.background, angle);
 }
 
-void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& frame,
-                       const Decor& decor, LabelPlacer* labels) const {
-    const Palette& c = style_.colours;
-    const std::size_t n = std::min(frame.bodies.size(), scene_.bodies.size());
-    dl->PushClipRect(ImVec2(viewport_.x, viewport_.y), ImVec2(viewport_.z, viewport_.w), true);
-    draw_planes(dl);
-    if (scene_.dimension == 1) draw_axis_1d(dl);
+namespace {
 
-    // Trails: the path of each centre over the last moments, fading with age.
-    if (decor.trails && !frame.trails.empty()) {
-        for (std::size_t i = 0; i < n && i < frame.trails.size(); ++i) {
-            const auto& trail = frame.trails[i];
-            if (scene_.bodies[i].is_static() || trail.size() < 2) continue;
-            int order = 0;
-            for (std::size_t j = 0; j < i; ++j) order += scene_.bodies[j].is_static() ? 0 : 1;
-            const double span = std::max(1e-9, trail.back().t - trail.front().t);
-            for (std::size_t k = 1; k < trail.size(); ++k) {
-                const double age = (frame.t - trail[k].t) / span;
-                const float alpha = static_cast<float>(0.55 * std::clamp(1.0 - age, 0.0, 1.0));
-                dl->AddLine(to_screen(trail[k - 1].x), to_screen(trail[k].x),
-                            with_alpha(c.darks[order % Palette::kFills], alpha),
-                            style_.lw(2.0f));
-            }
-        }
+// A vector's components in the scene's dimension (1D: x; 2D: x, y).
+std::vector<double> components(const Vec3& v, int dimension) {
+    std::vector<double> out;
+    for (int k = 0; k < dimension; ++k) out.push_back(v[k]);
+    return out;
+}
+
+// A body's pose as annotations.json gives it (Annotation::value).
+std::vector<double> pose_value(const BodyState& s, int dimension) {
+    if (dimension == 1) return {s.x.x()};
+    if (dimension == 2) return {s.x.x(), s.x.y(), s.angle};
+    return {s.x.x(), s.x.y(), s.x.z(), s.q.w(), s.q.x(), s.q.y(), s.q.z()};
+}
+
+// The state a body item is drawn at: its centre and its pose's angle or orientation.
+BodyState pose_state(const Annotation& a, int dimension) {
+    BodyState s;
+    s.x = a.from;
+    if (dimension == 2 && a.value.size() == 3) {
+        s.angle = a.value[2];
+        s.q = lift_angle(s.angle);
+    } else if (dimension == 3 && a.value.size() == 7) {
+        s.q = Quat(a.value[3], a.value[4], a.value[5], a.value[6]);
     }
+    return s;
+}
 
-    // Bodies: static first, then moving ones.
+}  // namespace
+
+Vec3 DiagramView::to_world(ImVec2 screen) const {
+    const double cx = 0.5 * (viewport_.x + viewport_.z), cy = 0.5 * (viewport_.y + viewport_.w);
+    return Vec3(centre_.x() + (screen.x - cx) / scale_, centre_.y() - (screen.y - cy) / scale_, 0.0);
+}
+
+Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor,
+                                  LabelPlacer* labels) const {
+    const Palette& c = style_.colours;
+    const int dim = scene_.dimension;
+    const std::size_t n = std::min(frame.bodies.size(), scene_.bodies.size());
+    Annotations items;
+    const auto add = [&items](Annotation a) {
+        items.push_back(std::move(a));
+        return static_cast<int>(items.size()) - 1;
+    };
+    const auto arrow_item = [&](Mark kind, int body, const Vec3& from, const Vec3& to, std::vector<double> value,
+                                Colour colour) {
+        Annotation a;
+        a.kind = kind;
+        a.body = body;
+        a.from = from;
+        a.to = to;
+        a.value = std::move(value);
+        a.colour = colour;
+        const ImVec2 p = to_screen(from), q = to_screen(to);
+        a.box = ImVec4(std::min(p.x, q.x), std::min(p.y, q.y), std::max(p.x, q.x), std::max(p.y, q.y));
+        return add(std::move(a));
+    };
+
+    // Ground and walls (drawn first, from the scene), then the bodies: static first.
+    for (std::size_t i = 0; i < n; ++i) {
+        if (kind(i) != Kind::plane) continue;
+        Vec2 nrm;
+        double offset;
+        plane_of(i, &nrm, &offset);
+        Annotation a;
+        a.kind = Mark::plane;
+        a.body = static_cast<int>(i);
+        a.from = a.to = Vec3(nrm.x() * offset, nrm.y() * offset, 0.0);
+        a.value = components(Vec3(nrm.x(), nrm.y(), 0.0), std::max(dim, 2));
+        a.value.resize(static_cast<std::size_t>(dim));
+        add(std::move(a));
+    }
+    std::vector<int> body_item(n, -1);
     for (int pass = 0; pass < 2; ++pass)
-        for (std::size_t i = 0; i < n; ++i)
-            if (scene_.bodies[i].is_static() == (pass == 0)) draw_body(dl, i, frame.bodies[i], decor);
+        for (std::size_t i = 0; i < n; ++i) {
+            if (scene_.bodies[i].is_static() != (pass == 0) || kind(i) == Kind::plane) continue;
+            const BodyState& s = frame.bodies[i];
+            Annotation a;
+            a.kind = Mark::body;
+            a.body = static_cast<int>(i);
+            a.from = a.to = s.x;
+            a.value = pose_value(s, dim);
+            a.small = decor.com;  // bodies: whether the centre-of-mass marker is drawn
+            if (kind(i) != Kind::none) {
+                Vec2 l(1e300, 1e300), h(-1e300, -1e300);
+                extent(i, s, &l, &h);
+                const ImVec2 p = to_screen(Vec3(l.x(), h.y(), 0)), q = to_screen(Vec3(h.x(), l.y(), 0));
+                a.box = ImVec4(p.x, p.y, q.x, q.y);
+            }
+            body_item[i] = add(std::move(a));
+        }
 
-    const float arrow = style_.lw(style_.arrow);
-    const float hl = style_.lw(style_.head_length), hw = style_.lw(style_.head_width);
-    const float gap = style_.px(6.0f);
+    // Label requests, placed at the end in this order (most important first).
     struct Pending {
+        int of;
         ImVec2 anchor, direction;
         std::string text;
+        std::vector<double> value;
         Colour colour;
-        ImFont* font;
+        bool small;
     };
-    std::vector<Pending> pending;  // labels, placed in this order (most important first)
+    std::vector<Pending> pending;
     std::vector<Pending> normal_labels;
 
     // Collisions: r vectors, the normal, the impulses, the contact point.
@@ -240,47 +293,57 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             role_b.push_back(im.b);
             const ImVec2 p = to_screen(im.point);
             // r vectors (not in 1D, where every lever arm is along the line of impact).
-            if (scene_.dimension > 1) {
+            if (dim > 1) {
                 const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
                 for (const auto& [i, name] : ends) {
                     if (kind(i) == Kind::plane || kind(i) == Kind::none) continue;
-                    const ImVec2 from = to_screen(frame.bodies[i].x);
+                    const Vec3& x = frame.bodies[i].x;
+                    const ImVec2 from = to_screen(x);
                     if (norm(p - from) < 4.0f) continue;
-                    draw_dashed_line(dl, from, p - unit(p - from) * style_.px(9), c.lever,
-                                     style_.lw(style_.thin), style_.px(6), style_.px(4));
-                    draw_arrow(dl, p - unit(p - from) * style_.px(11), p, c.lever,
-                               style_.lw(style_.thin), style_.lw(9), style_.lw(7));
+                    const int k = arrow_item(Mark::lever_arm, static_cast<int>(i), x, im.point,
+                                             components(im.point - x, dim), c.lever);
                     const ImVec2 d = unit(p - from);
-                    pending.push_back({(from + p) * 0.5f, ImVec2(-d.y, d.x), name, c.lever, fonts.text});
+                    pending.push_back({k, (from + p) * 0.5f, ImVec2(-d.y, d.x), name, {}, c.lever, false});
                 }
             }
-            // The contact: the tangent line through the point, and the unit normal n drawn beside
-            // the impulse (they are parallel without friction). In 1D n is +x, the axis.
-            const ImVec2 nd = unit(ImVec2(static_cast<float>(im.normal.x()), static_cast<float>(-im.normal.y())));
-            const ImVec2 td(-nd.y, nd.x);
-            const float nl = style_.px(style_.normal_length);
-            if (scene_.dimension > 1) {
-                draw_dashed_line(dl, p - td * (0.9f * nl), p + td * (0.9f * nl), with_alpha(c.normal, 0.8f),
-                                 style_.lw(style_.thin), style_.px(7), style_.px(4));
+            // The unit normal n, drawn beside the impulse (they are parallel without
+            // friction), with the tangent line through the point. In 1D n is +x, the axis.
+            if (dim > 1) {
+                const Vec3 nw = im.normal.normalized();
+                const Vec3 tip = im.point + nw * (style_.px(style_.normal_length) / scale_);
+                const int k = arrow_item(Mark::normal, -1, im.point, tip, components(nw, dim), c.normal);
+                const ImVec2 nd = unit(to_screen(tip) - p);
+                const ImVec2 td(-nd.y, nd.x);
                 const ImVec2 n0 = p + td * style_.px(18.0f);
-                draw_arrow(dl, n0, n0 + nd * nl, c.normal, style_.lw(2.0f), hl * 0.85f, hw * 0.85f);
-                normal_labels.push_back({n0 + nd * nl, nd, "n", c.normal, fonts.text});
+                normal_labels.push_back({k, n0 + nd * style_.px(style_.normal_length), nd, "n", {}, c.normal, false});
             }
             // The impulse on b, and its reaction on a when a moves.
-            const Vec2 P = xy(im.impulse) * k_impulse_;
-            const ImVec2 tip = to_screen(im.point + Vec3(P.x(), P.y(), 0));
-            const std::string value = format_number(xy(im.impulse).norm()) + " N s";
+            const Vec3 kP = im.impulse * k_impulse_;
+            const ImVec2 tip = to_screen(im.point + Vec3(kP.x(), kP.y(), 0));
             if (norm(tip - p) > 1.0f) {
+                const Vec3 on_b = im.impulse;
+                // The number printed: in 1D the signed impulse along +x (the page's J), else |P|.
+                const double shown = dim == 1 ? on_b.x() : Vec2(on_b.x(), on_b.y()).norm();
                 if (!scene_.bodies[im.a].is_static()) {
+                    const int k = arrow_item(Mark::impulse, static_cast<int>(im.a), im.point,
+                                             im.point - Vec3(kP.x(), kP.y(), 0), components(-on_b, dim),
+                                             c.impulse);
+                    items[static_cast<std::size_t>(k)].faint = true;
                     const ImVec2 rtip = p - (tip - p);
-                    draw_arrow(dl, p, rtip, with_alpha(c.impulse, 0.75f), arrow, hl, hw);
-                    pending.push_back({rtip, unit(p - tip), "\u2212P", c.impulse, fonts.text});
+                    pending.push_back({k, rtip, unit(p - tip), "\u2212P", {}, c.impulse, false});
                 }
-                draw_arrow(dl, p, tip, c.impulse, arrow, hl, hw);
-                pending.insert(pending.begin(), {tip, unit(tip - p), "P = " + value, c.impulse, fonts.text});
+                const int k = arrow_item(Mark::impulse, static_cast<int>(im.b), im.point,
+                                         im.point + Vec3(kP.x(), kP.y(), 0), components(on_b, dim), c.impulse);
+                pending.insert(pending.begin(), {k, tip, unit(tip - p), "P = " + format_number(shown) + " N s",
+                                                 {shown}, c.impulse, false});
             }
-            dl->AddCircleFilled(p, style_.px(4.5f), c.background);
-            dl->AddCircleFilled(p, style_.px(3.2f), c.impulse);
+            Annotation dot;
+            dot.kind = Mark::contact;
+            dot.from = dot.to = im.point;
+            dot.value = components(im.point, dim);
+            dot.colour = c.impulse;
+            dot.box = ImVec4(p.x - style_.px(4.5f), p.y - style_.px(4.5f), p.x + style_.px(4.5f), p.y + style_.px(4.5f));
+            add(std::move(dot));
         }
     }
 
@@ -291,33 +354,50 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             const BodyState& s = frame.bodies[i];
             const ImVec2 from = to_screen(s.x);
             const ImVec2 tip = to_screen(s.x + k_velocity_ * s.v);
-            const double speed = xy(s.v).norm();
             if (norm(tip - from) > 1.0f) {
-                draw_arrow(dl, from, tip, c.velocity, arrow, hl, hw);
-                const std::string v = scene_.dimension == 1 ? format_number(s.v.x()) : format_number(speed);
-                pending.push_back({tip, unit(tip - from), "v = " + v + " m s\u207B\u00B9", c.velocity, fonts.text});
+                const int k = arrow_item(Mark::velocity, static_cast<int>(i), s.x, s.x + k_velocity_ * s.v,
+                                         components(s.v, dim), c.velocity);
+                // 1D: the signed velocity along +x; else the speed.
+                const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
+                pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m s\u207B\u00B9",
+                                   {shown}, c.velocity, false});
             }
             const double w = s.w.z();
             if (max_spin_ > 0 && std::abs(w) > 1e-9 * max_spin_ && std::abs(w) > 1e-9) {
-                Vec2 l(1e300, 1e300), h(-1e300, -1e300);
-                extent(i, s, &l, &h);
                 const float r = spin_radius(i, scale_);
                 const double sweep = std::max(35.0, 240.0 * std::abs(w) / max_spin_) * kPi / 180.0;
-                const double mid = 0.5 * kPi;  // centred above the body
-                const double sign = w > 0 ? 1.0 : -1.0;
-                const float a0 = static_cast<float>(mid - sign * sweep / 2);
-                const float a1 = static_cast<float>(mid + sign * sweep / 2);
-                draw_curved_arrow(dl, from, r, a0, a1, c.spin, style_.lw(2.5f), hl * 0.85f, hw * 0.85f);
-                pending.push_back({from - ImVec2(0, r), ImVec2(0, -1),
-                                   "\u03C9 = " + format_number(w) + " rad s\u207B\u00B9", c.spin, fonts.text});
+                Annotation a;
+                a.kind = Mark::spin;
+                a.body = static_cast<int>(i);
+                a.from = a.to = s.x;
+                a.value = dim == 3 ? components(s.w, 3) : std::vector<double>{w};
+                a.sweep = w > 0 ? sweep : -sweep;
+                a.radius = r;
+                a.colour = c.spin;
+                a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
+                const int k = add(std::move(a));
+                pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
+                                   "\u03C9 = " + format_number(w) + " rad s\u207B\u00B9", {w}, c.spin, false});
             }
         }
     }
+
     // Positive directions. 1D: an arrow along +x above each moving block ("+v"), as in the
     // page's figure. 2D: one glyph in the view's lower left corner: +x, +y and the
     // counter-clockwise sense of +ω (velocities and spins are measured that way).
     std::vector<std::pair<ImVec2, std::string>> direction_labels;  // top-left, text
-    if (decor.directions && scene_.dimension == 1) {
+    std::vector<int> direction_items;
+    const auto direction_item = [&](ImVec2 a0, ImVec2 a1, std::vector<double> value) {
+        Annotation a;
+        a.kind = Mark::direction;
+        a.from = to_world(a0);
+        a.to = to_world(a1);
+        a.value = std::move(value);
+        a.colour = c.muted;
+        a.box = ImVec4(std::min(a0.x, a1.x), std::min(a0.y, a1.y), std::max(a0.x, a1.x), std::max(a0.y, a1.y));
+        return add(std::move(a));
+    };
+    if (decor.directions && dim == 1) {
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || kind(i) == Kind::none) continue;
             const BodyState& s = frame.bodies[i];
@@ -326,34 +406,61 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             const ImVec2 top = to_screen(Vec3(s.x.x(), h.y(), 0));
             const float len = style_.px(56.0f);
             const ImVec2 a0(top.x - 0.5f * len, top.y - style_.px(34.0f));
-            draw_arrow(dl, a0, a0 + ImVec2(len, 0), c.muted, style_.lw(2.0f), hl * 0.8f, hw * 0.8f);
-            pending.push_back({a0 + ImVec2(len, 0), ImVec2(1, 0), "+v", c.muted, fonts.text});
+            const int k = direction_item(a0, a0 + ImVec2(len, 0), {1.0});
+            items[static_cast<std::size_t>(k)].body = static_cast<int>(i);
+            pending.push_back({k, a0 + ImVec2(len, 0), ImVec2(1, 0), "+v", {}, c.muted, false});
         }
     }
-    if (decor.directions && scene_.dimension == 2) {
+    if (decor.directions && dim == 2) {
         const float L = style_.px(46.0f), r = style_.px(13.0f);
         const ImVec2 o(viewport_.x + style_.px(36.0f), viewport_.w - style_.px(36.0f));
-        draw_arrow(dl, o, o + ImVec2(L, 0), c.muted, style_.lw(2.0f), hl * 0.75f, hw * 0.75f);
-        draw_arrow(dl, o, o - ImVec2(0, L), c.muted, style_.lw(2.0f), hl * 0.75f, hw * 0.75f);
+        direction_items.push_back(direction_item(o, o + ImVec2(L, 0), {1.0, 0.0}));
+        direction_items.push_back(direction_item(o, o - ImVec2(0, L), {0.0, 1.0}));
         const ImVec2 arc = o + ImVec2(0.55f * L, -0.55f * L);
-        draw_curved_arrow(dl, arc, r, static_cast<float>(-0.6 * kPi), static_cast<float>(0.9 * kPi), c.muted,
-                          style_.lw(1.8f), hl * 0.6f, hw * 0.6f);
+        Annotation a;
+        a.kind = Mark::direction;
+        a.from = a.to = to_world(arc);
+        a.value = {1.0};  // counter-clockwise
+        a.sweep = 1.5 * kPi;
+        a.radius = r;
+        a.colour = c.muted;
+        a.box = ImVec4(arc.x - r, arc.y - r, arc.x + r, arc.y + r);
+        direction_items.push_back(add(std::move(a)));
         const float fh = fonts.text->FontSize;
         direction_labels.push_back({o + ImVec2(L + style_.px(6.0f), -0.5f * fh), "+x"});
         direction_labels.push_back({o + ImVec2(-0.5f * rich_text_size(fonts, fonts.text, "+y").x, -L - fh - style_.px(4.0f)), "+y"});
         direction_labels.push_back({arc + ImVec2(r + style_.px(5.0f), -r - 0.3f * fh), "+\u03C9"});
     }
-    for (const auto& [at, text] : direction_labels) {
-        draw_rich_text(dl, fonts, fonts.text, ImVec2(std::round(at.x), std::round(at.y)), c.muted, text);
-        if (labels) {
-            const ImVec2 sz = rich_text_size(fonts, fonts.text, text);
-            labels->reserve(ImVec4(at.x, at.y, at.x + sz.x, at.y + sz.y));
-        }
+    // Labels drawn where they are, without a backing.
+    const auto fixed_label = [&](int of, ImVec2 at, const std::string& text, Colour colour, bool small) {
+        ImFont* font = small ? fonts.small : fonts.text;
+        const ImVec2 size = rich_text_size(fonts, font, text);
+        Annotation a;
+        a.kind = Mark::label;
+        a.of = of;
+        a.text = text;
+        a.colour = colour;
+        a.small = small;
+        a.faint = true;  // labels: no backing
+        a.anchor = at;
+        a.from = a.to = to_world(at);
+        a.box = ImVec4(at.x, at.y, at.x + size.x, at.y + size.y);
+        if (of >= 0) a.body = items[static_cast<std::size_t>(of)].body;
+        if (labels) labels->reserve(a.box);
+        return add(std::move(a));
+    };
+    for (std::size_t k = 0; k < direction_labels.size(); ++k) {
+        const auto& [at, text] = direction_labels[k];
+        fixed_label(direction_items[k], ImVec2(std::round(at.x), std::round(at.y)), text, c.muted, false);
     }
-    dl->PopClipRect();
 
-    if (!decor.labels || !labels) return;
-    if (scene_.dimension == 1) label_axis_1d(dl, fonts, labels);
+    if (!decor.labels || !labels) return items;
+    if (dim == 1) {
+        const float y = to_screen(Vec3::Zero()).y;
+        const float x1 = viewport_.z - style_.px(8);
+        const ImVec2 size = rich_text_size(fonts, fonts.text, "+x");
+        fixed_label(-1, ImVec2(x1 - size.x, y + style_.px(6)), "+x", c.ink, false);
+    }
     pending.insert(pending.begin() + std::min<std::ptrdiff_t>(1, static_cast<std::ptrdiff_t>(pending.size())),
                    normal_labels.begin(), normal_labels.end());
     // Labels keep off the bodies where they can.
@@ -389,19 +496,128 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
         if (size.x < 0.75f * w_px && size.y < 0.4f * h_px) {
             // Below the centre marker, inside.
             const ImVec2 at(centre.x - 0.5f * size.x, centre.y + style_.lw(style_.com) + style_.px(4));
-            dl->AddText(fonts.small, fonts.small->FontSize, ImVec2(std::round(at.x), std::round(at.y)),
-                        c.ink, name.c_str());
-            labels->reserve(ImVec4(at.x, at.y, at.x + size.x, at.y + size.y));
+            fixed_label(body_item[i], ImVec2(std::round(at.x), std::round(at.y)), name, c.ink, true);
         } else {
-            pending.push_back({to_screen(Vec3(frame.bodies[i].x.x(), h.y(), 0)), ImVec2(0, -1), name,
-                               c.ink, fonts.small});
+            pending.push_back({body_item[i], to_screen(Vec3(frame.bodies[i].x.x(), h.y(), 0)), ImVec2(0, -1), name,
+                               {}, c.ink, true});
         }
     }
-    const float pad = style_.px(3.0f);
+    const float pad = style_.px(3.0f), gap = style_.px(6.0f);
     for (const Pending& p : pending) {
-        place_label(dl, fonts, labels, p.font, p.anchor, p.direction, p.text, p.colour,
-                    with_alpha(c.background, 0.85f), pad, gap);
+        Annotation a;
+        a.kind = Mark::label;
+        a.of = p.of;
+        a.body = p.of >= 0 ? items[static_cast<std::size_t>(p.of)].body : -1;
+        a.text = p.text;
+        a.value = p.value;
+        a.colour = p.colour;
+        a.small = p.small;
+        a.anchor = p.anchor;
+        a.from = a.to = to_world(p.anchor);
+        a.box = place_label_box(fonts, labels, p.small ? fonts.small : fonts.text, p.anchor, p.direction, p.text,
+                                pad, gap);
+        add(std::move(a));
     }
+    return items;
+}
+
+void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
+                       const Annotations& items) const {
+    const Palette& c = style_.colours;
+    const std::size_t n = std::min(frame.bodies.size(), scene_.bodies.size());
+    dl->PushClipRect(ImVec2(viewport_.x, viewport_.y), ImVec2(viewport_.z, viewport_.w), true);
+    draw_planes(dl);
+    if (scene_.dimension == 1) draw_axis_1d(dl);
+
+    // Trails: the path of each centre over the last moments, fading with age.
+    for (std::size_t i = 0; decor.trails && i < n && i < frame.trails.size(); ++i) {
+        const auto& trail = frame.trails[i];
+        if (scene_.bodies[i].is_static() || trail.size() < 2) continue;
+        int order = 0;
+        for (std::size_t j = 0; j < i; ++j) order += scene_.bodies[j].is_static() ? 0 : 1;
+        const double span = std::max(1e-9, trail.back().t - trail.front().t);
+        for (std::size_t k = 1; k < trail.size(); ++k) {
+            const double age = (frame.t - trail[k].t) / span;
+            const float alpha = static_cast<float>(0.55 * std::clamp(1.0 - age, 0.0, 1.0));
+            dl->AddLine(to_screen(trail[k - 1].x), to_screen(trail[k].x),
+                        with_alpha(c.darks[order % Palette::kFills], alpha), style_.lw(2.0f));
+        }
+    }
+
+    const float arrow = style_.lw(style_.arrow);
+    const float hl = style_.lw(style_.head_length), hw = style_.lw(style_.head_width);
+    bool clipped = true;
+    for (const Annotation& a : items) {
+        const ImVec2 p = to_screen(a.from), q = to_screen(a.to);
+        if (a.kind == Mark::label && clipped) {  // labels may reach past the view
+            dl->PopClipRect();
+            clipped = false;
+        }
+        switch (a.kind) {
+        case Mark::plane:
+            break;  // draw_planes
+        case Mark::body:
+            draw_body(dl, static_cast<std::size_t>(a.body), pose_state(a, scene_.dimension), a.small);
+            break;
+        case Mark::lever_arm: {
+            const ImVec2 d = unit(q - p);
+            draw_dashed_line(dl, p, q - d * style_.px(9), a.colour, style_.lw(style_.thin), style_.px(6),
+                             style_.px(4));
+            draw_arrow(dl, q - d * style_.px(11), q, a.colour, style_.lw(style_.thin), style_.lw(9), style_.lw(7));
+            break;
+        }
+        case Mark::normal: {
+            // Beside the contact point, along the tangent line through it.
+            const ImVec2 nd = unit(q - p);
+            const ImVec2 td(-nd.y, nd.x);
+            const float nl = style_.px(style_.normal_length);
+            draw_dashed_line(dl, p - td * (0.9f * nl), p + td * (0.9f * nl), with_alpha(a.colour, 0.8f),
+                             style_.lw(style_.thin), style_.px(7), style_.px(4));
+            const ImVec2 n0 = p + td * style_.px(18.0f);
+            draw_arrow(dl, n0, n0 + nd * nl, a.colour, style_.lw(2.0f), hl * 0.85f, hw * 0.85f);
+            break;
+        }
+        case Mark::impulse:
+            draw_arrow(dl, p, q, a.faint ? with_alpha(a.colour, 0.75f) : a.colour, arrow, hl, hw);
+            break;
+        case Mark::contact:
+            dl->AddCircleFilled(p, style_.px(4.5f), c.background);
+            dl->AddCircleFilled(p, style_.px(3.2f), a.colour);
+            break;
+        case Mark::velocity:
+            draw_arrow(dl, p, q, a.colour, arrow, hl, hw);
+            break;
+        case Mark::spin: {
+            // An arc centred above the body, its head in the sense of the spin.
+            const double mid = 0.5 * kPi;
+            draw_curved_arrow(dl, p, a.radius, static_cast<float>(mid - a.sweep / 2),
+                              static_cast<float>(mid + a.sweep / 2), a.colour, style_.lw(2.5f), hl * 0.85f,
+                              hw * 0.85f);
+            break;
+        }
+        case Mark::direction:
+            if (a.radius > 0) {  // the counter-clockwise arc of +ω
+                draw_curved_arrow(dl, p, a.radius, static_cast<float>(-0.6 * kPi), static_cast<float>(0.9 * kPi),
+                                  a.colour, style_.lw(1.8f), hl * 0.6f, hw * 0.6f);
+            } else {
+                const float s = scene_.dimension == 1 ? 0.8f : 0.75f;
+                draw_arrow(dl, p, q, a.colour, style_.lw(2.0f), hl * s, hw * s);
+            }
+            break;
+        case Mark::label: {
+            ImFont* font = a.small ? fonts.small : fonts.text;
+            if (a.faint) {  // where it stands, no backing
+                draw_rich_text(dl, fonts, font, ImVec2(a.box.x, a.box.y), a.colour, a.text);
+            } else {
+                const float pad = style_.px(3.0f), gap = style_.px(6.0f);
+                draw_placed_label(dl, fonts, font, a.box, a.anchor, a.text, a.colour,
+                                  with_alpha(c.background, 0.85f), pad, gap);
+            }
+            break;
+        }
+        }
+    }
+    if (clipped) dl->PopClipRect();
 }
 
 }  // namespace collide::render

@@ -11,6 +11,7 @@
 //   the impulse +P on b and -P on a at the contact point (one scale for all impulses); then the
 //   labels with values and units, placed so that they do not overlap.
 //
+// annotate() makes the list of all that (render/annotation.h) and draw() draws the list.
 // fit() frames the camera once for a whole run (so that it does not jump between frames) from
 // sampled states, and fixes the arrow scales from the largest speed, spin and impulse.
 #pragma once
@@ -21,6 +22,7 @@
 #include <imgui.h>
 
 #include "engine/scene.h"
+#include "render/annotation.h"
 #include "render/draw2d.h"
 #include "render/frame_state.h"
 #include "render/style.h"
@@ -51,11 +53,17 @@ public:
     // Leave room above the moving bodies for the positive-direction arrows (Decor::directions).
     void reserve_directions(bool on) { directions_room_ = on; }
 
+    // What draw() draws of `frame`, in drawing order, the labels placed by `labels` (which
+    // holds what the other overlays took; null: no labels).
+    Annotations annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor,
+                         LabelPlacer* labels) const;
+    // Draws the ground and walls, the trails (Decor::trails), then `items` and nothing else.
     void draw(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
-              LabelPlacer* labels) const;
+              const Annotations& items) const;
 
-    // World (m) to pixels, and pixels per metre.
+    // World (m) to pixels and back (the xy plane), and pixels per metre.
     ImVec2 to_screen(const Vec3& world) const;
+    Vec3 to_world(ImVec2 screen) const;
     float pixels_per_metre() const { return static_cast<float>(scale_); }
 
     // The legends: a round value and its arrow length in pixels (value 0: no such arrows).
@@ -86,8 +94,7 @@ private:
 
     void draw_planes(ImDrawList* dl) const;
     void draw_axis_1d(ImDrawList* dl) const;
-    void label_axis_1d(ImDrawList* dl, const FontSet& fonts, LabelPlacer* labels) const;
-    void draw_body(ImDrawList* dl, std::size_t i, const BodyState& s, const Decor& decor) const;
+    void draw_body(ImDrawList* dl, std::size_t i, const BodyState& s, bool com) const;
 
     const Scene& scene_;
     Style style_;

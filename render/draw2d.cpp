@@ -291,21 +291,33 @@ void draw_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_l
     draw_rich_text(dl, fonts, font, top_left, colour, text);
 }
 
-void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font,
-                 ImVec2 anchor, ImVec2 direction, const std::string& text, Colour colour,
-                 Colour backing, float pad, float gap) {
+ImVec4 place_label_box(const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor,
+                       ImVec2 direction, const std::string& text, float pad, float gap) {
     const ImVec2 size = rich_text_size(fonts, font, text);
     const ImVec2 box(size.x + 2 * pad, size.y + pad);
     const ImVec2 at = placer->place(anchor, box, direction, gap);
+    return ImVec4(at.x, at.y, at.x + box.x, at.y + box.y);
+}
+
+void draw_placed_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec4 box, ImVec2 anchor,
+                       const std::string& text, Colour colour, Colour backing, float pad, float gap) {
+    const float text_h = box.w - box.y - pad;
     // The nearest point of the label's box to the anchor.
-    const ImVec2 near(std::clamp(anchor.x, at.x, at.x + box.x), std::clamp(anchor.y, at.y, at.y + box.y));
+    const ImVec2 near(std::clamp(anchor.x, box.x, box.z), std::clamp(anchor.y, box.y, box.w));
     const float d = length(sub(near, anchor));
-    if (d > gap + 1.2f * size.y) {
+    if (d > gap + 1.2f * text_h) {
         const ImVec2 u = mul(sub(near, anchor), 1.0f / d);
         dl->AddLine(add(anchor, mul(u, 0.35f * gap)), sub(near, mul(u, 0.35f * gap)), with_alpha(colour, 0.55f),
-                    std::max(1.0f, 0.06f * size.y));
+                    std::max(1.0f, 0.06f * text_h));
     }
-    draw_label(dl, fonts, font, ImVec2(at.x + pad, at.y + 0.5f * pad), text, colour, backing, pad);
+    draw_label(dl, fonts, font, ImVec2(box.x + pad, box.y + 0.5f * pad), text, colour, backing, pad);
+}
+
+void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font,
+                 ImVec2 anchor, ImVec2 direction, const std::string& text, Colour colour,
+                 Colour backing, float pad, float gap) {
+    const ImVec4 box = place_label_box(fonts, placer, font, anchor, direction, text, pad, gap);
+    draw_placed_label(dl, fonts, font, box, anchor, text, colour, backing, pad, gap);
 }
 
 }  // namespace collide::render

@@ -68,8 +68,14 @@ private:
 void draw_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left,
                 const std::string& text, Colour colour, Colour backing, float pad);
 
-// Places and draws a label for `anchor` (see LabelPlacer::place); a label that had to move
-// away from its anchor gets a thin leader line back to it.
+// A label's box (pixels: x0, y0, x1, y1, its padding included) placed for `anchor` (see
+// LabelPlacer::place), and the label drawn in that box; a label that had to move away from
+// its anchor gets a thin leader line back to it.
+ImVec4 place_label_box(const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor,
+                       ImVec2 direction, const std::string& text, float pad, float gap);
+void draw_placed_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec4 box, ImVec2 anchor,
+                       const std::string& text, Colour colour, Colour backing, float pad, float gap);
+// Both at once.
 void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font,
                  ImVec2 anchor, ImVec2 direction, const std::string& text, Colour colour,
                  Colour backing, float pad, float gap);

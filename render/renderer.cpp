@@ -283,8 +283,12 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
         const ImVec2 s = formula_->size();
         labels.reserve(ImVec4(formula_at_.x, formula_at_.y, formula_at_.x + s.x, formula_at_.y + s.y));
     }
+    annotations_.clear();
     if (view3d_) view3d_->annotate(dl, fonts, frame, decor, &labels);
-    else diagram_->draw(dl, fonts, frame, decor, &labels);
+    else {
+        annotations_ = diagram_->annotate(fonts, frame, decor, &labels);
+        diagram_->draw(dl, fonts, frame, decor, annotations_);
+    }
     if (settings_.header) header_->draw(dl, fonts, header_at_, frame.t);
     if (settings_.table) table_->draw(dl, fonts, table_at_, frame);
     if (!energy_plot_->empty()) {

@@ -80,6 +80,8 @@ public:
     ImVec2 to_screen(const Vec3& world) const;
     // The 2D view (its arrow scales, its framing); null in the 3D view.
     const DiagramView* diagram() const { return view3d_ ? nullptr : diagram_.get(); }
+    // What the last render() drew in the view (the 2D diagram; the 3D view: empty for now).
+    const Annotations& annotations() const { return annotations_; }
     // Whether each glyph of `utf8` is in the label font.
     bool has_glyphs(const std::string& utf8) const;
 
@@ -102,6 +104,7 @@ private:
     ImVec2 header_at_{0, 0}, table_at_{0, 0};
     ImVec2 formula_at_{0, 0}, energy_at_{0, 0}, momentum_at_{0, 0}, timeline_at_{0, 0};
     ImVec4 view_rect_{0, 0, 0, 0};
+    Annotations annotations_;
 };
 
 // One figure of panels side by side with a caption under each (e.g. before / at collision /

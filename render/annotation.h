@@ -1,0 +1,65 @@
+// What a view draws, as a list, made before anything is drawn: the bodies at their poses, every
+// arrow with the quantity it stands for, the contact points, and the labels with the text and
+// the screen box each was given. The view then draws the list and nothing else, so that tests
+// can read a picture's meaning from it (tests/render/annotation_test.cpp) and check with a few
+// pixels that the list is what was drawn. `collide render` writes the lists of its figure's
+// three panels as annotations.json (README.md, "collide render").
+#pragma once
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include <imgui.h>
+
+#include "engine/math.h"
+#include "render/style.h"
+
+namespace collide::render {
+
+enum class Mark {
+    body,       // a body at its pose; `value` the pose (see Annotation)
+    plane,      // ground or a wall: `from` a point of its line, `value` its outward normal
+    velocity,   // v of `body`: from its centre to the arrow's tip
+    spin,       // ω of `body`: an arc about its centre, `sweep` its signed angle
+    impulse,    // the impulse on `body`: +P on b, −P on a, from the contact point
+    normal,     // n, from a into b, drawn beside the contact point
+    lever_arm,  // r of `body`: from its centre to the contact point
+    contact,    // the contact point
+    direction,  // a positive direction (+x, +y, +ω, +v), not a quantity
+    label,      // text; `of` is the item it names or gives the value of
+};
+const char* mark_name(Mark kind);
+
+struct Annotation {
+    Mark kind = Mark::label;
+    int body = -1;            // scene index of the body it shows or acts on; -1: none
+    // World (m): an arrow's tail and tip; a body's or spin's centre (both); a label's anchor,
+    // the point it belongs to (both).
+    Vec3 from = Vec3::Zero(), to = Vec3::Zero();
+    // The quantity, in SI units and the scene's dimension: velocity (m/s), spin ω (rad/s; in
+    // 2D the number about +z), impulse (N s, on `body`), normal (unit), lever arm r (m). A
+    // body's pose: 1D [x]; 2D [x, y, angle]; 3D [x, y, z, qw, qx, qy, qz]. A label: the number
+    // it prints, at full precision (empty for names).
+    std::vector<double> value;
+    std::string text;         // labels: as drawn (rich text: "r_{a}", "m s⁻¹")
+    ImVec4 box{0, 0, 0, 0};   // pixels (x0, y0, x1, y1): a label's box, an arrow's extent
+    double sweep = 0.0;       // spin: the arc's angle, radians, + counter-clockwise as seen
+    int of = -1;              // labels: the index of the item labelled; -1: none
+
+    // How it is drawn (not part of annotations.json).
+    Colour colour = 0;
+    bool small = false;        // labels: the small font
+    ImVec2 anchor{0, 0};       // labels: the point they belong to (pixels)
+    float radius = 0.0f;       // spin: the arc's radius (pixels)
+    bool faint = false;        // the reaction −P on a: drawn lighter
+};
+using Annotations = std::vector<Annotation>;
+
+// The items as JSON objects {"kind", "body", "from", "to", "value", "text", "box"} (and
+// "sweep" for spins, "of" for labels): points and vectors with `dimension` components, a
+// one-component value as a number, `body` as the body's name (null for none).
+void write_annotations_json(std::ostream& out, const Annotations& items, int dimension,
+                            const std::vector<std::string>& body_names, int indent);
+
+}  // namespace collide::render
