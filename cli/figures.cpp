@@ -122,6 +122,7 @@ std::string annotations_json(const Scene& scene, const Figure* figure) {
         return out.str();
     }
     const char* keys[3] = {"before", "at", "after"};
+    out << "  \"view\": \"" << (figure->panel.view == render::ViewKind::perspective ? "3d" : "2d") << "\",\n";
     out << "  \"panel_size\": [" << figure->panel.width << ", " << figure->panel.height << "],\n";
     out << "  \"times\": {";
     for (int k = 0; k < 3; ++k) out << (k ? ", " : "") << "\"" << keys[k] << "\": " << notation::num_data(figure->times[k]);

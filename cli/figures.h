@@ -55,7 +55,8 @@ struct VariantRow {
 // trails up to then; at the instant the impulse instead of the velocities).
 void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out);
 // annotations.json: what the figure's three panels draw (render/annotation.h), as
-//   {"dimension": D, "panel_size": [w, h], "times": {"before": t, "at": t, "after": t},
+//   {"dimension": D, "view": "2d" or "3d", "panel_size": [w, h],
+//    "times": {"before": t, "at": t, "after": t},
 //    "panels": {"before": [items], "at": [items], "after": [items]}}
 // ("panels": {} when there is no figure: `figure` null, the run has no collision).
 std::string annotations_json(const Scene& scene, const Figure* figure);

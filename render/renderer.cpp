@@ -230,42 +230,9 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
 
 void Renderer::draw(const FrameState& frame, const Decor& decor) {
     const Gl& gl = context_.gl();
-    if (view3d_ && target_->samples() > 0 && settings_.msaa_region) {
-        // The ground everywhere without MSAA; then, in the rectangle the bodies, arrows and
-        // lines cover, the ground again and those with MSAA, resolved over it. The ground's
-        // pixels are the same both ways (its shader runs once per pixel, at the centre).
-        target_->bind_resolved();
-        clear(gl, style_.colours.background);
-        view3d_->draw_ground(frame);
-        ImVec4 r;
-        if (view3d_->above_bounds(frame, decor, &r)) {
-            const int W = settings_.width, H = settings_.height;
-            const int x0 = std::clamp(static_cast<int>(std::floor(r.x)), 0, W);
-            const int x1 = std::clamp(static_cast<int>(std::ceil(r.z)), 0, W);
-            const int y0 = std::clamp(static_cast<int>(std::floor(r.y)), 0, H);
-            const int y1 = std::clamp(static_cast<int>(std::ceil(r.w)), 0, H);
-            if (x1 > x0 && y1 > y0) {
-                target_->bind();
-                gl.Enable(GL_SCISSOR_TEST);
-                gl.Scissor(x0, H - y1, x1 - x0, y1 - y0);
-                clear(gl, style_.colours.background);
-                view3d_->draw(frame, decor);
-                gl.Disable(GL_SCISSOR_TEST);
-                target_->resolve(x0, H - y1, x1 - x0, y1 - y0);
-            }
-        }
-        target_->bind_resolved();  // the overlays go on the resolved frame
-    } else {
-        target_->bind();
-        clear(gl, style_.colours.background);
-        if (view3d_) {
-            view3d_->draw(frame, decor);
-            target_->resolve();  // the overlays go on the resolved frame: see RenderTarget::resolve
-        }
-    }
-    imgui_->begin(settings_.smooth);
-    ImDrawList* dl = imgui_->draw_list();
     const FontSet& fonts = imgui_->fonts();
+    // First the list of what the view shows, its labels placed around the overlays; then the
+    // GL pass and ImGui draw it.
     LabelPlacer labels(view_rect_);
     if (settings_.header) {
         const ImVec2 s = header_->size();
@@ -283,12 +250,46 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
         const ImVec2 s = formula_->size();
         labels.reserve(ImVec4(formula_at_.x, formula_at_.y, formula_at_.x + s.x, formula_at_.y + s.y));
     }
-    annotations_.clear();
-    if (view3d_) view3d_->annotate(dl, fonts, frame, decor, &labels);
-    else {
-        annotations_ = diagram_->annotate(fonts, frame, decor, &labels);
-        diagram_->draw(dl, fonts, frame, decor, annotations_);
+    annotations_ = view3d_ ? view3d_->annotate(fonts, frame, decor, &labels)
+                           : diagram_->annotate(fonts, frame, decor, &labels);
+
+    if (view3d_ && target_->samples() > 0 && settings_.msaa_region) {
+        // The ground everywhere without MSAA; then, in the rectangle the bodies, arrows and
+        // lines cover, the ground again and those with MSAA, resolved over it. The ground's
+        // pixels are the same both ways (its shader runs once per pixel, at the centre).
+        target_->bind_resolved();
+        clear(gl, style_.colours.background);
+        view3d_->draw_ground(frame);
+        ImVec4 r;
+        if (view3d_->above_bounds(frame, decor, annotations_, &r)) {
+            const int W = settings_.width, H = settings_.height;
+            const int x0 = std::clamp(static_cast<int>(std::floor(r.x)), 0, W);
+            const int x1 = std::clamp(static_cast<int>(std::ceil(r.z)), 0, W);
+            const int y0 = std::clamp(static_cast<int>(std::floor(r.y)), 0, H);
+            const int y1 = std::clamp(static_cast<int>(std::ceil(r.w)), 0, H);
+            if (x1 > x0 && y1 > y0) {
+                target_->bind();
+                gl.Enable(GL_SCISSOR_TEST);
+                gl.Scissor(x0, H - y1, x1 - x0, y1 - y0);
+                clear(gl, style_.colours.background);
+                view3d_->draw(frame, decor, annotations_);
+                gl.Disable(GL_SCISSOR_TEST);
+                target_->resolve(x0, H - y1, x1 - x0, y1 - y0);
+            }
+        }
+        target_->bind_resolved();  // the overlays go on the resolved frame
+    } else {
+        target_->bind();
+        clear(gl, style_.colours.background);
+        if (view3d_) {
+            view3d_->draw(frame, decor, annotations_);
+            target_->resolve();  // the overlays go on the resolved frame: see RenderTarget::resolve
+        }
     }
+    imgui_->begin(settings_.smooth);
+    ImDrawList* dl = imgui_->draw_list();
+    if (view3d_) view3d_->draw_labels(dl, fonts, annotations_);
+    else diagram_->draw(dl, fonts, frame, decor, annotations_);
     if (settings_.header) header_->draw(dl, fonts, header_at_, frame.t);
     if (settings_.table) table_->draw(dl, fonts, table_at_, frame);
     if (!energy_plot_->empty()) {

@@ -80,7 +80,7 @@ public:
     ImVec2 to_screen(const Vec3& world) const;
     // The 2D view (its arrow scales, its framing); null in the 3D view.
     const DiagramView* diagram() const { return view3d_ ? nullptr : diagram_.get(); }
-    // What the last render() drew in the view (the 2D diagram; the 3D view: empty for now).
+    // What the last render() drew in the view (render/annotation.h).
     const Annotations& annotations() const { return annotations_; }
     // Whether each glyph of `utf8` is in the label font.
     bool has_glyphs(const std::string& utf8) const;

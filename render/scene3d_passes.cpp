@@ -45,13 +45,23 @@ void arrow(std::vector<MeshDraw>* out, const Vec3& p, const Vec3& d, Colour colo
 // The arrows' thickness (m).
 double thickness(const View3d& view) { return 0.03 * view.scales.unit; }
 
+// The state a body item stands for: its centre and orientation (annotation.h's pose).
+BodyState pose_of(const Annotation& a) {
+    BodyState s;
+    s.x = a.from;
+    if (a.value.size() == 7) s.q = Quat(a.value[3], a.value[4], a.value[5], a.value[6]);
+    else if (a.value.size() == 3) s.q = lift_angle(a.value[2]);
+    return s;
+}
+
 // The bodies, shaded (a sphere with wedges, so that its spin shows); static ones grey.
-void body_pass(const View3d& view, const FrameState& frame, std::size_t n, Overlay* out) {
+void body_pass(const View3d& view, const Annotations& items, Overlay* out) {
     const Palette& pal = view.style.colours;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!view.solids.bodies[i].drawn()) continue;
+    for (const Annotation& a : items) {
+        if (a.kind != Mark::body) continue;
+        const std::size_t i = static_cast<std::size_t>(a.body);
         const bool is_static = view.scene.bodies[i].is_static();
-        const BodyState& s = frame.bodies[i];
+        const BodyState s = pose_of(a);
         const Mat3f R = s.q.cast<float>().toRotationMatrix();
         Mat4f model = Mat4f::Identity();
         model.block<3, 3>(0, 0) = R;
@@ -63,28 +73,22 @@ void body_pass(const View3d& view, const FrameState& frame, std::size_t n, Overl
 }
 
 // Velocity arrows (from the surface) and spin arrows (on the axis), one scale each.
-void arrow_pass(const View3d& view, const FrameState& frame, std::size_t n, Overlay* out) {
-    const Palette& pal = view.style.colours;
-    const ArrowScales& k = view.scales;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Solid& solid = view.solids.bodies[i];
-        if (view.scene.bodies[i].is_static() || !solid.drawn()) continue;
-        const BodyState& s = frame.bodies[i];
-        arrow(&out->arrows, velocity_start(solid, s), k.k_velocity * s.v, pal.velocity, thickness(view));
-        if (shows_spin(k, s)) arrow(&out->arrows, spin_start(solid, s), k.k_spin * s.w, pal.spin, thickness(view) * 0.8);
-    }
+void arrow_pass(const View3d& view, const Annotations& items, Overlay* out) {
+    for (const Annotation& a : items)
+        if (a.kind == Mark::velocity) arrow(&out->arrows, a.from, a.to - a.from, a.colour, thickness(view));
+        else if (a.kind == Mark::spin) arrow(&out->arrows, a.from, a.to - a.from, a.colour, thickness(view) * 0.8);
 }
 
 // Outlines: box and prism edges, and the silhouettes of spheres and cylinders as seen from the
 // eye.
-void outline_pass(const View3d& view, const FrameState& frame, std::size_t n, Overlay* out) {
+void outline_pass(const View3d& view, const Annotations& items, Overlay* out) {
     const Palette& pal = view.style.colours;
     const float outline = view.style.lw(view.style.outline);
     std::vector<Segment>& lines = out->lines;
-    for (std::size_t i = 0; i < n; ++i) {
-        const Solid& solid = view.solids.bodies[i];
-        if (!solid.drawn()) continue;
-        const BodyState& s = frame.bodies[i];
+    for (const Annotation& item : items) {
+        if (item.kind != Mark::body) continue;
+        const Solid& solid = view.solids.bodies[static_cast<std::size_t>(item.body)];
+        const BodyState s = pose_of(item);
         for (const auto& [a, b] : solid.edges)
             lines.push_back({s.x + s.q * a.cast<double>(), s.x + s.q * b.cast<double>(), pal.ink, outline});
         const Vec3 to_eye = view.camera.eye().cast<double>() - s.x;
@@ -146,15 +150,13 @@ void trail_pass(const View3d& view, const FrameState& frame, std::size_t n, Over
 
 // Spin curls: three quarters of a circle of radius 0.22 units around the spin arrow, near its
 // tip, in the plane of e1, e2 (counter-clockwise about the arrow), with a small shaded head.
-void curl_pass(const View3d& view, const FrameState& frame, std::size_t n, Overlay* out) {
-    const Palette& pal = view.style.colours;
+void curl_pass(const View3d& view, const Annotations& items, Overlay* out) {
     const ArrowScales& k = view.scales;
-    for (std::size_t i = 0; i < n; ++i) {
-        const BodyState& s = frame.bodies[i];
-        if (view.scene.bodies[i].is_static() || !shows_spin(k, s)) continue;
+    for (const Annotation& a : items) {
+        if (a.kind != Mark::spin) continue;
         // Centred on the spin arrow, 0.6 of the way from its start to its tip.
-        const Vec3 axis = s.w.normalized();
-        const Vec3 centre = s.x + axis * (0.5 * view.solids.bodies[i].size * 0.9 + 0.6 * k.k_spin * s.w.norm());
+        const Vec3 axis = (a.to - a.from).normalized();
+        const Vec3 centre = a.from + 0.6 * (a.to - a.from);
         Vec3 e1 = axis.cross(Vec3::UnitY());
         if (e1.norm() < 1e-6) e1 = axis.cross(Vec3::UnitX());
         e1.normalize();
@@ -162,37 +164,34 @@ void curl_pass(const View3d& view, const FrameState& frame, std::size_t n, Overl
         const double rc = 0.22 * k.unit;
         const int segs = 40;
         for (int j = 0; j < segs; ++j) {
-            const double a0 = 1.5 * kPi * j / segs, a1 = 1.5 * kPi * (j + 1) / segs;
+            const double a0 = a.sweep * j / segs, a1 = a.sweep * (j + 1) / segs;
             out->lines.push_back({centre + rc * (std::cos(a0) * e1 + std::sin(a0) * e2),
-                                  centre + rc * (std::cos(a1) * e1 + std::sin(a1) * e2), pal.spin,
+                                  centre + rc * (std::cos(a1) * e1 + std::sin(a1) * e2), a.colour,
                                   view.style.lw(2.5f)});
         }
-        const double a = 1.5 * kPi;
-        const Vec3 end = centre + rc * (std::cos(a) * e1 + std::sin(a) * e2);
-        const Vec3 tangent = (-std::sin(a) * e1 + std::cos(a) * e2);
-        arrow(&out->curl_heads, end - tangent * (0.12 * k.unit), tangent * (0.16 * k.unit), pal.spin,
+        const double end_angle = a.sweep;
+        const Vec3 end = centre + rc * (std::cos(end_angle) * e1 + std::sin(end_angle) * e2);
+        const Vec3 tangent = (a.sweep > 0 ? 1.0 : -1.0) * (-std::sin(end_angle) * e1 + std::cos(end_angle) * e2);
+        arrow(&out->curl_heads, end - tangent * (0.12 * k.unit), tangent * (0.16 * k.unit), a.colour,
               thickness(view) * 0.6);
     }
 }
 
 // At a collision, over everything (they start inside the bodies): the r vectors, the normal
-// (0.75 units and a head), the impulse +P on b and -P on a when a moves.
-void impact_pass(const View3d& view, const FrameState& frame, std::size_t n, Overlay* out) {
-    const Palette& pal = view.style.colours;
-    const double unit = view.scales.unit;
-    for (const ImpactMark& im : frame.impacts) {
-        for (std::size_t i : {im.a, im.b})
-            if (i < n && view.solids.bodies[i].drawn())
-                out->impact_lines.push_back({frame.bodies[i].x, im.point, with_alpha(pal.lever, 0.9f),
-                                             view.style.lw(view.style.thin)});
-        out->impact_lines.push_back({im.point, im.point + 0.75 * unit * im.normal, pal.normal, view.style.lw(2.0f)});
+// (a line for its first 0.75 units and a head), the impulse +P on b and -P on a when a moves.
+void impact_pass(const View3d& view, const Annotations& items, Overlay* out) {
+    for (const Annotation& a : items) {
+        if (a.kind == Mark::lever_arm)
+            out->impact_lines.push_back({a.from, a.to, with_alpha(a.colour, 0.9f), view.style.lw(view.style.thin)});
+        else if (a.kind == Mark::normal)
+            out->impact_lines.push_back({a.from, a.from + (0.75 / 0.95) * (a.to - a.from), a.colour, view.style.lw(2.0f)});
     }
-    for (const ImpactMark& im : frame.impacts) {
-        arrow(&out->impact_arrows, im.point, view.scales.k_impulse * im.impulse, pal.impulse, thickness(view) * 1.2);
-        if (im.a < n && !view.scene.bodies[im.a].is_static())
-            arrow(&out->impact_arrows, im.point, -view.scales.k_impulse * im.impulse, pal.impulse, thickness(view));
-        arrow(&out->impact_arrows, im.point + 0.75 * unit * im.normal, 0.2 * unit * im.normal, pal.normal,
-              thickness(view) * 0.6);
+    for (const Annotation& a : items) {
+        if (a.kind == Mark::impulse)
+            arrow(&out->impact_arrows, a.from, a.to - a.from, a.colour, thickness(view) * (a.faint ? 1.0 : 1.2));
+        else if (a.kind == Mark::normal)
+            arrow(&out->impact_arrows, a.from + (0.75 / 0.95) * (a.to - a.from), (0.2 / 0.95) * (a.to - a.from),
+                  a.colour, thickness(view) * 0.6);
     }
 }
 
@@ -260,15 +259,87 @@ std::vector<Shadow> shadows(const View3d& view, const Ground& ground, const Fram
     return out;
 }
 
-Overlay overlay(const View3d& view, const FrameState& frame, const Decor& decor) {
+Annotations annotations3d(const View3d& view, const FrameState& frame, const Decor& decor) {
+    const Palette& pal = view.style.colours;
+    const ArrowScales& k = view.scales;
+    const double unit = k.unit;
+    const int dim = view.scene.dimension;
+    const std::size_t n = std::min(frame.bodies.size(), view.scene.bodies.size());
+    Annotations items;
+    // A vector in the scene's dimension (a 2D scene's spin: its number about +z).
+    const auto value = [dim](const Vec3& v) {
+        std::vector<double> out;
+        for (int c = 0; c < dim; ++c) out.push_back(v[c]);
+        return out;
+    };
+    const auto item = [&](Mark kind, int body, const Vec3& from, const Vec3& to, std::vector<double> v,
+                          Colour colour) -> Annotation& {
+        Annotation a;
+        a.kind = kind;
+        a.body = body;
+        a.from = from;
+        a.to = to;
+        a.value = std::move(v);
+        a.colour = colour;
+        items.push_back(std::move(a));
+        return items.back();
+    };
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!view.solids.bodies[i].drawn()) continue;
+        const BodyState& s = frame.bodies[i];
+        std::vector<double> pose = value(s.x);
+        if (dim == 2) pose.push_back(s.angle);
+        if (dim == 3) pose.insert(pose.end(), {s.q.w(), s.q.x(), s.q.y(), s.q.z()});
+        item(Mark::body, static_cast<int>(i), s.x, s.x, pose, 0).small = decor.com;
+    }
+    if (decor.impacts)
+        for (const ImpactMark& im : frame.impacts) {
+            const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
+            for (const auto& [i, name] : ends)
+                if (i < n && view.solids.bodies[i].drawn())
+                    item(Mark::lever_arm, static_cast<int>(i), frame.bodies[i].x, im.point,
+                         value(im.point - frame.bodies[i].x), pal.lever)
+                        .text = name;
+            const Vec3 nu = im.normal.normalized();
+            item(Mark::normal, -1, im.point, im.point + 0.95 * unit * nu, value(nu), pal.normal);
+            item(Mark::impulse, static_cast<int>(im.b), im.point, im.point + k.k_impulse * im.impulse,
+                 value(im.impulse), pal.impulse);
+            if (im.a < n && !view.scene.bodies[im.a].is_static())
+                item(Mark::impulse, static_cast<int>(im.a), im.point, im.point - k.k_impulse * im.impulse,
+                     value(-im.impulse), pal.impulse)
+                    .faint = true;
+            item(Mark::contact, -1, im.point, im.point, value(im.point), pal.impulse);
+        }
+    if (decor.velocities)
+        for (std::size_t i = 0; i < n; ++i) {
+            const Solid& solid = view.solids.bodies[i];
+            if (view.scene.bodies[i].is_static() || !solid.drawn()) continue;
+            const BodyState& s = frame.bodies[i];
+            if (s.v.norm() * k.k_velocity > 1e-3 * unit) {
+                const Vec3 start = velocity_start(solid, s);
+                item(Mark::velocity, static_cast<int>(i), start, start + k.k_velocity * s.v, value(s.v), pal.velocity);
+            }
+            if (shows_spin(k, s)) {
+                const Vec3 start = spin_start(solid, s);
+                // An arrow along w and a curl three quarters round it, counter-clockwise seen
+                // from its tip (the right-hand rule).
+                Annotation& a = item(Mark::spin, static_cast<int>(i), start, start + k.k_spin * s.w,
+                                     dim == 3 ? value(s.w) : std::vector<double>{s.w.z()}, pal.spin);
+                a.sweep = 1.5 * kPi;
+            }
+        }
+    return items;
+}
+
+Overlay overlay(const View3d& view, const FrameState& frame, const Decor& decor, const Annotations& items) {
     Overlay out;
     const std::size_t n = std::min(frame.bodies.size(), view.scene.bodies.size());
-    body_pass(view, frame, n, &out);
-    if (decor.velocities) arrow_pass(view, frame, n, &out);
-    outline_pass(view, frame, n, &out);
+    body_pass(view, items, &out);
+    arrow_pass(view, items, &out);
+    outline_pass(view, items, &out);
     if (decor.trails) trail_pass(view, frame, n, &out);
-    if (decor.velocities) curl_pass(view, frame, n, &out);
-    if (decor.impacts) impact_pass(view, frame, n, &out);
+    curl_pass(view, items, &out);
+    impact_pass(view, items, &out);
     return out;
 }
 

@@ -17,6 +17,7 @@
 #include "render/batch3d.h"
 #include "render/camera.h"
 #include "render/diagram_view.h"  // Decor
+#include "render/annotation.h"
 #include "render/frame_state.h"
 #include "render/solid.h"
 #include "render/style.h"
@@ -70,7 +71,13 @@ struct Overlay {
     std::vector<Segment> impact_lines;    // r vectors and normals: over everything
     std::vector<MeshDraw> impact_arrows;  // impulses and the normals' heads: over everything
 };
-Overlay overlay(const View3d& view, const FrameState& frame, const Decor& decor);
+// What the 3D view shows of a frame, as annotation items (render/annotation.h; no labels):
+// the bodies, velocity arrows from the surface, spin arrows on the axis with their curl (sweep
+// 3/4 turn: counter-clockwise seen from the tip), and at a collision the r vectors, the normal
+// (0.95 units from the contact point), +P on b and -P on a, the contact point.
+Annotations annotations3d(const View3d& view, const FrameState& frame, const Decor& decor);
+// The geometry that draws `items` (and the trails of `frame`, Decor::trails).
+Overlay overlay(const View3d& view, const FrameState& frame, const Decor& decor, const Annotations& items);
 
 // The screen rectangle the overlay can touch (pixels, top-left origin, x0 <= x1, y0 <= y1, not
 // clipped to the frame): each mesh's bounding box and each line's ends, with a margin of 2

@@ -15,6 +15,16 @@
 
 namespace collide::render {
 
+namespace {
+
+double norm_of(const std::vector<double>& v) {
+    double s = 0;
+    for (double x : v) s += x * x;
+    return std::sqrt(s);
+}
+
+}  // namespace
+
 struct Scene3dView::Impl {
     const Scene& scene;
     Style style;
@@ -170,14 +180,15 @@ double Scene3dView::pixels_per_metre() const {
 DiagramView::Legend Scene3dView::velocity_legend() const { return impl_->legend_for(impl_->scales.k_velocity); }
 DiagramView::Legend Scene3dView::impulse_legend() const { return impl_->legend_for(impl_->scales.k_impulse); }
 
-void Scene3dView::draw(const FrameState& frame, const Decor& decor) {
+void Scene3dView::draw(const FrameState& frame, const Decor& decor, const Annotations& items) {
     draw_ground(frame);
-    draw_above(frame, decor);
+    draw_above(frame, decor, items);
 }
 
-bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect) {
+bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, const Annotations& items,
+                               ImVec4* rect) {
     const Impl& I = *impl_;
-    return overlay_bounds(overlay(I.view(), frame, decor), I.camera, I.mesh_bounds, rect);
+    return overlay_bounds(overlay(I.view(), frame, decor, items), I.camera, I.mesh_bounds, rect);
 }
 
 void Scene3dView::draw_ground(const FrameState& frame) {
@@ -187,9 +198,9 @@ void Scene3dView::draw_ground(const FrameState& frame) {
     I.batch.end("drawing the 3D view's ground");
 }
 
-void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
+void Scene3dView::draw_above(const FrameState& frame, const Decor& decor, const Annotations& items) {
     Impl& I = *impl_;
-    const Overlay o = overlay(I.view(), frame, decor);
+    const Overlay o = overlay(I.view(), frame, decor, items);
     Batch3d& b = I.batch;
     b.begin();
     b.meshes(o.bodies, MeshDepth::behind_lines);
@@ -201,19 +212,102 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor) {
     b.end("drawing the 3D view");
 }
 
-void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame,
-                           const Decor& decor, LabelPlacer* labels) const {
+Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor,
+                                  LabelPlacer* labels) const {
     const Impl& I = *impl_;
     const Camera& cam = I.camera;
-    const ArrowScales& k = I.scales;
     const Palette& c = I.style.colours;
+    Annotations items = annotations3d(I.view(), frame, decor);
+    if (!decor.labels || !labels) return items;
     const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
+    for (std::size_t i = 0; i < n; ++i)
+        if (I.solids.bodies[i].drawn()) labels->avoid(I.screen_outline(i, frame.bodies[i]));
+    struct Pending {
+        int of;
+        ImVec2 anchor, direction;
+        std::string text;
+        std::vector<double> value;
+        Colour colour;
+        bool small;
+    };
+    std::vector<Pending> pending;
+    const auto screen = [&cam](const Vec3& p) { return cam.project(p); };
+    const auto toward = [](ImVec2 from, ImVec2 to) { return ImVec2(to.x - from.x, to.y - from.y); };
+    // Impacts first (each impulse, its normal, its r vectors), then velocities and spins, then
+    // the names, as before the list existed.
+    std::vector<Pending> impacts, motion;
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        const Annotation& a = items[k];
+        const int of = static_cast<int>(k);
+        const ImVec2 p = screen(a.from), tip = screen(a.to);
+        switch (a.kind) {
+        case Mark::impulse:
+            if (!a.faint) {
+                const double P = norm_of(a.value);
+                impacts.push_back({of, tip, toward(p, tip), "P = " + format_number(P) + " N s", {P}, c.impulse, false});
+            }
+            break;
+        case Mark::normal:
+            impacts.push_back({of, tip, toward(p, tip), "n", {}, c.normal, false});
+            break;
+        case Mark::lever_arm:
+            impacts.push_back({of, ImVec2(0.5f * (p.x + tip.x), 0.5f * (p.y + tip.y)),
+                               ImVec2(-(tip.y - p.y), tip.x - p.x), a.text, {}, c.lever, false});
+            break;
+        case Mark::velocity: {
+            const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
+            const double v = norm_of(a.value);
+            motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m s\u207B\u00B9", {v},
+                              c.velocity, false});
+            break;
+        }
+        case Mark::spin: {
+            const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
+            const double w = norm_of(a.value);
+            motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad s\u207B\u00B9", {w},
+                              c.spin, false});
+            break;
+        }
+        default:
+            break;
+        }
+    }
+    pending = impacts;
+    pending.insert(pending.end(), motion.begin(), motion.end());
+    for (std::size_t k = 0; k < items.size(); ++k) {
+        const Annotation& a = items[k];
+        if (a.kind != Mark::body) continue;
+        const std::size_t i = static_cast<std::size_t>(a.body);
+        const ImVec2 top = cam.project(a.from + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
+        pending.push_back({static_cast<int>(k), top, ImVec2(0, -1), I.scene.bodies[i].name, {}, c.ink, true});
+    }
+    const float pad = I.style.px(3.0f), gap = I.style.px(6.0f);
+    for (const Pending& p : pending) {
+        if (p.text.empty()) continue;
+        Annotation a;
+        a.kind = Mark::label;
+        a.of = p.of;
+        a.body = items[static_cast<std::size_t>(p.of)].body;
+        a.text = p.text;
+        a.value = p.value;
+        a.colour = p.colour;
+        a.small = p.small;
+        a.anchor = p.anchor;
+        a.box = place_label_box(fonts, labels, p.small ? fonts.small : fonts.text, p.anchor, p.direction, p.text,
+                                pad, gap);
+        items.push_back(std::move(a));
+    }
+    return items;
+}
+
+void Scene3dView::draw_labels(ImDrawList* dl, const FontSet& fonts, const Annotations& items) const {
+    const Impl& I = *impl_;
+    const Camera& cam = I.camera;
+    const Palette& c = I.style.colours;
     // Centre-of-mass markers, seen through the bodies.
-    if (decor.com)
-        for (std::size_t i = 0; i < n; ++i)
-            if (!I.scene.bodies[i].is_static() && I.solids.bodies[i].drawn())
-                draw_com_marker(dl, cam.project(frame.bodies[i].x), I.style.lw(I.style.com * 0.85f), c.ink,
-                                c.background, 0.0f);
+    for (const Annotation& a : items)
+        if (a.kind == Mark::body && a.small && !I.scene.bodies[static_cast<std::size_t>(a.body)].is_static())
+            draw_com_marker(dl, cam.project(a.from), I.style.lw(I.style.com * 0.85f), c.ink, c.background, 0.0f);
     // Axes: where x, y and z point, in the view's lower left corner.
     {
         const ImVec4& vp = cam.viewport();
@@ -234,59 +328,11 @@ void Scene3dView::annotate(ImDrawList* dl, const FontSet& fonts, const FrameStat
                         axis_colours[a], names[a]);
         }
     }
-    if (!decor.labels || !labels) return;
-    for (std::size_t i = 0; i < n; ++i)
-        if (I.solids.bodies[i].drawn()) labels->avoid(I.screen_outline(i, frame.bodies[i]));
-    struct Pending {
-        ImVec2 anchor, direction;
-        std::string text;
-        Colour colour;
-        ImFont* font;
-    };
-    std::vector<Pending> pending;
-    if (decor.impacts)
-        for (const ImpactMark& im : frame.impacts) {
-            const ImVec2 p = cam.project(im.point);
-            const ImVec2 tip = cam.project(im.point + k.k_impulse * im.impulse);
-            pending.push_back({tip, ImVec2(tip.x - p.x, tip.y - p.y),
-                               "P = " + format_number(im.impulse.norm()) + " N s", c.impulse, fonts.text});
-            const ImVec2 nt = cam.project(im.point + 0.95 * k.unit * im.normal);
-            pending.push_back({nt, ImVec2(nt.x - p.x, nt.y - p.y), "n", c.normal, fonts.text});
-            const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
-            for (const auto& [i, name] : ends) {
-                if (i >= n || !I.solids.bodies[i].drawn()) continue;
-                const ImVec2 from = cam.project(frame.bodies[i].x);
-                pending.push_back({ImVec2(0.5f * (from.x + p.x), 0.5f * (from.y + p.y)),
-                                   ImVec2(-(p.y - from.y), p.x - from.x), name, c.lever, fonts.text});
-            }
-        }
-    if (decor.velocities)
-        for (std::size_t i = 0; i < n; ++i) {
-            const Solid& solid = I.solids.bodies[i];
-            if (I.scene.bodies[i].is_static() || !solid.drawn()) continue;
-            const BodyState& s = frame.bodies[i];
-            const ImVec2 from = cam.project(s.x);
-            if (s.v.norm() * k.k_velocity > 1e-3 * k.unit) {
-                const ImVec2 tip = cam.project(velocity_start(solid, s) + k.k_velocity * s.v);
-                pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
-                                   "v = " + format_number(s.v.norm()) + " m s\u207B\u00B9", c.velocity, fonts.text});
-            }
-            if (shows_spin(k, s)) {
-                const ImVec2 tip = cam.project(spin_start(solid, s) + k.k_spin * s.w);
-                pending.push_back({tip, ImVec2(tip.x - from.x, tip.y - from.y),
-                                   "\u03C9 = " + format_number(s.w.norm()) + " rad s\u207B\u00B9", c.spin, fonts.text});
-            }
-        }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!I.solids.bodies[i].drawn()) continue;
-        const ImVec2 top = cam.project(frame.bodies[i].x + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
-        pending.push_back({top, ImVec2(0, -1), I.scene.bodies[i].name, c.ink, fonts.small});
-    }
-    const float pad = I.style.px(3.0f);
-    for (const Pending& p : pending) {
-        place_label(dl, fonts, labels, p.font, p.anchor, p.direction, p.text, p.colour,
-                    with_alpha(c.background, 0.85f), pad, I.style.px(6.0f));
-    }
+    const float pad = I.style.px(3.0f), gap = I.style.px(6.0f);
+    for (const Annotation& a : items)
+        if (a.kind == Mark::label)
+            draw_placed_label(dl, fonts, a.small ? fonts.small : fonts.text, a.box, a.anchor, a.text, a.colour,
+                              with_alpha(c.background, 0.85f), pad, gap);
 }
 
 }  // namespace collide::render

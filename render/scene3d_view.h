@@ -40,21 +40,24 @@ public:
     void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
              ImVec4 viewport, int frame_width, int frame_height);
     void set_camera(const CameraRequest& camera) { camera_ = camera; }
+    // What a frame shows (render/annotation.h), its labels placed by `labels` (null: none).
+    // Made first: the GL pass and the labels draw this list.
+    Annotations annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor,
+                         LabelPlacer* labels) const;
     // The GL pass (the render target is bound, colour and depth cleared): draw_ground() (the
-    // ground, its grid and the shadows) then draw_above() (bodies, arrows, outlines, trails,
-    // the collision's vectors).
-    void draw(const FrameState& frame, const Decor& decor);
+    // ground, its grid and the shadows) then draw_above() (the items' bodies, arrows, outlines
+    // and the collision's vectors; the trails of `frame`).
+    void draw(const FrameState& frame, const Decor& decor, const Annotations& items);
     void draw_ground(const FrameState& frame);
-    void draw_above(const FrameState& frame, const Decor& decor);
+    void draw_above(const FrameState& frame, const Decor& decor, const Annotations& items);
     // The screen rectangle draw_above() can touch (pixels, top-left origin, x0 <= x1, y0 <= y1,
     // not clipped to the frame), measured on the geometry it would draw; false when it draws
     // nothing. The multisampled render draws the frame's ground without MSAA and only this
     // rectangle with it (the ground's interior pixels are the same either way), which makes
     // anti-aliasing cost what the bodies cover.
-    bool above_bounds(const FrameState& frame, const Decor& decor, ImVec4* rect);
-    // Labels through ImGui, after draw().
-    void annotate(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
-                  LabelPlacer* labels) const;
+    bool above_bounds(const FrameState& frame, const Decor& decor, const Annotations& items, ImVec4* rect);
+    // Through ImGui, after draw(): the centre-of-mass markers, the axes glyph and the labels.
+    void draw_labels(ImDrawList* dl, const FontSet& fonts, const Annotations& items) const;
 
     ImVec2 to_screen(const Vec3& world) const;  // pixels, top-left origin
     double pixels_per_metre() const;            // across the view, at the scene's centre

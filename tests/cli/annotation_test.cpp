@@ -1,0 +1,326 @@
+// What students see, read from annotations.json (render/annotation.h) for every bundled lesson
+// and checked against the run's events.csv and against geometry: the collision panel draws
+// +P on b and -P on a at the contact point, n from a into b, the lever arms from each centre
+// to the contact point; every arrow points along the quantity it stands for; every spin arc
+// turns in the sense of w; every label's number is its quantity at the precision shown; no
+// two labels overlap.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "cli/render_cmd.h"
+#include "tests/render/test_util.h"
+
+namespace collide {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+// events.csv, by column name (the values as the file prints them: 10 significant digits).
+struct EventRow {
+    std::map<std::string, std::string> text;
+    double num(const std::string& column) const { return std::stod(text.at(column)); }
+};
+
+std::vector<EventRow> read_events(const std::string& path) {
+    std::ifstream in(path);
+    std::string line;
+    std::vector<std::string> header;
+    std::vector<EventRow> rows;
+    const auto split = [](const std::string& s) {
+        std::vector<std::string> cells;
+        std::stringstream ss(s);
+        for (std::string cell; std::getline(ss, cell, ',');) cells.push_back(cell);
+        return cells;
+    };
+    if (std::getline(in, line)) header = split(line);
+    while (std::getline(in, line)) {
+        const std::vector<std::string> cells = split(line);
+        EventRow row;
+        for (std::size_t k = 0; k < header.size() && k < cells.size(); ++k) row.text[header[k]] = cells[k];
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+// A point or vector of annotations.json (an array of D numbers; a number in 1D values).
+std::vector<double> vec(const json& j) {
+    if (j.is_number()) return {j.get<double>()};
+    std::vector<double> v;
+    for (const json& x : j) v.push_back(x.get<double>());
+    return v;
+}
+
+// events.csv's vector `name` in `dimension` components ("point.x", ...; 1D: "point").
+std::vector<double> event_vec(const EventRow& e, const std::string& name, int dimension) {
+    if (dimension == 1) return {e.num(name)};
+    const char* axes[3] = {".x", ".y", ".z"};
+    std::vector<double> v;
+    for (int k = 0; k < dimension; ++k) v.push_back(e.num(name + axes[k]));
+    return v;
+}
+
+double dot(const std::vector<double>& a, const std::vector<double>& b) {
+    double s = 0;
+    for (std::size_t k = 0; k < a.size() && k < b.size(); ++k) s += a[k] * b[k];
+    return s;
+}
+double norm(const std::vector<double>& a) { return std::sqrt(dot(a, a)); }
+std::vector<double> minus(const std::vector<double>& a, const std::vector<double>& b) {
+    std::vector<double> d(a.size());
+    for (std::size_t k = 0; k < a.size(); ++k) d[k] = a[k] - b[k];
+    return d;
+}
+
+// events.csv prints 10 significant digits: values agree to that, relative to their scale.
+bool same(const std::vector<double>& a, const std::vector<double>& b, double scale) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t k = 0; k < a.size(); ++k)
+        if (std::abs(a[k] - b[k]) > 1e-9 * std::max(scale, 1e-3)) return false;
+    return true;
+}
+
+// Whether `d` points along `v` (same sense; parallel to 1e-6 of their lengths).
+bool along(const std::vector<double>& d, const std::vector<double>& v) {
+    const double nd = norm(d), nv = norm(v);
+    if (nd == 0 || nv == 0) return false;
+    return dot(d, v) / (nd * nv) > 1.0 - 1e-6;
+}
+
+// The number a label prints after "= ": "1.50", "−1.20" (U+2212), "2.42×10⁻⁵"; NaN when
+// there is none. Read here independently of the renderer's formatting.
+double label_number(const std::string& text, int* significant) {
+    std::size_t at = text.find("= ");
+    if (at == std::string::npos) return std::nan("");
+    at += 2;
+    double sign = 1.0;
+    const std::string minus_sign = "\u2212";
+    if (text.compare(at, minus_sign.size(), minus_sign) == 0) {
+        sign = -1.0;
+        at += minus_sign.size();
+    } else if (text[at] == '-') {
+        return std::nan("");  // a hyphen is not the minus sign labels use
+    }
+    std::size_t end = at;
+    int digits = 0;
+    bool leading = true;
+    while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) || text[end] == '.')) {
+        if (text[end] != '.') {
+            if (text[end] != '0') leading = false;
+            if (!leading) ++digits;
+        }
+        ++end;
+    }
+    if (end == at) return std::nan("");
+    double x = std::stod(text.substr(at, end - at));
+    const std::string times10 = "\u00D710";
+    if (text.compare(end, times10.size(), times10) == 0) {
+        std::size_t p = end + times10.size();
+        static const std::vector<std::string> sup = {"\u2070", "\u00B9", "\u00B2", "\u00B3", "\u2074",
+                                                     "\u2075", "\u2076", "\u2077", "\u2078", "\u2079"};
+        int e = 0, e_sign = 1;
+        if (text.compare(p, 3, "\u207B") == 0) {
+            e_sign = -1;
+            p += 3;
+        }
+        for (bool more = true; more;) {
+            more = false;
+            for (int d = 0; d < 10; ++d)
+                if (text.compare(p, sup[static_cast<std::size_t>(d)].size(), sup[static_cast<std::size_t>(d)]) == 0) {
+                    e = 10 * e + d;
+                    p += sup[static_cast<std::size_t>(d)].size();
+                    more = true;
+                    break;
+                }
+        }
+        x *= std::pow(10.0, e_sign * e);
+    }
+    if (significant) *significant = digits;
+    return sign * x;
+}
+
+// The number a label should print for the item it labels (render/annotation.h). The 2D
+// diagram: in 1D the signed velocity or impulse along +x, else the magnitude of its front view
+// (x, y); a spin's w about +z. The 3D view: magnitudes.
+double labelled_quantity(const json& item, int dimension, bool three_d) {
+    const std::vector<double> v = vec(item["value"]);
+    const std::string kind = item["kind"];
+    if (three_d) return norm(v);
+    if (kind == "spin") return v.size() == 3 ? v[2] : v[0];
+    if (dimension == 1) return v[0];
+    return std::hypot(v[0], v[1]);
+}
+
+struct Lesson {
+    std::string id;
+    std::string path;
+};
+
+std::vector<Lesson> bundled_lessons() {
+    std::vector<Lesson> out;
+    for (const auto& e : fs::directory_iterator(fs::path(COLLIDE_SOURCE_DIR) / "lessons"))
+        if (e.path().extension() == ".toml") out.push_back({e.path().stem().string(), e.path().string()});
+    std::sort(out.begin(), out.end(), [](const Lesson& a, const Lesson& b) { return a.id < b.id; });
+    return out;
+}
+
+void PrintTo(const Lesson& lesson, std::ostream* os) { *os << lesson.id; }
+
+class LessonFigure : public ::testing::TestWithParam<Lesson> {};
+
+TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
+    render::test::TempDir dir;
+    RenderOptions o;
+    o.scenario = GetParam().path;
+    o.out_dir = dir / "out";
+    // The default size: the figure students see (smaller frames crowd the labels).
+    o.fps = 2;  // few frames: the figure is what is checked
+    o.quiet = true;
+    std::ostringstream out, err;
+    ASSERT_EQ(run_render(o, out, err), 0) << err.str();
+
+    std::ifstream in(dir / "out/annotations.json");
+    ASSERT_TRUE(in) << "no annotations.json";
+    const json doc = json::parse(in);
+    const int dim = doc["dimension"];
+    const bool three_d = doc["view"] == "3d";
+    const std::vector<EventRow> events = read_events(dir / "out/events.csv");
+    ASSERT_FALSE(events.empty()) << "every bundled lesson has a collision";
+    ASSERT_TRUE(doc["panels"].contains("at"));
+
+    // The collision panel is the first collision's instant.
+    const double t_at = doc["times"]["at"];
+    EXPECT_NEAR(t_at, events.front().num("t"), 1e-9 * std::max(1.0, t_at));
+    std::vector<const EventRow*> now;  // the events of that instant
+    for (const EventRow& e : events)
+        if (std::abs(e.num("t") - t_at) <= 1e-9 * std::max(1.0, t_at)) now.push_back(&e);
+
+    int impulses_on_b = 0;
+    for (const char* panel : {"before", "at", "after"}) {
+        SCOPED_TRACE(panel);
+        const json& items = doc["panels"][panel];
+        std::map<std::string, std::vector<double>> centre;  // body name -> drawn centre
+        for (const json& it : items)
+            if (it["kind"] == "body") centre[it["body"]] = vec(it["from"]);
+        std::vector<std::vector<double>> contacts;
+        for (const json& it : items)
+            if (it["kind"] == "contact") contacts.push_back(vec(it["from"]));
+
+        for (const json& it : items) {
+            const std::string kind = it["kind"];
+            SCOPED_TRACE(it.dump());
+            const std::vector<double> from = vec(it["from"]), to = vec(it["to"]);
+            if (kind == "impulse") {
+                ASSERT_EQ(std::string(panel), "at") << "impulses are drawn at the collision only";
+                // +P on b, -P on a, from the contact point, each matching an event of the instant.
+                const std::string body = it["body"];
+                const std::vector<double> P = vec(it["value"]);
+                bool found = false;
+                for (const EventRow* e : now) {
+                    const std::vector<double> Pe = event_vec(*e, "impulse", dim);
+                    const std::vector<double> p = event_vec(*e, "point", dim);
+                    std::vector<double> minusPe = Pe;
+                    for (double& x : minusPe) x = -x;
+                    const double scale = norm(Pe);
+                    if (!same(from, p, std::max(1.0, norm(p)))) continue;
+                    if (body == e->text.at("b") && same(P, Pe, scale)) {
+                        found = true;
+                        ++impulses_on_b;
+                    }
+                    if (body == e->text.at("a") && same(P, minusPe, scale)) found = true;
+                }
+                EXPECT_TRUE(found) << "an impulse arrow that is no event's +P on b or -P on a";
+                EXPECT_TRUE(along(minus(to, from), P)) << "the impulse arrow points against its value";
+            } else if (kind == "normal") {
+                const std::vector<double> n = vec(it["value"]);
+                EXPECT_NEAR(norm(n), 1.0, 1e-12);
+                bool found = false;
+                for (const EventRow* e : now) {
+                    if (!same(n, event_vec(*e, "normal", dim), 1.0)) continue;
+                    found = true;
+                    // From a into b: b's centre lies on the +n side of the contact point, a's on
+                    // the -n side (convex bodies; ground and walls have no centre drawn).
+                    const std::vector<double> p = event_vec(*e, "point", dim);
+                    if (centre.count(e->text.at("b"))) {
+                        EXPECT_GT(dot(minus(centre[e->text.at("b")], p), n), 0.0) << "n does not point into b";
+                    }
+                    if (centre.count(e->text.at("a"))) {
+                        EXPECT_LT(dot(minus(centre[e->text.at("a")], p), n), 0.0) << "n does not point out of a";
+                    }
+                }
+                EXPECT_TRUE(found) << "a normal that is no event's";
+                EXPECT_TRUE(along(minus(to, from), n));
+            } else if (kind == "lever_arm") {
+                // From the body's centre to a contact point.
+                ASSERT_TRUE(centre.count(it["body"]));
+                EXPECT_TRUE(same(from, centre[it["body"]], 1.0));
+                bool at_contact = false;
+                for (const auto& c : contacts) at_contact = at_contact || same(to, c, 1.0);
+                EXPECT_TRUE(at_contact) << "a lever arm that does not end at the contact point";
+                EXPECT_TRUE(same(vec(it["value"]), minus(to, from), 1.0));
+            } else if (kind == "velocity") {
+                ASSERT_TRUE(centre.count(it["body"]));
+                // From the centre (the 3D view: from where the ray along v leaves the surface).
+                const std::vector<double> out_of = minus(from, centre[it["body"]]);
+                EXPECT_TRUE(same(from, centre[it["body"]], 1.0) || (three_d && along(out_of, vec(it["value"]))))
+                    << "a velocity not drawn from the centre";
+                EXPECT_TRUE(along(minus(to, from), vec(it["value"]))) << "a velocity arrow against v";
+            } else if (kind == "spin") {
+                const double sweep = it["sweep"];
+                if (three_d) {
+                    // An arrow along w, its curl counter-clockwise seen from the tip.
+                    EXPECT_TRUE(along(minus(to, from), vec(it["value"]))) << "a spin arrow against w";
+                    EXPECT_GT(sweep, 0.0) << "the curl turns against the right-hand rule";
+                } else {
+                    EXPECT_GT(labelled_quantity(it, dim, false) * sweep, 0.0) << "the spin arc turns against w";
+                }
+            } else if (kind == "label" && !it["value"].is_null()) {
+                // The number printed is the value at the precision shown (3 significant
+                // figures), and the value is the labelled item's.
+                int digits = 0;
+                const double shown = label_number(it["text"], &digits);
+                const double value = it["value"];
+                ASSERT_FALSE(std::isnan(shown)) << "a label with a value but no number";
+                EXPECT_EQ(digits, 3);
+                const double ulp = std::pow(10.0, std::floor(std::log10(std::abs(value))) - 2);
+                EXPECT_LE(std::abs(shown - value), 0.5 * ulp * (1 + 1e-9)) << "the label misprints its value";
+                const int of = it["of"];
+                ASSERT_GE(of, 0);
+                ASSERT_LT(of, static_cast<int>(items.size()));
+                EXPECT_NEAR(labelled_quantity(items[static_cast<std::size_t>(of)], dim, three_d), value,
+                            1e-12 * std::max(1.0, std::abs(value)));
+            }
+        }
+        // No two labels overlap (their boxes, padding included, may touch).
+        std::vector<std::vector<double>> boxes;
+        for (const json& it : items)
+            if (it["kind"] == "label") boxes.push_back(it["box"].get<std::vector<double>>());
+        for (std::size_t i = 0; i < boxes.size(); ++i)
+            for (std::size_t j = i + 1; j < boxes.size(); ++j) {
+                const double w = std::min(boxes[i][2], boxes[j][2]) - std::max(boxes[i][0], boxes[j][0]);
+                const double h = std::min(boxes[i][3], boxes[j][3]) - std::max(boxes[i][1], boxes[j][1]);
+                EXPECT_FALSE(w > 0.5 && h > 0.5) << "labels " << i << " and " << j << " overlap";
+            }
+    }
+    EXPECT_GT(impulses_on_b, 0) << "the collision panel draws no impulse on b";
+}
+
+INSTANTIATE_TEST_SUITE_P(Bundled, LessonFigure, ::testing::ValuesIn(bundled_lessons()),
+                         [](const ::testing::TestParamInfo<Lesson>& info) {
+                             std::string name;
+                             for (char c : info.param.id) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
+                             return name;
+                         });
+
+}  // namespace
+}  // namespace collide
