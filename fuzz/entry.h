@@ -22,8 +22,10 @@ void lesson(const std::string& text);
 // A scenario parsed and then stepped like `collide step`, cut short so one input stays well
 // under a second: at most kMaxBodies bodies, kMaxOutputSteps output instants, kMaxEvents
 // collisions and (2D, 3D) kMaxSubsteps substeps of the world (a resting body costs one solve
-// per millisecond of simulated time: World::kRestStep). Besides an InputError, the world may refuse a run with std::runtime_error (a
-// stuck simulation: step.h); every state it reports must be finite.
+// per millisecond of simulated time: World::kRestStep), checked every 10 ms of simulated time;
+// and, last, about half a second of the clock (a fast spin's free rotation is neither).
+// Besides an InputError, the world may refuse a run with std::runtime_error (a stuck
+// simulation: step.h); every state it reports must be finite.
 inline constexpr std::size_t kMaxBodies = 8;
 inline constexpr std::size_t kMaxOutputSteps = 40;
 inline constexpr std::size_t kMaxEvents = 2000;
