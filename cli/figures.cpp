@@ -20,10 +20,15 @@ std::string fixed_text(double x, int decimals) {
     return buf;
 }
 
-// The captions under the three panels: the moments' times.
+// The captions under the three panels: the moments' times, and that before and after show
+// the velocities of the instant (drawn where the bodies were a moment earlier or later).
 std::vector<std::string> time_notes(const Moments& moments, int decimals) {
-    return {"t = " + fixed_text(moments.before, decimals) + " s", "t = " + fixed_text(moments.at, decimals) + " s",
-            "t = " + fixed_text(moments.after, decimals) + " s"};
+    if (moments.after == moments.at)  // no sample between this collision and the next
+        return {"pose at t = " + fixed_text(moments.before, decimals) + " s, velocities just before",
+                "t = " + fixed_text(moments.at, decimals) + " s", "velocities just after"};
+    return {"pose at t = " + fixed_text(moments.before, decimals) + " s, velocities just before",
+            "t = " + fixed_text(moments.at, decimals) + " s",
+            "pose at t = " + fixed_text(moments.after, decimals) + " s, velocities just after"};
 }
 
 // The three moments drawn by a renderer framed on them: no trails, at the instant the impulse

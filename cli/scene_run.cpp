@@ -108,6 +108,43 @@ double size_of(const Scene& scene, std::size_t i) {
     return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
 }
 
+// Every body's velocities just before the impacts of instants[0] (`pre`) and just after
+// (`post`): a body in one of its events had the event's "before" velocities (the first event
+// it is in, when it is in several); the others kept theirs through the instant.
+void instant_velocities(const Scene& scene, const Recording<1>& rec, std::vector<BodyState>* pre,
+                        std::vector<BodyState>* post) {
+    const auto& instant = rec.instants.front();
+    *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
+    *pre = *post;
+    for (std::size_t k = instant.end; k-- > instant.first;) {
+        const Event1& e = rec.events[k];
+        (*pre)[e.a].v = lift_line(e.va_before);
+        (*pre)[e.b].v = lift_line(e.vb_before);
+    }
+}
+template <int D>
+void instant_velocities(const Scene& scene, const Recording<D>& rec, std::vector<BodyState>* pre,
+                        std::vector<BodyState>* post) {
+    const auto& instant = rec.instants.front();
+    *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
+    *pre = *post;
+    for (std::size_t k = instant.end; k-- > instant.first;) {
+        const Event<D>& e = rec.events[k];
+        (*pre)[e.a].v = lift(e.before_a.v);
+        (*pre)[e.a].w = lift_spin(e.before_a.w);
+        (*pre)[e.b].v = lift(e.before_b.v);
+        (*pre)[e.b].w = lift_spin(e.before_b.w);
+    }
+}
+
+// `frame` drawn with the velocities of `at` (the poses stay the frame's).
+void with_velocities(const std::vector<BodyState>& at, FrameState* frame) {
+    for (std::size_t i = 0; i < frame->bodies.size() && i < at.size(); ++i) {
+        frame->bodies[i].v = at[i].v;
+        frame->bodies[i].w = at[i].w;
+    }
+}
+
 template <int D>
 Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& rec) {
     const typename Recording<D>::Instant& instant = rec.instants.front();  // the first collision's
@@ -158,6 +195,12 @@ Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& 
         m.after = te;
         m.states[2] = render::frame_state(scene, te, instant.bodies);
     }
+    // The numbers of the instant: "before" and "after" show the velocities just before and
+    // just after the impacts (the page's meaning; with gravity the recorded frames' differ).
+    std::vector<BodyState> pre, post;
+    instant_velocities(scene, rec, &pre, &post);
+    with_velocities(pre, &m.states[0]);
+    with_velocities(post, &m.states[2]);
     m.instant = collision_instant(first);
     return m;
 }

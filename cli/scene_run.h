@@ -35,7 +35,8 @@ DataFiles data_files(const Scene& scene, const SceneRun& run);
 // recorded state a moment after (the first sample at or after te + dt, short of the next
 // collision of the same bodies; the instant itself when no sample lies between). dt: the
 // time to close half the smaller body's size at the approach speed (at most a quarter of
-// the run).
+// the run). The before and after states keep those samples' poses but carry the velocities
+// just before and just after the impacts, so that the figure's numbers are the instant's.
 struct Moments {
     double before = 0, at = 0, after = 0;   // s
     render::FrameState states[3];           // at those times; states[1] has the instant's impacts

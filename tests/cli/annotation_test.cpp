@@ -195,6 +195,8 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
     const int dim = doc["dimension"];
     const bool three_d = doc["view"] == "3d";
     const std::vector<EventRow> events = read_events(dir / "out/events.csv");
+    std::ifstream data_in(dir / "out/data.json");
+    const json data = json::parse(data_in);
     ASSERT_FALSE(events.empty()) << "every bundled lesson has a collision";
     ASSERT_TRUE(doc["panels"].contains("at"));
 
@@ -299,6 +301,26 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
                 ASSERT_LT(of, static_cast<int>(items.size()));
                 EXPECT_NEAR(labelled_quantity(items[static_cast<std::size_t>(of)], dim, three_d), value,
                             1e-12 * std::max(1.0, std::abs(value)));
+            }
+        }
+        // Before and after carry the numbers of the instant: each velocity and spin of a body
+        // in one of its events is the event's just before (just after), as data.json gives
+        // them at full precision.
+        if (std::string(panel) != "at") {
+            const char* when = std::string(panel) == "before" ? "before" : "after";
+            for (const json& it : items) {
+                const std::string kind = it["kind"];
+                if (kind != "velocity" && kind != "spin") continue;
+                const std::string body = it["body"];
+                for (const json& e : data["events"]) {
+                    if (std::abs(e["t"].get<double>() - t_at) > 1e-9 * std::max(1.0, t_at)) continue;
+                    if (!e[when].contains(body)) continue;
+                    const std::vector<double> expected = vec(e[when][body][kind == "velocity" ? "v" : "w"]);
+                    const std::vector<double> drawn = vec(it["value"]);
+                    EXPECT_TRUE(same(drawn, expected, std::max(1.0, norm(expected))))
+                        << body << "'s " << kind << " " << when << " is not the instant's";
+                    break;  // the first event the body is in
+                }
             }
         }
         // No two labels overlap (their boxes, padding included, may touch).
