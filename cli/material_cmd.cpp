@@ -41,6 +41,93 @@ std::string vec(const Vec3& v, int dim) {
 }
 std::string spin(const Vec3& w, int dim) { return dim == 2 ? n(w.z()) : vec(w, 3); }
 
+// Three significant figures, a true minus sign, no "-0": numbers in sentences.
+std::string sig3(double x) {
+    if (std::abs(x) < 1e-12) return "0";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", x);
+    std::string s = buf;
+    if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
+    return s;
+}
+
+// How a body moves, in words: "moves at 1.5 m/s", "is at rest", "moves at 1.07 m/s and spins
+// at 1.83 rad/s" (1D: the signed velocity along +x; 2D: ω about +z; 3D: |ω|).
+std::string motion_words(const Vec3& v, const Vec3& w, int dim) {
+    const double speed = dim == 1 ? v.x() : v.norm();
+    const double turn = dim == 2 ? w.z() : w.norm();
+    std::string s;
+    if (std::abs(speed) < 1e-12) s = "is at rest";
+    else s = "moves at " + sig3(speed) + " m/s" + (dim == 1 ? " along +x" : "");
+    if (dim > 1 && std::abs(turn) > 1e-12)
+        s += (std::abs(speed) < 1e-12 ? " but spins at " : " and spins at ") + sig3(turn) + " rad/s" +
+             (dim == 2 ? (turn > 0 ? " counter-clockwise" : " clockwise") : "");
+    return s;
+}
+
+// The figure's alternative text, from the collision it shows: who moves how before, the
+// impulse, and how they move after.
+std::string figure_alt(const SolveProblem& P, const Solution& S, double t) {
+    const int d = P.dimension;
+    const auto who = [&](const SolveBody& B) {
+        return B.name + (B.b3.is_static ? " (static)" : " (" + sig3(B.b3.mass) + " kg)");
+    };
+    std::string s = "Before, at and after the collision at t = " + sig3(t) + " s. Before: " + who(P.a) + " " +
+                    motion_words(P.a.b3.v, P.a.b3.w, d) + "; " + who(P.b) + " " + motion_words(P.b.b3.v, P.b.b3.w, d) +
+                    ". At the collision the impulse on " + P.b.name + " is " +
+                    (d == 1 ? sig3(S.P.x()) : sig3(S.P.norm())) + " N s" +
+                    (d == 1 ? " along +x" : "") + "; " + P.a.name + " receives the opposite. After: " + P.a.name + " " +
+                    motion_words(S.va, S.wa, d) + "; " + P.b.name + " " + motion_words(S.vb, S.wb, d) + ".";
+    return s;
+}
+
+// Under the video: play and pause, a frame back and forward (1/fps of simulated time: the
+// video runs at the simulation's pace) and the speed, in the page's own script (no network).
+const char* kPlayer = R"(<div class="player noprint" role="group" aria-label="Playback">
+<button type="button" data-act="play">Play / pause</button>
+<button type="button" data-act="back" aria-label="One frame back">&#9664; frame</button>
+<button type="button" data-act="fwd" aria-label="One frame forward">frame &#9654;</button>
+<span class="speeds">speed <button type="button" data-rate="0.25">0.25&times;</button>
+<button type="button" data-rate="0.5">0.5&times;</button>
+<button type="button" data-rate="1" aria-pressed="true">1&times;</button></span>
+<span class="time" aria-live="off"></span>
+</div>
+<script>
+(function () {
+  var v = document.querySelector('video.lesson'), bar = document.querySelector('.player');
+  if (!v || !bar) return;
+  var dt = 1 / (parseFloat(v.dataset.fps) || 30), time = bar.querySelector('.time');
+  bar.querySelectorAll('button').forEach(function (b) {
+    b.addEventListener('click', function () {
+      if (b.dataset.rate) {
+        v.playbackRate = parseFloat(b.dataset.rate);
+        bar.querySelectorAll('[data-rate]').forEach(function (o) { o.setAttribute('aria-pressed', o === b); });
+      } else if (b.dataset.act === 'play') {
+        if (v.paused) v.play(); else v.pause();
+      } else {
+        v.pause();
+        var t = v.currentTime + (b.dataset.act === 'fwd' ? dt : -dt);
+        v.currentTime = Math.max(0, Math.min(v.duration || 0, t));
+      }
+    });
+  });
+  var show = function () { time.textContent = 't = ' + v.currentTime.toFixed(3) + ' s'; };
+  v.addEventListener('timeupdate', show);
+  v.addEventListener('seeked', show);
+})();
+</script>
+)";
+
+// Printing the questions: for students (a space to write each answer in) or, ticked, the
+// teacher's copy with the answers.
+const char* kPrintChoice = R"(<p class="noprint print-choice"><label><input type="checkbox" id="print-answers"> Print with the answers (the teacher's copy)</label></p>
+<script>
+document.getElementById('print-answers').addEventListener('change', function (e) {
+  document.body.classList.toggle('with-answers', e.target.checked);
+});
+</script>
+)";
+
 // ---- Pages ----
 
 // The stylesheet is assets/site/style.css, compiled in (cmake/embed.cmake).
@@ -76,20 +163,29 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
     }
     o << "<h2>Explanation</h2>\n" << paragraphs(L.explanation);
     if (r.problem) {
-        o << "<figure><img src=\"figure.png\" alt=\"The bodies before, at and after the first collision\">"
+        const std::string alt = r.solution ? figure_alt(*r.problem, *r.solution, r.first_collision->t)
+                                           : "The bodies before, at and after the first collision";
+        o << "<figure><a href=\"figure.png\" title=\"Open the figure at full size\"><img src=\"figure.png\" alt=\""
+          << escape(alt) << "\"></a>"
              "<figcaption>Before, at and after the first collision (t = "
           << escape(n(r.first_collision->t)) << " s), from the simulation.";
         if (L.view.directions) o << " Grey arrows: the positive directions (velocities may be negative).";
-        o << "</figcaption></figure>\n";
+        o << " Click it to see it at full size.</figcaption></figure>\n";
     }
-    o << "<h2>Animation</h2>\n";
-    if (r.video == "animation.mp4")
-        o << "<video controls loop muted playsinline preload=\"metadata\" poster=\"frames/frame_00000.png\" src=\"animation.mp4\"></video>\n";
-    else if (r.video == "animation.gif")
-        o << "<figure><img src=\"animation.gif\" alt=\"Animation\"></figure>\n";
-    else
+    // The animation is for the screen: a printed page leaves the section out.
+    o << "<section class=\"animation noprint\">\n<h2>Animation</h2>\n";
+    if (r.video == "animation.mp4") {
+        const double fps = r.t.size() > 1 && r.t[1] > r.t[0] ? 1.0 / (r.t[1] - r.t[0]) : 30.0;
+        o << "<video class=\"lesson\" controls loop muted playsinline preload=\"metadata\" data-fps=\""
+          << notation::num_data(fps) << "\" poster=\"frames/frame_00000.png\" src=\"animation.mp4\"></video>\n"
+          << kPlayer;
+    } else if (r.video == "animation.gif") {
+        o << "<figure><img src=\"animation.gif\" alt=\"The animation of the run\"></figure>\n";
+    } else {
         o << "<p class=\"note\">The frames are in <a href=\"frames/frame_00000.png\">frames/</a> (" << r.frames
           << " PNG files); install ffmpeg for a video.</p>\n";
+    }
+    o << "</section>\n";
     if (r.problem && r.solution) {
         const SolveProblem& P = *r.problem;
         const Solution& S = *r.solution;
@@ -150,13 +246,17 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
          "<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "
          "<a href=\"data.json\">data.json</a>, <a href=\"events.csv\">events.csv</a>.</p>\n";
     if (!L.questions.empty()) {
-        o << "<h2>Questions</h2>\n<ol class=\"questions\">\n";
+        o << "<h2>Questions</h2>\n" << kPrintChoice << "<ol class=\"questions\">\n";
         for (std::size_t i = 0; i < L.questions.size(); ++i) {
             const LessonQuestion& q = L.questions[i];
-            o << "<li>" << math(q.text) << "\n<details><summary>Answer</summary><p><span class=\"answer\">"
-              << math(i < r.answers.size() ? r.answers[i].text : "?") << "</span>";
-            if (!q.explain.empty()) o << "<br>" << math(q.explain);
-            o << "</p></details></li>\n";
+            std::string answer = "<span class=\"answer\">" + math(i < r.answers.size() ? r.answers[i].text : "?") + "</span>";
+            if (!q.explain.empty()) answer += "<br>" + math(q.explain);
+            // On screen the answer opens on demand; printed, a space to write in, or the
+            // answer itself in the teacher's copy.
+            o << "<li>" << math(q.text) << "\n<details><summary>Answer</summary><p>" << answer
+              << "</p></details>\n<div class=\"write-here\" aria-hidden=\"true\"></div>"
+                 "<p class=\"printed-answer\">Answer: "
+              << answer << "</p></li>\n";
         }
         o << "</ol>\n";
     }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <set>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -80,6 +81,33 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     EXPECT_NE(lesson.find("1.2 N s"), std::string::npos);  // J = (1 + 0.5) 2 1 (1.5 - 0.3) / 3
     EXPECT_NE(read(fs::path(dir / "site") / "index.html").find("catch-up/index.html"), std::string::npos);
     EXPECT_NE(read(fs::path(dir / "site") / "style.css").find("@media print"), std::string::npos);
+    // Print: math wraps (no nowrap anywhere in the stylesheet); the animation section, screen
+    // only, leaves no empty heading; each question has a space to write in and, for the
+    // teacher's copy, its answer.
+    const std::string css = read(fs::path(dir / "site") / "style.css");
+    EXPECT_EQ(css.find("nowrap"), std::string::npos);
+    EXPECT_NE(lesson.find("<section class=\"animation noprint\">\n<h2>Animation</h2>"), std::string::npos);
+    std::size_t questions = 0, spaces = 0, printed = 0;
+    for (std::size_t at = 0; (at = lesson.find("<details><summary>Answer</summary>", at)) != std::string::npos; ++at)
+        ++questions;
+    for (std::size_t at = 0; (at = lesson.find("class=\"write-here\"", at)) != std::string::npos; ++at) ++spaces;
+    for (std::size_t at = 0; (at = lesson.find("class=\"printed-answer\"", at)) != std::string::npos; ++at) ++printed;
+    EXPECT_GT(questions, 0u);
+    EXPECT_EQ(spaces, questions);
+    EXPECT_EQ(printed, questions);
+    // Each figure's alternative text tells its own collision: no two lessons share one.
+    std::set<std::string> alts;
+    const std::regex figure_alt(R"re(<img src="figure.png" alt="([^"]*)")re");
+    for (const Lesson& L : all) {
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(page, m, figure_alt)) << L.id;
+        EXPECT_NE(m[1].str().find("the impulse on"), std::string::npos) << L.id << ": " << m[1];
+        EXPECT_TRUE(alts.insert(m[1]).second) << L.id << " shares its alt text: " << m[1];
+    }
+    EXPECT_NE(lesson.find("Before: A (2 kg) moves at 1.5 m/s along +x; B (1 kg) moves at 0.3 m/s along +x. "
+                          "At the collision the impulse on B is 1.2 N s along +x"),
+              std::string::npos);
     // Built beside the directory and renamed: no temporary left.
     for (const auto& e : fs::directory_iterator(dir.str()))
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
