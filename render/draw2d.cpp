@@ -97,7 +97,9 @@ void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Co
     const ImVec2 d = sub(tip, back);
     const float len = length(d);
     if (len < 0.5f) return;
-    draw_arrow(dl, sub(tip, mul(d, head_length / len)), tip, colour, thickness, head_length,
+    // From 1.5 head lengths back along that chord: draw_arrow draws the head at full size
+    // (it shrinks the heads of shorter arrows), 0.3 px off the arc at most for the radii used.
+    draw_arrow(dl, sub(tip, mul(d, 1.5f * head_length / len)), tip, colour, thickness, head_length,
                head_width);
 }
 

@@ -316,6 +316,108 @@ angle = 0.0
     EXPECT_LE(off, got.width * got.height / 200) << off << " pixels differ; see " << golden;
 }
 
+// How wide (pixels) the stroke of `colour` is across the point `back` pixels behind `tip`,
+// measured along the normal to `dir` (screen, unit) in half-pixel steps.
+float width_behind(const Image& im, ImVec2 tip, ImVec2 dir, Colour colour, float back) {
+    const ImVec2 n(-dir.y, dir.x);
+    const ImVec2 c(tip.x - dir.x * back, tip.y - dir.y * back);
+    float width = 0;
+    for (const float sign : {1.0f, -1.0f})
+        for (float s = 0.25f; s < 20.0f; s += 0.5f) {
+            const int x = static_cast<int>(std::floor(c.x + n.x * s * sign));
+            const int y = static_cast<int>(std::floor(c.y + n.y * s * sign));
+            if (x < 0 || y < 0 || x >= im.width || y >= im.height || !test::near_colour(im.pixel(x, y), colour, 60))
+                break;
+            width += 0.5f;
+        }
+    return width;
+}
+
+// The list is what is drawn: for every velocity and impulse arrow of the 2D diagram's list,
+// its head is where the list puts the tip, not at the tail; each spin arc's head is at the
+// end its sweep gives. (annotation_test.cpp checks the list against the physics.)
+TEST_F(RenderTest, EveryArrowOfTheListIsDrawnWithItsHeadAtItsTip) {
+    const char* text = R"(
+[scene]
+dimension = 2
+duration = 1.0
+[[body]]
+name = "a"
+shape = "disc"
+radius = 0.3
+mass = 1.0
+position = [-0.8, 0.0]
+v = [2.0, 0.5]
+w = 3.0
+[[body]]
+name = "b"
+shape = "rectangle"
+size = [0.6, 0.6]
+mass = 1.0
+position = [0.8, 0.2]
+v = [-1.0, 0.0]
+w = -2.0
+)";
+    const Scene scene = parse_scene_text(text, "arrows.toml");
+    RenderSettings settings = small(1280, 720);
+    Renderer r(*context_, scene, settings);
+    std::vector<Body2> bodies;
+    for (const SceneBody& b : scene.bodies) bodies.push_back(b.body2);
+    FrameState f = frame_state(scene, 0.0, bodies);
+    ImpactMark im;
+    im.a = 0;
+    im.b = 1;
+    im.point = Vec3(0.0, 0.1, 0.0);
+    im.normal = Vec3(1.0, 0.0, 0.0);
+    im.impulse = Vec3(1.5, 0.3, 0.0);
+    f.impacts.push_back(im);
+    r.prepare({f}, {im});
+    Decor d;
+    d.labels = false;
+    d.trails = false;
+    d.com = false;
+    const Image image = r.render(f, d);
+    const Palette c;
+    const Style style = Style::for_height(settings.height);
+    // 0.6 of a head back from the tip an arrow's head is 0.6 head widths wide (7 px here; the
+    // spin arcs' heads, 0.85 as large, 0.7 of theirs), the shaft 3 px: wider than 5 px is a head.
+    const float back = style.lw(style.head_length) * 0.6f, head = 5.0f;
+    int arrows = 0, spins = 0;
+    for (const Annotation& a : r.annotations()) {
+        if (a.kind == Mark::velocity || (a.kind == Mark::impulse && !a.faint)) {
+            const ImVec2 p = r.to_screen(a.from), q = r.to_screen(a.to);
+            const float len = std::hypot(q.x - p.x, q.y - p.y);
+            ASSERT_GT(len, 3.0f * style.lw(style.head_length)) << mark_name(a.kind) << ": too short to tell";
+            const ImVec2 u((q.x - p.x) / len, (q.y - p.y) / len);
+            const Colour colour = a.kind == Mark::velocity ? c.velocity : c.impulse;
+            EXPECT_GT(width_behind(image, q, u, colour, back), head) << mark_name(a.kind) << " of body " << a.body;
+            EXPECT_LT(width_behind(image, p, ImVec2(-u.x, -u.y), colour, back), head)
+                << mark_name(a.kind) << " of body " << a.body << " has a head at its tail";
+            ++arrows;
+        } else if (a.kind == Mark::spin) {
+            // The arc is centred above the body: its ends at pi/2 -+ sweep/2 (world angles, y up).
+            const ImVec2 centre = r.to_screen(a.from);
+            const auto at = [&](double angle) {
+                return ImVec2(centre.x + a.radius * static_cast<float>(std::cos(angle)),
+                              centre.y - a.radius * static_cast<float>(std::sin(angle)));
+            };
+            const double end = 0.5 * kPi + 0.5 * a.sweep, start = 0.5 * kPi - 0.5 * a.sweep;
+            const double sense = a.sweep > 0 ? 1.0 : -1.0;
+            // The tangent along the sweep, on screen (y down).
+            const auto tangent = [&](double angle, double s) {
+                return ImVec2(static_cast<float>(-std::sin(angle) * s), static_cast<float>(-std::cos(angle) * s));
+            };
+            EXPECT_GT(width_behind(image, at(end), tangent(end, sense), c.spin, back), head)
+                << "spin of body " << a.body;
+            EXPECT_LT(width_behind(image, at(start), tangent(start, -sense), c.spin, back), head)
+                << "spin of body " << a.body << " has its head at the start of the arc";
+            ++spins;
+        }
+    }
+    EXPECT_EQ(arrows, 3);  // two velocities, +P on b
+    EXPECT_EQ(spins, 2);
+}
+
 // The time line's marker: solid velocity-blue pixels in the bottom strip; their centre.
 double time_marker_x(const Image& im) {
     const Palette palette;
