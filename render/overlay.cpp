@@ -134,27 +134,35 @@ void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const Fram
             x += columns_[k].width + col_gap;
         }
     };
-    std::vector<std::string> headers;
-    for (const Column& col : columns_) headers.push_back(col.header);
-    row(headers, c.muted, y);
+    const std::vector<std::vector<std::string>> rows = text(f);
+    row(rows.front(), c.muted, y);
     y += row_height_;
     dl->AddLine(ImVec2(at.x + pad_, y), ImVec2(at.x + size_.x - pad_, y), c.panel_border, style_.lw(1.0f));
     int order = 0;
     for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
         if (scene_.bodies[i].is_static()) continue;
+        ++order;
         const float sy = y + 0.5f * (row_height_ - swatch_);
         dl->AddRectFilled(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_),
-                          c.fills[order % Palette::kFills], style_.lw(2.0f));
+                          c.fills[(order - 1) % Palette::kFills], style_.lw(2.0f));
         dl->AddRect(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_), c.ink,
                     style_.px(2.0f), 0, style_.lw(1.0f));
-        row(cells(i, f), c.ink, y);
+        row(rows[static_cast<std::size_t>(order)], c.ink, y);
         y += row_height_;
-        ++order;
     }
     y += style_.px(4.0f);
     dl->AddLine(ImVec2(at.x + pad_, y - style_.lw(2.0f)), ImVec2(at.x + size_.x - pad_, y - style_.lw(2.0f)),
                 c.panel_border, style_.lw(1.0f));
-    row(cells(scene_.bodies.size(), f), c.ink, y);
+    row(rows.back(), c.ink, y);
+}
+
+std::vector<std::vector<std::string>> DataTable::text(const FrameState& f) const {
+    std::vector<std::vector<std::string>> rows(1);
+    for (const Column& col : columns_) rows[0].push_back(col.header);
+    for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
+        if (!scene_.bodies[i].is_static()) rows.push_back(cells(i, f));
+    rows.push_back(cells(scene_.bodies.size(), f));
+    return rows;
 }
 
 void Header::prepare(const FontSet& fonts, std::string title, int time_decimals,

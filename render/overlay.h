@@ -25,6 +25,9 @@ public:
     void prepare(const FontSet& fonts, const std::vector<FrameState>& samples);
     ImVec2 size() const { return size_; }
     void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, const FrameState& frame) const;
+    // What draw() writes, cell by cell (after prepare): the header row, a row per moving body
+    // (name, m, v, ω in 2D and 3D, p, E_k) and the totals (m, p, E_k).
+    std::vector<std::vector<std::string>> text(const FrameState& frame) const;
 
 private:
     struct Column {

@@ -303,6 +303,15 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
                             1e-12 * std::max(1.0, std::abs(value)));
             }
         }
+        if (std::string(panel) == "at") {
+            // One contact point and (2D, 3D: in 1D n is the axis) one normal per event.
+            std::size_t normals = 0;
+            for (const json& it : items) normals += it["kind"] == "normal" ? 1 : 0;
+            EXPECT_EQ(contacts.size(), now.size()) << "contact points";
+            if (dim > 1 || three_d) {
+                EXPECT_EQ(normals, now.size()) << "normals";
+            }
+        }
         // Before and after carry the numbers of the instant: each velocity and spin of a body
         // in one of its events is the event's just before (just after), as data.json gives
         // them at full precision.

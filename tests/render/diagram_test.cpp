@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <memory>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
@@ -10,6 +11,7 @@
 #include "render/context.h"
 #include "render/draw2d.h"
 #include "render/imgui_layer.h"
+#include "render/overlay.h"
 #include "render/renderer.h"
 #include "render/target.h"
 #include "test_util.h"
@@ -416,6 +418,96 @@ w = -2.0
     }
     EXPECT_EQ(arrows, 3);  // two velocities, +P on b
     EXPECT_EQ(spins, 2);
+}
+
+// The numbers of a table cell ("1.50", "(3.00, −1.00)", U+2212 minus), read independently.
+std::vector<double> cell_numbers(const std::string& cell) {
+    std::string s;
+    for (std::size_t i = 0; i < cell.size(); ++i) {
+        if (cell.compare(i, 3, "\u2212") == 0) {
+            s += '-';
+            i += 2;
+        } else {
+            s += (cell[i] == '(' || cell[i] == ')' || cell[i] == ',') ? ' ' : cell[i];
+        }
+    }
+    std::istringstream in(s);
+    std::vector<double> out;
+    for (double x; in >> x;) out.push_back(x);
+    return out;
+}
+
+// The data table against the physics of the frame: v, then p = m v, E_k = m v.v / 2 + I w^2 / 2
+// (a disc: I = m r^2 / 2; a rectangle: m (w^2 + h^2) / 12), and the totals, to the decimals
+// shown.
+TEST_F(RenderTest, TheTablesNumbersAreTheFramesMomentumAndEnergy) {
+    const char* text = R"(
+[scene]
+dimension = 2
+duration = 1.0
+[[body]]
+name = "disc"
+shape = "disc"
+radius = 0.5
+mass = 2.0
+position = [-1.0, 0.0]
+v = [1.5, -0.5]
+w = 2.0
+[[body]]
+name = "box"
+shape = "rectangle"
+size = [0.6, 0.4]
+mass = 3.0
+position = [1.0, 0.0]
+v = [-1.0, 0.25]
+w = -1.0
+)";
+    const Scene scene = parse_scene_text(text, "table.toml");
+    ImGuiLayer imgui(context_->gl(), 640, 480, FontSizes::for_height(480));
+    DataTable table(scene, Style::for_height(480));
+    std::vector<Body2> bodies;
+    for (const SceneBody& b : scene.bodies) bodies.push_back(b.body2);
+    const FrameState f = frame_state(scene, 0.0, bodies);
+    table.prepare(imgui.fonts(), {f});
+    const auto rows = table.text(f);
+    ASSERT_EQ(rows.size(), 4u);  // header, disc, box, totals
+    EXPECT_EQ(rows[0].back().substr(0, 2), "E_");
+    const double m[2] = {2.0, 3.0};
+    const Vec2 v[2] = {Vec2(1.5, -0.5), Vec2(-1.0, 0.25)};
+    const double w[2] = {2.0, -1.0};
+    const double I[2] = {0.5 * 2.0 * 0.25, 3.0 * (0.36 + 0.16) / 12.0};
+    Vec2 p_total = Vec2::Zero();
+    double e_total = 0;
+    for (int i = 0; i < 2; ++i) {
+        SCOPED_TRACE(scene.bodies[static_cast<std::size_t>(i)].name);
+        const auto& row = rows[static_cast<std::size_t>(i) + 1];
+        ASSERT_EQ(row.size(), 6u);  // name, m, v, w, p, E_k
+        const std::vector<double> mv = cell_numbers(row[1]), vv = cell_numbers(row[2]), wv = cell_numbers(row[3]),
+                                  pv = cell_numbers(row[4]), ev = cell_numbers(row[5]);
+        ASSERT_EQ(vv.size(), 2u);
+        ASSERT_EQ(pv.size(), 2u);
+        const Vec2 p = m[i] * v[i];
+        const double e = 0.5 * m[i] * v[i].squaredNorm() + 0.5 * I[i] * w[i] * w[i];
+        p_total += p;
+        e_total += e;
+        // Two decimals at least: half a unit of the last one.
+        EXPECT_NEAR(mv[0], m[i], 0.005);
+        EXPECT_NEAR(vv[0], v[i].x(), 0.005);
+        EXPECT_NEAR(vv[1], v[i].y(), 0.005);
+        EXPECT_NEAR(wv[0], w[i], 0.005);
+        EXPECT_NEAR(pv[0], p.x(), 0.005);
+        EXPECT_NEAR(pv[1], p.y(), 0.005);
+        EXPECT_NEAR(ev[0], e, 0.005);
+    }
+    // The totals: name, mass, (no v, no w), p, E_k.
+    const auto& total = rows[3];
+    ASSERT_EQ(total.size(), 6u);
+    const std::vector<double> mt = cell_numbers(total[1]), pt = cell_numbers(total[4]), et = cell_numbers(total[5]);
+    ASSERT_EQ(pt.size(), 2u);
+    EXPECT_NEAR(mt[0], 5.0, 0.005);
+    EXPECT_NEAR(pt[0], p_total.x(), 0.005);
+    EXPECT_NEAR(pt[1], p_total.y(), 0.005);
+    EXPECT_NEAR(et[0], e_total, 0.005);
 }
 
 // The time line's marker: solid velocity-blue pixels in the bottom strip; their centre.
