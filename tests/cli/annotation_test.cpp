@@ -332,6 +332,47 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
                 }
             }
         }
+        // Before and after are recorded frames: every body is drawn at that frame's pose
+        // (data.json, full precision; a quaternion and its negative are one orientation).
+        // (With no frame between this collision and the next, "after" is the instant itself.)
+        if (std::string(panel) != "at" && doc["times"][panel] != doc["times"]["at"]) {
+            const double t = doc["times"][panel];
+            const json* frame = nullptr;
+            for (const json& fr : data["frames"])
+                if (std::abs(fr["t"].get<double>() - t) <= 1e-9 * std::max(1.0, t)) frame = &fr;
+            if (frame) {
+                for (const json& it : items) {
+                    if (it["kind"] != "body") continue;
+                    const std::string body = it["body"];
+                    const json& b = (*frame)["bodies"][body];
+                    const std::vector<double> pose = vec(it["value"]), x = vec(b["x"]);
+                    ASSERT_GE(pose.size(), x.size());
+                    EXPECT_TRUE(same(std::vector<double>(pose.begin(), pose.begin() + static_cast<long>(x.size())), x,
+                                     std::max(1.0, norm(x))))
+                        << body << " is not drawn where the frame has it";
+                    if (b.contains("angle")) {
+                        EXPECT_NEAR(pose.at(2), b["angle"].get<double>(), 1e-9) << body << "'s angle";
+                    }
+                    if (b.contains("orientation")) {
+                        const std::vector<double> q(pose.begin() + 3, pose.end()), qf = vec(b["orientation"]);
+                        EXPECT_NEAR(std::abs(dot(q, qf)), 1.0, 1e-9) << body << "'s orientation";
+                    }
+                }
+            } else {
+                ADD_FAILURE() << "no frame of data.json at the " << panel << " panel's time";
+            }
+        }
+        // Labels carry their units: velocities m s⁻¹, spins rad s⁻¹, impulses N s.
+        for (const json& it : items) {
+            if (it["kind"] != "label" || it["value"].is_null()) continue;
+            const std::string labelled = items[it["of"].get<std::size_t>()]["kind"];
+            const std::string text = it["text"];
+            const std::string unit = labelled == "velocity" ? " m s\u207B\u00B9"
+                                     : labelled == "spin"   ? " rad s\u207B\u00B9"
+                                                            : " N s";
+            EXPECT_TRUE(text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
+                << "\"" << text << "\" does not end in \"" << unit << "\"";
+        }
         // No two labels overlap (their boxes, padding included, may touch).
         std::vector<std::vector<double>> boxes;
         for (const json& it : items)
