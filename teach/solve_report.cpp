@@ -1,6 +1,8 @@
 // The worked example of `collide solve` (text and Markdown) and its JSON record.
 // Each step shows the formula in the page's symbols, then the numbers substituted.
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <ostream>
 #include <vector>
 
@@ -436,15 +438,24 @@ private:
             lines.push_back(words(name + ": ") + words("before ") + before + f(",  ") +
                             words("after ") + after + f(",  ") + words("change ") + change + unit(u));
         };
-        row("momentum", V(s.p_before), V(s.p_after), V(s.p_after - s.p_before), "kg·m/s");
+        // A change within round-off of the totals (1e-9 of them) is the 0 it stands for, not
+        // "-5.55112e-17 J".
+        const auto change = [](const Vec3& before, const Vec3& after) {
+            const Vec3 c = after - before;
+            return c.norm() <= 1e-9 * std::max(before.norm(), after.norm()) ? Vec3(Vec3::Zero()) : c;
+        };
+        row("momentum", V(s.p_before), V(s.p_after), V(change(s.p_before, s.p_after)), "kg·m/s");
         if (d >= 2)
             row("angular momentum about o = " + vec(P.about, d).txt, W(s.L_before), W(s.L_after),
-                W(s.L_after - s.L_before), "kg·m²/s");
-        const double dke = s.ke_after - s.ke_before;
+                W(change(s.L_before, s.L_after)), "kg·m²/s");
+        const double dke = change(Vec3(s.ke_before, 0, 0), Vec3(s.ke_after, 0, 0)).x();
         row("kinetic energy", num(s.ke_before), num(s.ke_after), num(dke), "J");
         std::vector<std::string> notes;
-        if (s.ke_before > 0)
-            notes.push_back("Kinetic energy changed by " + num_text(100.0 * dke / s.ke_before) + " %.");
+        if (s.ke_before > 0) {
+            char percent[32];  // three significant figures: a reader's number
+            std::snprintf(percent, sizeof percent, "%.3g", 100.0 * dke / s.ke_before);
+            notes.push_back("Kinetic energy changed by " + std::string(dke == 0.0 ? "0" : percent) + " %.");
+        }
         notes.push_back(d >= 2 ? "Kinetic energy counts 1/2 m v·v + 1/2 ω·I ω (the full inertia tensor); "
                                  "angular momentum is Σ (I ω + m (x − o) × v), all about one fixed point."
                                : "Kinetic energy is Σ 1/2 m v².");
