@@ -241,6 +241,8 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         o << "</table>\n";
     }
     if (r.penalty) o << penalty_html(*r.penalty);
+    if (!L.teacher_notes.empty())
+        o << "<section class=\"teacher\">\n<h2>For the teacher</h2>\n" << paragraphs(L.teacher_notes) << "</section>\n";
     o << "<h2>Energy and momentum against time</h2>\n<div class=\"plots\">"
          "<img src=\"energy.svg\" alt=\"Energy against time\"><img src=\"momentum.svg\" alt=\"Momentum against time\"></div>\n"
          "<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "

@@ -109,7 +109,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     const auto lt = root.table("lesson");
     if (!lt) root.fail("", "missing table [lesson] (a scenario file without one is run with "
                            "'collide step' or 'collide render FILE')");
-    lt->allow_only({"id", "order", "title", "section", "goals", "explanation", "label"});
+    lt->allow_only({"id", "order", "title", "section", "goals", "explanation", "teacher_notes", "label"});
     L.id = lt->string("id", "a lesson id (letters, digits and -)").value_or("");
     if (L.id.empty()) lt->fail("id", "missing key 'id' (used as `collide render ID`)");
     for (char ch : L.id)
@@ -121,6 +121,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     L.section = lt->string("section", "the page's section it teaches").value_or("");
     L.goals = strings(*lt, "goals", "a list of learning goals (strings)");
     L.explanation = lt->string("explanation", "the explanation (text)").value_or("");
+    L.teacher_notes = lt->string("teacher_notes", "notes for the teacher (text)").value_or("");
     if (L.scene.title.empty()) L.scene.title = L.title;
     L.label = lt->string("label", "the scene's label beside its variants").value_or("");
 

@@ -50,6 +50,9 @@ struct Lesson {
     std::string section;      // the page's section it teaches
     std::vector<std::string> goals;
     std::string explanation;  // plain language, Markdown paragraphs
+    // For the teacher, not the students (commands to run, files to read): the site shows it
+    // in its own section, left out of the student's print.
+    std::string teacher_notes;
     std::vector<LessonQuestion> questions;
     Scene scene;
     std::string label;        // the scene's own label beside its variants (e.g. "e = 0.5")

@@ -214,6 +214,7 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
         }
     }
     out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";
+    if (!L.teacher_notes.empty()) out << "\n## For the teacher\n\n" << L.teacher_notes << "\n";
 }
 
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run,

@@ -353,7 +353,7 @@ private:
                             num_text(L.scalar) + " 1/kg where the correct denominator is " +
                             num_text(correct) + " 1/kg.");
         }
-        notes.push_back("For the correct answer: collide solve FILE --model frictionless.");
+        notes.push_back("For the correct answer, solve the same collision with the frictionless model.");
         step("The page's listing, as written", lines, notes);
     }
 

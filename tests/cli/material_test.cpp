@@ -95,6 +95,15 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     EXPECT_GT(questions, 0u);
     EXPECT_EQ(spaces, questions);
     EXPECT_EQ(printed, questions);
+    // Student pages name no commands and no files of the repository: those go in the
+    // teacher's section.
+    for (const Lesson& L : all) {
+        std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::size_t teacher = page.find("<section class=\"teacher\">");
+        if (teacher != std::string::npos) page.erase(teacher, page.find("</section>", teacher) - teacher);
+        for (const char* word : {"collide solve", "collide compare", "collide render", "docs/"})
+            EXPECT_EQ(page.find(word), std::string::npos) << L.id << " tells students \"" << word << "\"";
+    }
     // Each figure's alternative text tells its own collision: no two lessons share one.
     std::set<std::string> alts;
     const std::regex figure_alt(R"re(<img src="figure.png" alt="([^"]*)")re");
