@@ -202,6 +202,33 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
             for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
         }
         if (!r.world_note.empty()) o << "<p class=\"note\">" << math(r.world_note) << "</p>\n";
+        if (!r.later.empty()) {
+            // The run's later collisions, each worked out the same way, folded.
+            o << "<h2>The later collisions, worked out</h2>\n<p class=\"note\">The run has "
+              << r.collision_times.size() << " collisions"
+              << (r.later.size() + 1 < r.collision_times.size() ? "; the first " + std::to_string(r.later.size() + 1) +
+                                                                      " are worked out here"
+                                                                : "")
+              << ". Open one to see it step by step.</p>\n";
+            for (std::size_t i = 0; i < r.later.size(); ++i) {
+                const RenderReport::Later& c = r.later[i];
+                const int dc = c.problem.dimension;
+                o << "<details class=\"later\"><summary>Collision " << i + 2 << ": " << escape(c.problem.a.name)
+                  << " and " << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t))
+                  << " s, impulse on " << escape(c.problem.b.name) << " "
+                  << escape(dc == 1 ? sig3(c.solution.P.x()) : sig3(c.solution.P.norm())) << " N s</summary>\n";
+                int k = 0;
+                for (const WorkedStep& st : worked_steps(c.problem, c.solution)) {
+                    o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
+                    for (std::size_t j = 0; j < st.lines.size(); ++j)
+                        o << "<div class=\"math" << (st.response && j + 1 == st.lines.size() ? " result" : "")
+                          << "\">" << math(st.lines[j]) << "</div>\n";
+                    for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
+                }
+                if (!c.world_note.empty()) o << "<p class=\"note\">" << math(c.world_note) << "</p>\n";
+                o << "</details>\n";
+            }
+        }
         // The table: the two bodies before and after.
         o << "<h2>Before and after</h2>\n<table>\n<tr><th>body</th><th>m (kg)</th><th>v before (m/s)</th>"
              "<th>v after (m/s)</th>";

@@ -13,6 +13,7 @@
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <variant>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -382,6 +383,13 @@ RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, 
         r.world_note = a.worked->formula.note;
     }
     if (a.moments) r.first_collision = a.moments->instant;
+    std::visit([&](const auto& rec) {
+        for (std::size_t k = 1; k < rec.events.size() && r.later.size() < RenderReport::kLaterCollisions; ++k) {
+            const CollisionInstant c = collision_instant(rec.events[k]);
+            WorkedExample w = worked_example(r.scene, c);
+            r.later.push_back({c, std::move(w.problem), std::move(w.solution), std::move(w.formula.note)});
+        }
+    }, ran.run.record);
     r.variants = std::move(a.variants);
     for (const ImpactMark& im : ran.run.impacts) r.collision_times.push_back(im.t);
     for (const FrameState& f : ran.run.frames) {

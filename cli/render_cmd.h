@@ -39,6 +39,16 @@ struct RenderReport {
     std::optional<CollisionInstant> first_collision;
     std::string world_note;  // when the world resolved several points there (the formula box's note)
     std::vector<double> collision_times;       // s, every collision of the run
+    // The run's next collisions after the first (at most kLaterCollisions), each worked out
+    // as the first is: the site explains them below it.
+    struct Later {
+        CollisionInstant instant;
+        SolveProblem problem;
+        Solution solution;
+        std::string world_note;
+    };
+    static constexpr std::size_t kLaterCollisions = 8;
+    std::vector<Later> later;
     // A lesson's scene and its variants side by side (variants.png): the first collision of
     // each (none when it has none).
     struct Variant {
