@@ -380,7 +380,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             b.thumb = fs::exists(lesson_dir / "thumb.png");
             // Plots.
             const RenderReport& r = b.report;
-            const render::TotalsColumns col = render::totals_columns(r.totals);
+            const render::TotalsColumns col = render::totals_columns(r.plot_totals);
             std::vector<Series> energy = {{"kinetic", "#1d4ed8", col.kinetic}};
             if (L.scene.gravity.norm() > 0) {
                 energy.push_back({"potential", "#0f766e", col.potential});
@@ -395,9 +395,9 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                 if (L.scene.dimension == 3) momentum.push_back({"p_z", "#0f766e", col.pz});
             }
             render::write_file_atomic((lesson_dir / "energy.svg").string(),
-                                      svg_plot("Energy (J)", r.t, energy, r.collision_times, L.scene.duration));
+                                      svg_plot("Energy (J)", r.plot_t, energy, r.collision_times, L.scene.duration));
             render::write_file_atomic((lesson_dir / "momentum.svg").string(),
-                                      svg_plot("Momentum (kg m/s)", r.t, momentum, r.collision_times, L.scene.duration));
+                                      svg_plot("Momentum (kg m/s)", r.plot_t, momentum, r.collision_times, L.scene.duration));
             built.push_back(std::move(b));
             if (terminal) {
                 char line[200];

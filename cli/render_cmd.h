@@ -60,6 +60,10 @@ struct RenderReport {
     std::optional<PenaltyStudy> penalty;       // a lesson's [penalty] (penalty.svg, penalty.csv)
     std::vector<double> t;                     // every frame's time (s)
     std::vector<render::FrameTotals> totals;   // and its energies and momentum
+    // For the plots: the frames' totals with the exact ones just before and just after each
+    // recorded collision instant inserted (two points at its time), in time order.
+    std::vector<double> plot_t;
+    std::vector<render::FrameTotals> plot_totals;
     long frames = 0;
     int width = 0, height = 0;
     double seconds = 0.0;                      // rendering and writing the frames

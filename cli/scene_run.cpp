@@ -108,12 +108,12 @@ double size_of(const Scene& scene, std::size_t i) {
     return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
 }
 
-// Every body's velocities just before the impacts of instants[0] (`pre`) and just after
+// Every body's velocities just before the impacts of instants[which] (`pre`) and just after
 // (`post`): a body in one of its events had the event's "before" velocities (the first event
 // it is in, when it is in several); the others kept theirs through the instant.
-void instant_velocities(const Scene& scene, const Recording<1>& rec, std::vector<BodyState>* pre,
+void instant_velocities(const Scene& scene, const Recording<1>& rec, std::size_t which, std::vector<BodyState>* pre,
                         std::vector<BodyState>* post) {
-    const auto& instant = rec.instants.front();
+    const auto& instant = rec.instants[which];
     *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
     *pre = *post;
     for (std::size_t k = instant.end; k-- > instant.first;) {
@@ -123,9 +123,9 @@ void instant_velocities(const Scene& scene, const Recording<1>& rec, std::vector
     }
 }
 template <int D>
-void instant_velocities(const Scene& scene, const Recording<D>& rec, std::vector<BodyState>* pre,
+void instant_velocities(const Scene& scene, const Recording<D>& rec, std::size_t which, std::vector<BodyState>* pre,
                         std::vector<BodyState>* post) {
-    const auto& instant = rec.instants.front();
+    const auto& instant = rec.instants[which];
     *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
     *pre = *post;
     for (std::size_t k = instant.end; k-- > instant.first;) {
@@ -198,7 +198,7 @@ Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& 
     // The numbers of the instant: "before" and "after" show the velocities just before and
     // just after the impacts (the page's meaning; with gravity the recorded frames' differ).
     std::vector<BodyState> pre, post;
-    instant_velocities(scene, rec, &pre, &post);
+    instant_velocities(scene, rec, 0, &pre, &post);
     with_velocities(pre, &m.states[0]);
     with_velocities(post, &m.states[2]);
     m.instant = collision_instant(first);
@@ -232,6 +232,23 @@ DataFiles data_files(const Scene& scene, const SceneRun& run) {
             if (k > 0) out.json_events += ",\n";
             out.json_events += event_json(scene, rec.events[k]);
             out.events_csv += events_csv_row(scene, rec.events[k]);
+        }
+    });
+    return out;
+}
+
+std::vector<InstantTotals> instant_totals(const Scene& scene, const SceneRun& run) {
+    std::vector<InstantTotals> out;
+    visit_record(run, [&](const auto& rec) {
+        for (std::size_t k = 0; k < rec.instants.size(); ++k) {
+            std::vector<BodyState> pre, post;
+            instant_velocities(scene, rec, k, &pre, &post);
+            FrameState f;
+            f.t = rec.instants[k].t;
+            f.bodies = pre;
+            const render::FrameTotals before = render::frame_totals(scene, f);
+            f.bodies = post;
+            out.push_back({f.t, before, render::frame_totals(scene, f)});
         }
     });
     return out;

@@ -44,4 +44,13 @@ struct Moments {
 };
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run);
 
+// The totals (energies, momentum) just before and just after each recorded collision instant
+// (the first RecordOptions::instants of the run), exact: plots step there instead of
+// sloping between the samples around it.
+struct InstantTotals {
+    double t = 0;  // s
+    render::FrameTotals before, after;
+};
+std::vector<InstantTotals> instant_totals(const Scene& scene, const SceneRun& run);
+
 }  // namespace collide

@@ -1,6 +1,7 @@
 // `collide render` end to end on tiny scenes: the files it writes, and its refusals.
 #include "cli/render_cmd.h"
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -224,6 +225,30 @@ TEST(RenderCommand, ALessonRunsEachSceneOnce) {
     EXPECT_TRUE(r.problem);
     EXPECT_EQ(r.variants.size(), 3u);
     EXPECT_EQ(runs, 1u + r.lesson->variants.size());
+}
+
+// The plots step at a collision: two points at its instant, the totals just before and just
+// after, exact. Catch-up: A 2 kg at 1.5 m/s, B 1 kg at 0.3 m/s, e = 0.5: E_k before
+// = 2 x 1.5^2 / 2 + 1 x 0.3^2 / 2 = 2.295 J; lost (1 - e^2) m_a m_b (v_a - v_b)^2 / (2 (m_a + m_b))
+// = 0.36 J; momentum 3.3 kg m/s on both sides.
+TEST(RenderCommand, ThePlotsStepExactlyAtEachCollision) {
+    const render::test::TempDir dir;
+    const std::string lesson = std::string(COLLIDE_SOURCE_DIR) + "/lessons/01-catch-up.toml";
+    std::ostringstream err;
+    const RenderReport r = render_scenario(parse_render_request(tiny(lesson, dir / "out")), err);
+    ASSERT_EQ(r.collision_times.size(), 1u);
+    const double te = r.collision_times[0];
+    std::vector<std::size_t> at;
+    for (std::size_t k = 0; k < r.plot_t.size(); ++k)
+        if (r.plot_t[k] == te) at.push_back(k);
+    ASSERT_EQ(at.size(), 2u);
+    EXPECT_EQ(at[1], at[0] + 1);
+    EXPECT_NEAR(r.plot_totals[at[0]].kinetic, 2.295, 1e-12);
+    EXPECT_NEAR(r.plot_totals[at[1]].kinetic, 2.295 - 0.36, 1e-12);
+    EXPECT_NEAR(r.plot_totals[at[0]].momentum.x(), 3.3, 1e-12);
+    EXPECT_NEAR(r.plot_totals[at[1]].momentum.x(), 3.3, 1e-12);
+    EXPECT_TRUE(std::is_sorted(r.plot_t.begin(), r.plot_t.end()));
+    EXPECT_EQ(r.plot_t.size(), r.plot_totals.size());
 }
 
 TEST(RenderCommand, RefusesANonEmptyDirectoryUnlessForced) {
