@@ -22,11 +22,15 @@ struct Palette {
     Colour grid = rgb(222, 222, 218);
     Colour static_fill = rgb(214, 214, 210);  // ground, walls, static bodies
     Colour hatch = rgb(90, 90, 92);
+    // The arrows' colours stay apart for readers with red-green colour blindness too: each
+    // pair differs by at least 15 (CIELAB ΔE) in normal vision and in deuteranopia and
+    // protanopia as simulated (tests/render/palette_test.cpp). (A violet spin was 6.6 from
+    // the blue velocity for deuteranopes.)
     Colour velocity = rgb(29, 78, 216);       // blue
-    Colour spin = rgb(124, 58, 237);          // violet
+    Colour spin = rgb(200, 110, 0);           // amber
     Colour impulse = rgb(206, 32, 41);        // red
     Colour normal = rgb(15, 118, 110);        // dark teal
-    Colour lever = rgb(70, 72, 80);           // r vectors
+    Colour lever = rgb(40, 40, 44);           // r vectors (dashed): near the ink
     Colour panel = rgb(255, 255, 255, 236);   // table and legend backgrounds
     Colour panel_border = rgb(200, 200, 196);
     // Flat body fills, in scene order (cycled).
