@@ -359,7 +359,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          components(s.v, dim), c.velocity);
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
-                pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m s\u207B\u00B9",
+                pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
                                    {shown}, c.velocity, false});
             }
             const double w = s.w.z();
@@ -377,7 +377,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
                 pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
-                                   "\u03C9 = " + format_number(w) + " rad s\u207B\u00B9", {w}, c.spin, false});
+                                   "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
             }
         }
     }

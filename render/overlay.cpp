@@ -61,9 +61,9 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
     rows_.clear();
     for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
         if (!scene_.bodies[i].is_static()) rows_.push_back(i);
-    columns_ = {{"body"}, {"m (kg)"}, {"v (m s\u207B\u00B9)"}};
-    if (d > 1) columns_.push_back({"\u03C9 (rad s\u207B\u00B9)"});
-    columns_.push_back({"p (kg m s\u207B\u00B9)"});
+    columns_ = {{"body"}, {"m (kg)"}, {"v (m/s)"}};
+    if (d > 1) columns_.push_back({"\u03C9 (rad/s)"});
+    columns_.push_back({"p (kg m/s)"});
     columns_.push_back({"E_{k} (J)"});
 
     // Decimals from the largest value each column takes over the run.

@@ -78,7 +78,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     const auto legend = [&](float v_px, double v_value, float p_px, double p_value) {
         std::vector<LegendEntry> entries;
         entries.push_back({LegendEntry::Mark::arrow, c.velocity, v_px,
-                           "velocity  " + format_compact(v_value) + " m s\u207B\u00B9", {1, 0}});
+                           "velocity  " + format_compact(v_value) + " m/s", {1, 0}});
         if (any_spin)
             entries.push_back({LegendEntry::Mark::curved_arrow, c.spin, 0.0f,
                                view3d_ ? "angular velocity \u03C9 (right-hand rule)"
@@ -94,7 +94,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
             const float len = std::sqrt(d.x * d.x + d.y * d.y);
             d = len > 1e-6f ? ImVec2(d.x / len, d.y / len) : ImVec2(0, 1);
             entries.push_back({LegendEntry::Mark::direction, c.muted, 0.0f,
-                               "gravity  g = " + format_compact(g.norm()) + " m s\u207B\u00B2", d});
+                               "gravity  g = " + format_compact(g.norm()) + " m/s\u00B2", d});
         }
         return entries;
     };
@@ -149,7 +149,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
                 momentum.push_back({"p_{y}", c.impulse, col.py});
                 if (scene_.dimension == 3) momentum.push_back({"p_{z}", c.normal, col.pz});
             }
-            momentum_plot_->prepare(fonts, "momentum (kg m s\u207B\u00B9)", t, momentum,
+            momentum_plot_->prepare(fonts, "momentum (kg m/s)", t, momentum,
                                     ImVec2(plot_w, row_h));
             energy_at_ = ImVec2(m, y);
             momentum_at_ = ImVec2(m + plot_w + gap, y);

@@ -257,14 +257,14 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::velocity: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double v = norm_of(a.value);
-            motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m s\u207B\u00B9", {v},
+            motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
                               c.velocity, false});
             break;
         }
         case Mark::spin: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double w = norm_of(a.value);
-            motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad s\u207B\u00B9", {w},
+            motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
                               c.spin, false});
             break;
         }

@@ -362,13 +362,14 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
                 ADD_FAILURE() << "no frame of data.json at the " << panel << " panel's time";
             }
         }
-        // Labels carry their units: velocities m s⁻¹, spins rad s⁻¹, impulses N s.
+        // Labels carry their units, as the page and the text write them: velocities m/s, spins
+        // rad/s, impulses N s.
         for (const json& it : items) {
             if (it["kind"] != "label" || it["value"].is_null()) continue;
             const std::string labelled = items[it["of"].get<std::size_t>()]["kind"];
             const std::string text = it["text"];
-            const std::string unit = labelled == "velocity" ? " m s\u207B\u00B9"
-                                     : labelled == "spin"   ? " rad s\u207B\u00B9"
+            const std::string unit = labelled == "velocity" ? " m/s"
+                                     : labelled == "spin"   ? " rad/s"
                                                             : " N s";
             EXPECT_TRUE(text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
                 << "\"" << text << "\" does not end in \"" << unit << "\"";
