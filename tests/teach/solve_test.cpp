@@ -1,6 +1,7 @@
 // `collide solve` end to end through the library: the bundled examples against closed forms,
 // the geometry rules of the file format, the JSON schema and the Markdown math.
 #include <cmath>
+#include <fstream>
 #include <sstream>
 
 #include <gtest/gtest.h>
@@ -108,6 +109,24 @@ TEST(SolveFormat, NormalIsNormalisedAndQuaternionToo) {
     text.replace(text.find("normal = [1.0, 0.0, 0.0]"), 24, "normal = [4.0, 0.0, 0.0]");
     const SolveProblem P = parse_solve_text(text, "x.toml");
     EXPECT_NEAR(P.normal.norm(), 1.0, kTol);
+    EXPECT_NEAR(P.normal.x(), 1.0, kTol);
+    // A quaternion given at twice its length is the same rotation: boxes-3d's A is turned
+    // 30 degrees about z, so its x axis is (cos 30, sin 30, 0) whatever the length given.
+    std::ifstream in(example("boxes-3d.toml"));
+    std::stringstream file;
+    file << in.rdbuf();
+    std::string boxes = file.str();
+    const std::string given = "orientation = [0.9659258, 0.0, 0.0, 0.2588190]";
+    ASSERT_NE(boxes.find(given), std::string::npos);
+    boxes.replace(boxes.find(given), given.size(), "orientation = [1.9318516, 0.0, 0.0, 0.5176380]");
+    const SolveProblem Q = parse_solve_text(boxes, "boxes.toml");
+    const Quat q = Q.a.b3.orientation;
+    EXPECT_NEAR(q.norm(), 1.0, 1e-12);
+    const Vec3 x_axis = q * Vec3::UnitX();
+    const double c30 = std::sqrt(3.0) / 2.0;
+    EXPECT_NEAR(x_axis.x(), c30, 1e-6);  // the file's digits: 7 decimals
+    EXPECT_NEAR(x_axis.y(), 0.5, 1e-6);
+    EXPECT_NEAR(x_axis.z(), 0.0, 1e-12);
 }
 
 TEST(SolveFormat, ErrorsNameFileLineAndKey) {
