@@ -38,6 +38,31 @@ std::size_t index_of(const Lesson& L, const std::string& name) {
     throw std::runtime_error("no body " + name);
 }
 
+// The answer to a lesson's question asked by what it asks (quantity, body, collision), not by
+// its place in the lesson: reordering or adding questions leaves the checks on the right ones.
+const LessonAnswer& ans(const Lesson& L, const std::vector<LessonAnswer>& a, const std::string& quantity,
+                        const std::string& body_name = "", int event = 1) {
+    const LessonAnswer* found = nullptr;
+    for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) {
+        const LessonQuestion& q = L.questions[i];
+        if (q.quantity != quantity || q.body != body_name || q.event != event) continue;
+        if (found) throw std::runtime_error(L.id + ": two questions ask " + quantity + " of '" + body_name + "'");
+        found = &a[i];
+    }
+    if (!found) throw std::runtime_error(L.id + ": no question asks " + quantity + " of '" + body_name + "'");
+    return *found;
+}
+
+// The same for point_velocity_* questions that differ only in their point (world frame, m).
+const LessonAnswer& ans_at(const Lesson& L, const std::vector<LessonAnswer>& a, const std::string& quantity,
+                           const std::string& body_name, const Vec3& at) {
+    for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) {
+        const LessonQuestion& q = L.questions[i];
+        if (q.quantity == quantity && q.body == body_name && q.at && (*q.at - at).norm() < 1e-12) return a[i];
+    }
+    throw std::runtime_error(L.id + ": no question asks " + quantity + " of '" + body_name + "' at that point");
+}
+
 // Half extents of a 2D rectangle, in its own axes (its polygon is centred on the body).
 Vec2 half_size(const SceneBody& b) {
     Vec2 h = Vec2::Zero();
@@ -100,12 +125,12 @@ TEST(LessonAnswers, Reversed) {
     const double J_page = (1 + e) * ma * mb * (va - vb) / (ma + mb);
     ASSERT_EQ(a.size(), 5u);
     EXPECT_GT(j, 0.0);
-    EXPECT_NEAR(a[0].value, j, 1e-12);
-    EXPECT_NEAR(a[0].value, -J_page, 1e-12);
-    EXPECT_NEAR(a[1].value, va - J_page / ma, 1e-12);  // the page's formulas with its negative J
-    EXPECT_NEAR(a[2].value, vb + J_page / mb, 1e-12);
-    EXPECT_NEAR(a[3].value, -e * (va - vb), 1e-12);
-    EXPECT_NEAR(a[4].value, (1 - e * e) * ma * mb * (vb - va) * (vb - va) / (2 * (ma + mb)), 1e-12);
+    EXPECT_NEAR(ans(L, a, "impulse").value, j, 1e-12);
+    EXPECT_NEAR(ans(L, a, "impulse").value, -J_page, 1e-12);
+    EXPECT_NEAR(ans(L, a, "velocity_after", "A").value, va - J_page / ma, 1e-12);  // the page's formulas with its negative J
+    EXPECT_NEAR(ans(L, a, "velocity_after", "B").value, vb + J_page / mb, 1e-12);
+    EXPECT_NEAR(ans(L, a, "normal_velocity_after").value, -e * (va - vb), 1e-12);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, (1 - e * e) * ma * mb * (vb - va) * (vb - va) / (2 * (ma + mb)), 1e-12);
 }
 
 TEST(LessonAnswers, RotationDirections) {
@@ -130,12 +155,12 @@ TEST(LessonAnswers, RotationDirections) {
     ASSERT_EQ(a.size(), 5u);
     EXPECT_GT(h.wb, 0.0);  // anticlockwise
     EXPECT_LT(A.body2.w, 0.0);  // from a clockwise A
-    EXPECT_NEAR(a[0].value, h.wb, 1e-7);
-    EXPECT_NEAR(a[1].value, h.wa, 1e-7);
-    EXPECT_NEAR(a[2].value, Ib * h.wb, 1e-7);
-    EXPECT_NEAR(a[3].value, Ia * h.wa, 1e-7);
+    EXPECT_NEAR(ans(L, a, "spin_after", "B").value, h.wb, 1e-7);
+    EXPECT_NEAR(ans(L, a, "spin_after", "A").value, h.wa, 1e-7);
+    EXPECT_NEAR(ans(L, a, "spin_angular_momentum_after", "B").value, Ib * h.wb, 1e-7);
+    EXPECT_NEAR(ans(L, a, "spin_angular_momentum_after", "A").value, Ia * h.wa, 1e-7);
     // About the origin: before, only A's spin; kept.
-    EXPECT_NEAR(a[4].value, Ia * A.body2.w, 1e-7);
+    EXPECT_NEAR(ans(L, a, "angular_momentum_after").value, Ia * A.body2.w, 1e-7);
     EXPECT_NEAR(Ia * h.wa + Ib * h.wb + B.body2.mass * cross2(B.body2.position, h.vb), Ia * A.body2.w, 1e-12);
 }
 
@@ -157,18 +182,18 @@ TEST(LessonAnswers, ContactPointVelocity) {
     ASSERT_EQ(a.size(), 5u);
     EXPECT_LT(A.body2.v.dot(n), 0.0);  // the centre moves away from the ball ...
     EXPECT_GT(vpa.dot(n), 0.0);        // ... its touching point towards it
-    expect_vec2(a[0], vpa, 1e-7);
-    EXPECT_NEAR(a[1].value, -vpa.dot(n), 1e-7);
-    expect_vec2(a[2], h.P, 1e-7);
-    expect_vec2(a[3], h.vb, 1e-7);
-    expect_vec2(a[4], h.va + spin_x(h.wa, ra), 1e-7);
+    expect_vec2(ans(L, a, "point_velocity_before", "A"), vpa, 1e-7);
+    EXPECT_NEAR(ans(L, a, "normal_velocity_before").value, -vpa.dot(n), 1e-7);
+    expect_vec2(ans(L, a, "impulse"), h.P, 1e-7);
+    expect_vec2(ans(L, a, "velocity_after", "B"), h.vb, 1e-7);
+    expect_vec2(ans(L, a, "point_velocity_after", "A"), h.va + spin_x(h.wa, ra), 1e-7);
     // The closed form's impulse and the ball's velocity are along n alone: the world's
     // tangential part (its contact found to 1e-10 m) is below 1e-9 of the normal one and the
     // text writes it as 0, as the lesson's explanation does.
     ASSERT_EQ(h.P.x(), 0.0);
-    ASSERT_LT(std::abs(a[2].vector.x()), 1e-9 * std::abs(a[2].vector.y()));
-    EXPECT_EQ(a[2].text.rfind("(0, ", 0), 0u) << a[2].text;
-    EXPECT_EQ(a[3].text.rfind("(0, ", 0), 0u) << a[3].text;
+    ASSERT_LT(std::abs(ans(L, a, "impulse").vector.x()), 1e-9 * std::abs(ans(L, a, "impulse").vector.y()));
+    EXPECT_EQ(ans(L, a, "impulse").text.rfind("(0, ", 0), 0u) << ans(L, a, "impulse").text;
+    EXPECT_EQ(ans(L, a, "velocity_after", "B").text.rfind("(0, ", 0), 0u) << ans(L, a, "velocity_after", "B").text;
 }
 
 TEST(LessonAnswers, Restitution) {
@@ -182,7 +207,7 @@ TEST(LessonAnswers, Restitution) {
     EXPECT_EQ(e[1], 0.5);
     EXPECT_EQ(e[2], 1.0);
     const SceneBody &A0 = L.scene.bodies[0];
-    EXPECT_NEAR(a[0].value, -A0.body2.v.x(), 1e-12);
+    EXPECT_NEAR(ans(L, a, "normal_velocity_before").value, -A0.body2.v.x(), 1e-12);
     for (std::size_t k = 0; k < 3; ++k)
         EXPECT_NEAR(a[1 + k].value, e[k] * L.scene.bodies[2 * k].body2.v.x(), 1e-12) << "row " << k;
     // Bottom row: the bar's centre moves at j / m_b.
@@ -192,7 +217,7 @@ TEST(LessonAnswers, Restitution) {
     const Vec2 ra(A2.shape2.radius, 0.0);
     const Hit2 h = frictionless2(e[2], 1 / A2.body2.mass, 1 / A2.body2.inertia, ra, A2.body2.v, 0.0,
                                  1 / B2.body2.mass, 1 / B2.body2.inertia, rb, B2.body2.v, 0.0, Vec2(1, 0));
-    expect_vec2(a[4], h.vb, 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "B (e=1)", 3), h.vb, 1e-12);
 }
 
 TEST(LessonAnswers, General2d) {
@@ -217,11 +242,11 @@ TEST(LessonAnswers, General2d) {
     const double ke1 = 0.5 * A.body2.mass * h.va.squaredNorm() + 0.5 * A.body2.inertia * h.wa * h.wa +
                        0.5 * B.body2.mass * h.vb.squaredNorm() + 0.5 * B.body2.inertia * h.wb * h.wb;
     ASSERT_EQ(a.size(), 5u);
-    expect_vec2(a[0], h.P, 1e-12);
-    expect_vec2(a[1], h.va, 1e-12);
-    EXPECT_NEAR(a[2].value, h.wa, 1e-11);
-    EXPECT_NEAR(a[3].value, h.wb, 1e-11);
-    EXPECT_NEAR(a[4].value, ke0 - ke1, 1e-12);
+    expect_vec2(ans(L, a, "impulse"), h.P, 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "A"), h.va, 1e-12);
+    EXPECT_NEAR(ans(L, a, "spin_after", "A").value, h.wa, 1e-11);
+    EXPECT_NEAR(ans(L, a, "spin_after", "B").value, h.wb, 1e-11);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, ke0 - ke1, 1e-12);
 }
 
 TEST(LessonAnswers, FrameOfA) {
@@ -256,13 +281,13 @@ TEST(LessonAnswers, FrameOfA) {
         return before - after;
     };
     ASSERT_EQ(a.size(), 5u);
-    expect_vec2(a[0], h.P, 1e-12);
+    expect_vec2(ans(L, a, "impulse"), h.P, 1e-12);
     EXPECT_NEAR(h.j, h6.j, 1e-12);
-    expect_vec2(a[1], h6.va - frame, 1e-12);
-    expect_vec2(a[2], h6.vb - frame, 1e-12);
-    EXPECT_NEAR(a[3].value, h6.wb, 1e-11);
-    EXPECT_NEAR(a[4].value, ke(h, A, B), 1e-12);
-    EXPECT_NEAR(a[4].value, ke(h6, A6, B6), 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "A"), h6.va - frame, 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "B"), h6.vb - frame, 1e-12);
+    EXPECT_NEAR(ans(L, a, "spin_after", "B").value, h6.wb, 1e-11);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, ke(h, A, B), 1e-12);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, ke(h6, A6, B6), 1e-12);
 }
 
 TEST(LessonAnswers, General3d) {
@@ -297,11 +322,11 @@ TEST(LessonAnswers, General3d) {
     const double ke1 = 0.5 * ma * va.squaredNorm() + 0.5 * wa.dot(Ia * wa) + 0.5 * mb * vb.squaredNorm() +
                        0.5 * wb.dot(Ib * wb);
     ASSERT_EQ(a.size(), 5u);
-    expect_vec3(a[0], P, 1e-12);
-    expect_vec3(a[1], va, 1e-12);
-    expect_vec3(a[2], wa, 1e-11);
-    expect_vec3(a[3], wb, 1e-11);
-    EXPECT_NEAR(a[4].value, ke0 - ke1, 1e-12);
+    expect_vec3(ans(L, a, "impulse"), P, 1e-12);
+    expect_vec3(ans(L, a, "velocity_after", "A"), va, 1e-12);
+    expect_vec3(ans(L, a, "spin_after", "A"), wa, 1e-11);
+    expect_vec3(ans(L, a, "spin_after", "B"), wb, 1e-11);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, ke0 - ke1, 1e-12);
 }
 
 TEST(LessonAnswers, Friction) {
@@ -334,13 +359,13 @@ TEST(LessonAnswers, Friction) {
     const Out smooth = hit("smooth cushion", "puck 1"), rough = hit("rough cushion", "puck 2");
     EXPECT_FALSE(smooth.sticks);
     EXPECT_TRUE(rough.sticks);
-    expect_vec2(a[0], smooth.P, 1e-12);
-    EXPECT_NEAR(a[1].value, smooth.w, 1e-11);
-    expect_vec2(a[2], rough.P, 1e-12);
-    EXPECT_NEAR(a[3].value, rough.w, 1e-11);
+    expect_vec2(ans(L, a, "impulse"), smooth.P, 1e-12);
+    EXPECT_NEAR(ans(L, a, "spin_after", "puck 1").value, smooth.w, 1e-11);
+    expect_vec2(ans(L, a, "impulse", "", 2), rough.P, 1e-12);
+    EXPECT_NEAR(ans(L, a, "spin_after", "puck 2", 2).value, rough.w, 1e-11);
     const double R = body(L, "puck 2").shape2.radius;
-    expect_vec2(a[4], rough.v + spin_x(rough.w, Vec2(0, -R)), 1e-12);
-    EXPECT_NEAR(a[4].vector.x(), 0.0, 1e-12);  // no slip after sticking
+    expect_vec2(ans(L, a, "point_velocity_after", "puck 2", 2), rough.v + spin_x(rough.w, Vec2(0, -R)), 1e-12);
+    EXPECT_NEAR(ans(L, a, "point_velocity_after", "puck 2", 2).vector.x(), 0.0, 1e-12);  // no slip after sticking
 }
 
 TEST(LessonAnswers, MatrixMethod) {
@@ -365,11 +390,11 @@ TEST(LessonAnswers, MatrixMethod) {
     const Vec2 v = u + P / m;
     const double w = cross2(r, P) / I;
     ASSERT_EQ(a.size(), 5u);
-    expect_vec2(a[0], P, 1e-12);
-    expect_vec2(a[1], v, 1e-12);
-    EXPECT_NEAR(a[2].value, w, 1e-11);
-    expect_vec2(a[3], -e * u, 1e-12);
-    EXPECT_NEAR(a[4].value, 0.5 * m * u.squaredNorm() - 0.5 * m * v.squaredNorm() - 0.5 * I * w * w, 1e-12);
+    expect_vec2(ans(L, a, "impulse"), P, 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "rod"), v, 1e-12);
+    EXPECT_NEAR(ans(L, a, "spin_after", "rod").value, w, 1e-11);
+    expect_vec2(ans(L, a, "point_velocity_after", "rod"), -e * u, 1e-12);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, 0.5 * m * u.squaredNorm() - 0.5 * m * v.squaredNorm() - 0.5 * I * w * w, 1e-12);
 }
 
 TEST(LessonAnswers, Stick) {
@@ -393,15 +418,15 @@ TEST(LessonAnswers, Stick) {
     const double Ic = rectangle_inertia(M, half_size(rod)) + M * d_rod.squaredNorm() +
                       0.5 * m * R * R + m * d_clay.squaredNorm();
     const double w = Lc / Ic;
-    expect_vec2(a[0], vc + spin_x(w, d_clay), 1e-12);
-    EXPECT_NEAR(a[1].value, w, 1e-12);
-    expect_vec2(a[2], vc + spin_x(w, d_rod), 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "clay"), vc + spin_x(w, d_clay), 1e-12);
+    EXPECT_NEAR(ans(L, a, "spin_after", "rod").value, w, 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "rod"), vc + spin_x(w, d_rod), 1e-12);
     const double before = 0.5 * m * clay.body2.v.squaredNorm();
-    EXPECT_NEAR(a[3].value, before - (0.5 * (m + M) * vc.squaredNorm() + 0.5 * Ic * w * w), 1e-12);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, before - (0.5 * (m + M) * vc.squaredNorm() + 0.5 * Ic * w * w), 1e-12);
     ASSERT_TRUE(L.questions[4].about.has_value());
     EXPECT_NEAR((L.questions[4].about->head<2>() - xc).norm(), 0.0, 1e-15);  // the text's point
-    EXPECT_NEAR(a[4].value, Lc, 1e-12);
-    EXPECT_NEAR(a[5].value, w, 1e-12);  // nothing else touches it: the spin stays
+    EXPECT_NEAR(ans(L, a, "angular_momentum_after").value, Lc, 1e-12);
+    EXPECT_NEAR(ans(L, a, "final_spin", "rod").value, w, 1e-12);  // nothing else touches it: the spin stays
 }
 
 TEST(LessonAnswers, ErrataListingAsWritten) {
@@ -432,18 +457,18 @@ TEST(LessonAnswers, ErrataListingAsWritten) {
     const double Jmod = (e + 1) * (ball.body3.v - bar.body3.v).norm() / scalar;
     const Vec3 vaf = ball.body3.v - Jmod * n / ma, vbf = bar.body3.v - Jmod * n / mb;
     const Vec3 wbf = -change_b;
-    expect_vec3(a[0], vbf, 1e-12);
-    expect_vec3(a[1], vaf, 1e-12);
-    expect_vec3(a[2], wbf, 1e-12);
-    expect_vec3(a[3], ma * vaf + mb * vbf, 1e-12);
-    EXPECT_LT(a[3].vector.y(), 0.0);  // momentum reversed: not conserved
+    expect_vec3(ans(L, a, "velocity_after", "bar"), vbf, 1e-12);
+    expect_vec3(ans(L, a, "velocity_after", "ball"), vaf, 1e-12);
+    expect_vec3(ans(L, a, "spin_after", "bar"), wbf, 1e-12);
+    expect_vec3(ans(L, a, "momentum_after"), ma * vaf + mb * vbf, 1e-12);
+    EXPECT_LT(ans(L, a, "momentum_after").vector.y(), 0.0);  // momentum reversed: not conserved
     const double energy = 0.5 * ma * vaf.squaredNorm() + 0.5 * mb * vbf.squaredNorm() +
                           0.5 * wbf.dot(bar.body3.inertia * wbf);
-    EXPECT_NEAR(a[4].value, energy, 1e-12);
-    EXPECT_GT(a[4].value, 0.5 * ma * ball.body3.v.squaredNorm());  // energy out of nothing
+    EXPECT_NEAR(ans(L, a, "kinetic_energy_after").value, energy, 1e-12);
+    EXPECT_GT(ans(L, a, "kinetic_energy_after").value, 0.5 * ma * ball.body3.v.squaredNorm());  // energy out of nothing
     const double un = (vbf + wbf.cross(rb) - vaf).dot(n);
-    EXPECT_NEAR(a[5].value, un, 1e-12);
-    EXPECT_LT(a[5].value, 0.0);  // still approaching: they pass through each other
+    EXPECT_NEAR(ans(L, a, "normal_velocity_after").value, un, 1e-12);
+    EXPECT_LT(ans(L, a, "normal_velocity_after").value, 0.0);  // still approaching: they pass through each other
     // The corrected variant gives the frictionless answer: j = (1 + e) |un| / (1/ma + 1/mb + rotational).
     ASSERT_EQ(L.variants.size(), 1u);
     EXPECT_EQ(L.variants[0].scene.model, Model::frictionless);
@@ -466,11 +491,11 @@ TEST(LessonAnswers, Superball) {
     const Vec2 v = u + P / m;
     const double w = cross2(Vec2(0, -R), P) / I;
     ASSERT_EQ(a.size(), 5u);
-    expect_vec2(a[0], Vec2(0, std::sqrt(2 * g * hd)), 1e-9);
-    expect_vec2(a[1], P, 1e-9);
-    expect_vec2(a[2], v, 1e-9);
-    EXPECT_NEAR(a[3].value, w, 1e-8);
-    EXPECT_NEAR(a[4].value, 0.0, 1e-12);
+    expect_vec2(ans(L, a, "velocity_after", "dropped"), Vec2(0, std::sqrt(2 * g * hd)), 1e-9);
+    expect_vec2(ans(L, a, "impulse", "", 2), P, 1e-9);
+    expect_vec2(ans(L, a, "velocity_after", "thrown", 2), v, 1e-9);
+    EXPECT_NEAR(ans(L, a, "spin_after", "thrown", 2).value, w, 1e-8);
+    EXPECT_NEAR(ans(L, a, "energy_lost", "", 2).value, 0.0, 1e-12);
     EXPECT_NEAR(0.5 * m * v.squaredNorm() + 0.5 * I * w * w, 0.5 * m * u.squaredNorm(), 1e-12);
 }
 
@@ -491,11 +516,11 @@ TEST(LessonAnswers, Conservation) {
     }
     ASSERT_EQ(a.size(), 5u);
     ASSERT_EQ(L.questions[1].about, o);
-    expect_vec3(a[0], p, 1e-12);
-    expect_vec3(a[1], Lo, 1e-9);
-    expect_vec3(a[2], Lo, 1e-9);
-    EXPECT_NEAR(a[3].value, ke, 1e-9);
-    EXPECT_NEAR(a[4].value, ke, 1e-9);
+    expect_vec3(ans(L, a, "momentum_after"), p, 1e-12);
+    expect_vec3(ans(L, a, "angular_momentum_before"), Lo, 1e-9);
+    expect_vec3(ans(L, a, "angular_momentum_after"), Lo, 1e-9);
+    EXPECT_NEAR(ans(L, a, "kinetic_energy_before").value, ke, 1e-9);
+    EXPECT_NEAR(ans(L, a, "kinetic_energy_after").value, ke, 1e-9);
 }
 
 TEST(LessonAnswers, NewtonsCradle) {
@@ -504,11 +529,11 @@ TEST(LessonAnswers, NewtonsCradle) {
     const std::vector<LessonAnswer> a = answer_questions(L);
     const double v = L.scene.bodies[0].body1.v, m = L.scene.bodies[0].body1.mass;
     ASSERT_EQ(a.size(), 5u);
-    EXPECT_NEAR(a[0].value, m * v, 1e-12);
-    EXPECT_EQ(a[1].value, 2.0);
-    EXPECT_NEAR(a[2].value, 0.0, 1e-12);
-    EXPECT_NEAR(a[3].value, 0.0, 1e-12);
-    EXPECT_NEAR(a[4].value, v, 1e-12);
+    EXPECT_NEAR(ans(L, a, "impulse").value, m * v, 1e-12);
+    EXPECT_EQ(ans(L, a, "collisions").value, 2.0);
+    EXPECT_NEAR(ans(L, a, "final_velocity", "first").value, 0.0, 1e-12);
+    EXPECT_NEAR(ans(L, a, "final_velocity", "second").value, 0.0, 1e-12);
+    EXPECT_NEAR(ans(L, a, "final_velocity", "third").value, v, 1e-12);
 }
 
 TEST(LessonAnswers, BouncingBall) {
@@ -521,10 +546,10 @@ TEST(LessonAnswers, BouncingBall) {
     const double g = -L.scene.gravity.x(), e = L.scene.restitution;
     const double t0 = std::sqrt(2 * H / g);
     ASSERT_EQ(a.size(), 4u);
-    EXPECT_NEAR(a[0].value, t0, 1e-12);
-    EXPECT_NEAR(a[1].value, e * std::sqrt(2 * g * H), 1e-12);
-    EXPECT_NEAR(a[2].value, t0 * (1 + e) / (1 - e), 1e-9);
-    EXPECT_NEAR(a[3].value, 0.0, 1e-12);
+    EXPECT_NEAR(ans(L, a, "time").value, t0, 1e-12);
+    EXPECT_NEAR(ans(L, a, "velocity_after", "ball").value, e * std::sqrt(2 * g * H), 1e-12);
+    EXPECT_NEAR(ans(L, a, "last_collision_time").value, t0 * (1 + e) / (1 - e), 1e-9);
+    EXPECT_NEAR(ans(L, a, "final_velocity", "ball").value, 0.0, 1e-12);
 }
 
 TEST(LessonAnswers, CentreOfPercussion) {
@@ -552,12 +577,15 @@ TEST(LessonAnswers, CentreOfPercussion) {
     const SceneBody& bat1 = body(L, "bat 1");
     const double d1 = body(L, "ball 1").body2.position.x() - bat1.body2.position.x();
     EXPECT_NEAR(d1, 2 * bat1.body2.inertia / (bat1.body2.mass * 2 * half_size(bat1).x()), 1e-15);
-    expect_vec2(a[0], Vec2(0, j1), 1e-12);
-    expect_vec2(a[1], handle1, 1e-12);
-    EXPECT_NEAR(a[1].value, 0.0, 1e-12);  // the sweet spot: no jolt
-    expect_vec2(a[2], tip1, 1e-12);
-    expect_vec2(a[3], handle2, 1e-12);
-    EXPECT_LT(a[3].vector.y(), 0.0);  // near the tip: the handle jumps back
+    expect_vec2(ans(L, a, "impulse"), Vec2(0, j1), 1e-12);
+    // The points the lesson asks about: bat 1's handle end (x = -1.1) and its other end (-0.1).
+    const LessonAnswer& handle = ans_at(L, a, "point_velocity_after", "bat 1", Vec3(-1.1, 0.0, 0.0));
+    const LessonAnswer& tip = ans_at(L, a, "point_velocity_after", "bat 1", Vec3(-0.1, 0.0, 0.0));
+    expect_vec2(handle, handle1, 1e-12);
+    EXPECT_NEAR(handle.value, 0.0, 1e-12);  // the sweet spot: no jolt
+    expect_vec2(tip, tip1, 1e-12);
+    expect_vec2(ans(L, a, "point_velocity_after", "bat 2", 2), handle2, 1e-12);
+    EXPECT_LT(ans(L, a, "point_velocity_after", "bat 2", 2).vector.y(), 0.0);  // near the tip: the handle jumps back
 }
 
 TEST(LessonAnswers, Box2dSlowElasticBounce) {
@@ -570,12 +598,12 @@ TEST(LessonAnswers, Box2dSlowElasticBounce) {
     const double v = std::sqrt(2 * g * h), t1 = std::sqrt(2 * h / g), period = 2 * v / g;
     const std::vector<LessonAnswer> a = answer_questions(L);
     ASSERT_EQ(a.size(), 4u);
-    ASSERT_TRUE(a[0].is_vector);
-    EXPECT_NEAR(a[0].vector.x(), 0.0, 1e-12);
-    EXPECT_NEAR(a[0].vector.y(), v, 1e-9);  // contact found to 1e-10 m
-    EXPECT_NEAR(a[1].value, t1, 1e-9);
-    EXPECT_EQ(a[2].value, std::floor((L.scene.duration - t1) / period) + 1);
-    EXPECT_NEAR(a[3].value, 0.0, 1e-12);
+    ASSERT_TRUE(ans(L, a, "velocity_after", "ball").is_vector);
+    EXPECT_NEAR(ans(L, a, "velocity_after", "ball").vector.x(), 0.0, 1e-12);
+    EXPECT_NEAR(ans(L, a, "velocity_after", "ball").vector.y(), v, 1e-9);  // contact found to 1e-10 m
+    EXPECT_NEAR(ans(L, a, "time").value, t1, 1e-9);
+    EXPECT_EQ(ans(L, a, "collisions").value, std::floor((L.scene.duration - t1) / period) + 1);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, 0.0, 1e-12);
 }
 
 TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
@@ -604,15 +632,15 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
     }
     const std::vector<LessonAnswer> a = answer_questions(L);
     ASSERT_EQ(a.size(), 8u);
-    const double zeta = a[0].value;
+    const double zeta = ans(L, a, "penalty_damping_ratio").value;
     ASSERT_GT(zeta, 0.0);
     ASSERT_LT(zeta, 1.0);
     EXPECT_NEAR(std::exp(-zeta * (kPi - 2 * std::asin(zeta)) / std::sqrt(1 - zeta * zeta)), e, 1e-12);
     const double c = 2 * zeta * std::sqrt(k * m);
-    EXPECT_NEAR(a[1].value, c, 1e-12 * c);
+    EXPECT_NEAR(ans(L, a, "penalty_damping").value, c, 1e-12 * c);
     const double w0 = std::sqrt(k / m), wd = w0 * std::sqrt(1 - zeta * zeta), sg = zeta * w0;
     const double tc = (kPi - 2 * std::asin(zeta)) / wd;
-    EXPECT_NEAR(a[2].value, tc, 1e-9 * tc);
+    EXPECT_NEAR(ans(L, a, "penalty_contact_time").value, tc, 1e-9 * tc);
     // The maxima of the closed forms over the contact, densely sampled (error < 1e-9 relative).
     double peak = 0, deepest = 0;
     for (int i = 0; i <= 400000; ++i) {
@@ -622,12 +650,12 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
         peak = std::max(peak, k * delta + c * rate);
         deepest = std::max(deepest, delta);
     }
-    EXPECT_NEAR(a[3].value, peak, 1e-6 * peak);
-    EXPECT_NEAR(a[4].value, deepest, 1e-6 * deepest);
+    EXPECT_NEAR(ans(L, a, "penalty_peak_force").value, peak, 1e-6 * peak);
+    EXPECT_NEAR(ans(L, a, "penalty_max_overlap").value, deepest, 1e-6 * deepest);
     const double P = (1 + e) * m * v0;
-    EXPECT_NEAR(a[5].value, P, 1e-9 * P);
-    EXPECT_NEAR(a[6].value, e, 1e-9);
-    EXPECT_NEAR(a[7].value, P, 1e-12 * P);
+    EXPECT_NEAR(ans(L, a, "penalty_impulse").value, P, 1e-9 * P);
+    EXPECT_NEAR(ans(L, a, "penalty_restitution").value, e, 1e-9);
+    EXPECT_NEAR(ans(L, a, "impulse").value, P, 1e-12 * P);
 
     // The study's tables: each damping ratio's e by both formulas (no pull: the spring lets go
     // at F = 0; pull: half a period, e = exp(-zeta pi / sqrt(1 - zeta^2))), and the matched zeta
