@@ -1,6 +1,9 @@
 #!/usr/bin/env bash
-# Every bundled scenario steps (exit 0, output, nothing on stderr) in every output format.
-# Usage: scenes.sh COLLIDE DIR
+# Every bundled scenario steps (exit 0, output, nothing on stderr) in every output format,
+# and the output says what it should: --json one state per output instant (t = 0, output_dt,
+# ..., duration: the count from the file's own duration and output_dt, the last at t =
+# duration), each a JSON object with the bodies; --events one line per collision, as many in
+# text as in JSON. Usage: scenes.sh COLLIDE DIR
 set -u
 collide=$1
 dir=$2
@@ -18,6 +21,25 @@ for f in "$dir"/*.toml; do
       failures=$((failures + 1))
     fi
   done
+done
+for f in "$dir"/*.toml; do
+  duration=$(sed -n 's/^duration *= *\([0-9.eE+-]*\).*/\1/p' "$f" | head -1)
+  dt=$(sed -n 's/^output_dt *= *\([0-9.eE+-]*\).*/\1/p' "$f" | head -1)
+  dt=${dt:-0.01}
+  # K = duration / output_dt, rounded when within 1e-9 of an integer, else rounded up; K + 1 states.
+  want=$(awk -v d="$duration" -v h="$dt" 'BEGIN { k = d / h; r = int(k + 0.5); if (k - r < 1e-9 && r - k < 1e-9) k = r; else k = int(k) + (k > int(k)); print k + 1 }')
+  states=$("$collide" step --json "$f" 2>/dev/null)
+  got=$(grep -c . <<<"$states")
+  [[ $got -eq $want ]] || { echo "FAIL $f --json: $got states, expected $want (duration $duration, output_dt $dt)"; failures=$((failures + 1)); }
+  [[ $(grep -c '^{"t":' <<<"$states") -eq $got ]] || { echo "FAIL $f --json: a line is not a state object"; failures=$((failures + 1)); }
+  grep -q '"bodies"' <<<"$(head -1 <<<"$states")" || { echo "FAIL $f --json: no bodies"; failures=$((failures + 1)); }
+  last_t=$(tail -1 <<<"$states" | sed 's/^{"t":\([^,]*\),.*/\1/')
+  awk -v a="$last_t" -v b="$duration" 'BEGIN { exit !(a - b < 1e-9 && b - a < 1e-9) }' ||
+    { echo "FAIL $f --json: the last state is at t = $last_t, not $duration"; failures=$((failures + 1)); }
+  events_text=$("$collide" step --events "$f" 2>/dev/null | grep -c .)
+  events_json=$("$collide" step --events --json "$f" 2>/dev/null | grep -c '^{')
+  [[ $events_text -eq $events_json ]] ||
+    { echo "FAIL $f: $events_text events in text, $events_json in JSON"; failures=$((failures + 1)); }
 done
 [[ $failures -eq 0 ]] && echo "all scenarios step"
 [[ $failures -eq 0 ]]
