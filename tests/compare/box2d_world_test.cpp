@@ -94,9 +94,31 @@ TEST(Box2DWorld, DiscOnDiscSingleContactAgreesWithClosedForm) {
 
 // ---- A single contact: a box's corner on a face --------------------------------------------
 
-// Frictionless single-point impulse on body b at lever r (a static, or both dynamic).
-Response2 single_point(const Body2& a, const Body2& b, const Vec2& p, const Vec2& n, double e) {
-    return frictionless(at_contact(a, p), at_contact(b, p), n, e);
+// The frictionless single-point impulse, written out here (PHYSICS.md), not the engine's:
+// r = p - x, u_n = (v_b + w_b x r_b - v_a - w_a x r_a) . n (2D: w x r = w (-r_y, r_x)),
+// j = -(1 + e) u_n / (1/m_a + 1/m_b + (r_a x n)^2 / I_a + (r_b x n)^2 / I_b), P = j n on b,
+// v_a' = v_a - P/m_a, w_a' = w_a - (r_a x P)/I_a, v_b' = v_b + P/m_b, w_b' = w_b + (r_b x P)/I_b
+// (a static body: 1/m = 1/I = 0).
+struct ClosedForm {
+    bool separating = false;
+    Vec2 va, vb;
+    double wa = 0, wb = 0;
+};
+ClosedForm single_point(const Body2& a, const Body2& b, const Vec2& p, const Vec2& n, double e) {
+    const auto cross = [](const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); };
+    const auto spin = [](double w, const Vec2& r) { return Vec2(-w * r.y(), w * r.x()); };
+    const Vec2 ra = p - a.position, rb = p - b.position;
+    const double un = ((b.v + spin(b.w, rb)) - (a.v + spin(a.w, ra))).dot(n);
+    ClosedForm out;
+    out.separating = un >= 0;
+    const double den = a.inv_mass() + b.inv_mass() + std::pow(cross(ra, n), 2) * a.inv_inertia() +
+                       std::pow(cross(rb, n), 2) * b.inv_inertia();
+    const Vec2 P = (-(1 + e) * un / den) * n;
+    out.va = a.v - a.inv_mass() * P;
+    out.wa = a.w - a.inv_inertia() * cross(ra, P);
+    out.vb = b.v + b.inv_mass() * P;
+    out.wb = b.w + b.inv_inertia() * cross(rb, P);
+    return out;
 }
 
 // A tilted, spinning box lands on one corner on the ground (e = 0.5).
@@ -112,7 +134,7 @@ TEST(Box2DWorld, BoxCornerOnGroundAgreesWithClosedForm) {
     const Body2& ground = s.bodies[0].body2;
     const Body2& box = s.bodies[1].body2;
     const Vec2 p = x + r;
-    const Response2 expect = single_point(ground, box, p, Vec2(0, 1), 0.5);
+    const ClosedForm expect = single_point(ground, box, p, Vec2(0, 1), 0.5);
     ASSERT_FALSE(expect.separating);
     const double scale = std::max(box.v.norm(), 0.5 * std::hypot(W, H) * std::abs(w));
 
@@ -139,8 +161,7 @@ TEST(Box2DWorld, BoxCornerOnBoxFaceAgreesWithClosedForm) {
     s.bodies.push_back(sc::rectangle("A", 0.5, 0.2, 1.0, p - r, angle, Vec2(1.5, 0.4), -2.0));
     s.bodies.push_back(sc::rectangle("B", 0.3, 0.6, 2.0, Vec2::Zero(), 0.0, Vec2(-0.2, 0.1), 0.5));
 
-    const Response2 expect =
-        single_point(s.bodies[0].body2, s.bodies[1].body2, p, Vec2(1, 0), 0.8);
+    const ClosedForm expect = single_point(s.bodies[0].body2, s.bodies[1].body2, p, Vec2(1, 0), 0.8);
     ASSERT_FALSE(expect.separating);
     const double scale = 2.0;
 
@@ -190,10 +211,10 @@ TEST(Box2DWorld, TwoPointFaceContactIsSolvedSimultaneously) {
     EXPECT_NEAR(v_sim.y(), 1.0, 1e-12);
     EXPECT_NEAR(w_sim, -1.5, 1e-12);
 
-    // The alternative: one impulse at the patch centre (the engine's frictionless formula).
+    // The alternative: one impulse at the patch centre (the closed form above).
     Body2 ground;
     ground.is_static = true;
-    const Response2 centre = single_point(ground, box, box.position + Vec2(0, -0.5 * H), n, e);
+    const ClosedForm centre = single_point(ground, box, box.position + Vec2(0, -0.5 * H), n, e);
     EXPECT_NEAR(centre.wb, w, 1e-12);
 
     const double scale = 2.0;
