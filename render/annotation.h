@@ -42,17 +42,19 @@ struct Annotation {
     // body's pose: 1D [x]; 2D [x, y, angle]; 3D [x, y, z, qw, qx, qy, qz]. A label: the number
     // it prints, at full precision (empty for names).
     std::vector<double> value;
-    std::string text;         // labels: as drawn (rich text: "r_{a}", "m s⁻¹")
+    std::string text;         // labels: as drawn (rich text: "r_{a}", "ω = 1.5 rad/s"); 3D lever
+                              // arms: their name ("r_{a}")
     ImVec4 box{0, 0, 0, 0};   // pixels (x0, y0, x1, y1): a label's box, an arrow's extent
     double sweep = 0.0;       // spin: the arc's angle, radians, + counter-clockwise as seen
     int of = -1;              // labels: the index of the item labelled; -1: none
 
     // How it is drawn (not part of annotations.json).
     Colour colour = 0;
-    bool small = false;        // labels: the small font
+    bool small = false;        // labels: the small font; bodies: with a centre-of-mass marker
     ImVec2 anchor{0, 0};       // labels: the point they belong to (pixels)
     float radius = 0.0f;       // spin: the arc's radius (pixels)
-    bool faint = false;        // the reaction −P on a: drawn lighter
+    bool faint = false;        // the reaction −P on a: drawn lighter; 2D labels: no backing
+                               // (they stand where they are: names inside bodies, +x, +y)
 };
 using Annotations = std::vector<Annotation>;
 
