@@ -147,6 +147,22 @@ struct Built {
     bool thumb = false;
 };
 
+// A collision worked out: each step's formula, then its numbers (the response's last line
+// marked as the result), its notes, and the world's note when it resolved several points.
+std::string worked_html(const SolveProblem& P, const Solution& S, const std::string& world_note) {
+    std::ostringstream o;
+    int k = 0;
+    for (const WorkedStep& st : worked_steps(P, S)) {
+        o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
+        for (std::size_t i = 0; i < st.lines.size(); ++i)
+            o << "<div class=\"math" << (st.response && i + 1 == st.lines.size() ? " result" : "") << "\">"
+              << math(st.lines[i]) << "</div>\n";
+        for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
+    }
+    if (!world_note.empty()) o << "<p class=\"note\">" << math(world_note) << "</p>\n";
+    return o.str();
+}
+
 std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
     const Lesson& L = b.lesson;
     const RenderReport& r = b.report;
@@ -193,15 +209,7 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         o << "<p class=\"note\">Conventions: the normal n points from A into B; the impulse P acts as +P on B "
              "and −P on A at the contact point; u = v<sub>pb</sub> − v<sub>pa</sub>; SI units. Model: "
           << escape(model_name(P.model)) << ".</p>\n";
-        int k = 0;
-        for (const WorkedStep& st : worked_steps(P, S)) {
-            o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
-            for (std::size_t i = 0; i < st.lines.size(); ++i)
-                o << "<div class=\"math" << (st.response && i + 1 == st.lines.size() ? " result" : "") << "\">"
-                  << math(st.lines[i]) << "</div>\n";
-            for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
-        }
-        if (!r.world_note.empty()) o << "<p class=\"note\">" << math(r.world_note) << "</p>\n";
+        o << worked_html(P, S, r.world_note);
         if (!r.later.empty()) {
             // The run's later collisions, each worked out the same way, folded.
             o << "<h2>The later collisions, worked out</h2>\n<p class=\"note\">The run has "
@@ -217,16 +225,7 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
                   << " and " << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t))
                   << " s, impulse on " << escape(c.problem.b.name) << " "
                   << escape(dc == 1 ? sig3(c.solution.P.x()) : sig3(c.solution.P.norm())) << " N s</summary>\n";
-                int k = 0;
-                for (const WorkedStep& st : worked_steps(c.problem, c.solution)) {
-                    o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
-                    for (std::size_t j = 0; j < st.lines.size(); ++j)
-                        o << "<div class=\"math" << (st.response && j + 1 == st.lines.size() ? " result" : "")
-                          << "\">" << math(st.lines[j]) << "</div>\n";
-                    for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
-                }
-                if (!c.world_note.empty()) o << "<p class=\"note\">" << math(c.world_note) << "</p>\n";
-                o << "</details>\n";
+                o << worked_html(c.problem, c.solution, c.world_note) << "</details>\n";
             }
         }
         // The table: the two bodies before and after.

@@ -108,33 +108,29 @@ double size_of(const Scene& scene, std::size_t i) {
     return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
 }
 
+// The two bodies of an event as they were just before its impulses (1D: no spin).
+void before_impulses(const Event1& e, std::vector<BodyState>* bodies) {
+    (*bodies)[e.a].v = lift_line(e.va_before);
+    (*bodies)[e.b].v = lift_line(e.vb_before);
+}
+template <int D>
+void before_impulses(const Event<D>& e, std::vector<BodyState>* bodies) {
+    (*bodies)[e.a].v = lift(e.before_a.v);
+    (*bodies)[e.a].w = lift_spin(e.before_a.w);
+    (*bodies)[e.b].v = lift(e.before_b.v);
+    (*bodies)[e.b].w = lift_spin(e.before_b.w);
+}
+
 // Every body's velocities just before the impacts of instants[which] (`pre`) and just after
 // (`post`): a body in one of its events had the event's "before" velocities (the first event
 // it is in, when it is in several); the others kept theirs through the instant.
-void instant_velocities(const Scene& scene, const Recording<1>& rec, std::size_t which, std::vector<BodyState>* pre,
+template <class Recording>
+void instant_velocities(const Scene& scene, const Recording& rec, std::size_t which, std::vector<BodyState>* pre,
                         std::vector<BodyState>* post) {
     const auto& instant = rec.instants[which];
     *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
     *pre = *post;
-    for (std::size_t k = instant.end; k-- > instant.first;) {
-        const Event1& e = rec.events[k];
-        (*pre)[e.a].v = lift_line(e.va_before);
-        (*pre)[e.b].v = lift_line(e.vb_before);
-    }
-}
-template <int D>
-void instant_velocities(const Scene& scene, const Recording<D>& rec, std::size_t which, std::vector<BodyState>* pre,
-                        std::vector<BodyState>* post) {
-    const auto& instant = rec.instants[which];
-    *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
-    *pre = *post;
-    for (std::size_t k = instant.end; k-- > instant.first;) {
-        const Event<D>& e = rec.events[k];
-        (*pre)[e.a].v = lift(e.before_a.v);
-        (*pre)[e.a].w = lift_spin(e.before_a.w);
-        (*pre)[e.b].v = lift(e.before_b.v);
-        (*pre)[e.b].w = lift_spin(e.before_b.w);
-    }
+    for (std::size_t k = instant.end; k-- > instant.first;) before_impulses(rec.events[k], pre);
 }
 
 // `frame` drawn with the velocities of `at` (the poses stay the frame's).

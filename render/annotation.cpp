@@ -21,6 +21,58 @@ const char* mark_name(Mark kind) {
     return "label";
 }
 
+std::vector<double> components(const Vec3& v, int dimension) {
+    std::vector<double> out;
+    for (int k = 0; k < dimension; ++k) out.push_back(v[k]);
+    return out;
+}
+
+std::vector<double> pose_value(const BodyState& s, int dimension) {
+    if (dimension == 1) return {s.x.x()};
+    if (dimension == 2) return {s.x.x(), s.x.y(), s.angle};
+    return {s.x.x(), s.x.y(), s.x.z(), s.q.w(), s.q.x(), s.q.y(), s.q.z()};
+}
+
+BodyState pose_of(const Annotation& body) {
+    BodyState s;
+    s.x = body.from;
+    if (body.value.size() == 3) {  // 2D
+        s.angle = body.value[2];
+        s.q = lift_angle(s.angle);
+    } else if (body.value.size() == 7) {  // 3D
+        s.q = Quat(body.value[3], body.value[4], body.value[5], body.value[6]);
+    }
+    return s;
+}
+
+Annotation arrow_annotation(Mark kind, int body, const Vec3& from, const Vec3& to, std::vector<double> value,
+                            Colour colour) {
+    Annotation a;
+    a.kind = kind;
+    a.body = body;
+    a.from = from;
+    a.to = to;
+    a.value = std::move(value);
+    a.colour = colour;
+    return a;
+}
+
+Annotation placed_label(const FontSet& fonts, LabelPlacer* placer, const Annotations& items,
+                        const LabelRequest& request, float pad, float gap) {
+    Annotation a;
+    a.kind = Mark::label;
+    a.of = request.of;
+    a.body = request.of >= 0 ? items[static_cast<std::size_t>(request.of)].body : -1;
+    a.text = request.text;
+    a.value = request.value;
+    a.colour = request.colour;
+    a.small = request.small;
+    a.anchor = request.anchor;
+    a.box = place_label_box(fonts, placer, request.small ? fonts.small : fonts.text, request.anchor,
+                            request.direction, request.text, pad, gap);
+    return a;
+}
+
 namespace {
 
 // Full precision (the shortest text that reads back as the same double is not needed: 17

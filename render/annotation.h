@@ -12,7 +12,9 @@
 
 #include <imgui.h>
 
+#include "engine/body.h"
 #include "engine/math.h"
+#include "render/draw2d.h"
 #include "render/style.h"
 
 namespace collide::render {
@@ -57,6 +59,31 @@ struct Annotation {
                                // (they stand where they are: names inside bodies, +x, +y)
 };
 using Annotations = std::vector<Annotation>;
+
+// A vector's components in the scene's dimension (1D: x; 2D: x, y): an item's value.
+std::vector<double> components(const Vec3& v, int dimension);
+// A body's pose as a body item's value: 1D [x]; 2D [x, y, angle]; 3D [x, y, z, qw, qx, qy, qz].
+std::vector<double> pose_value(const BodyState& s, int dimension);
+// The state a body item is drawn at: its centre (`from`) and its pose's angle or orientation.
+BodyState pose_of(const Annotation& body);
+// An arrow (or point) item: its kind, body, world tail and tip, value and colour.
+Annotation arrow_annotation(Mark kind, int body, const Vec3& from, const Vec3& to, std::vector<double> value,
+                            Colour colour);
+
+// A label still to be placed: the index of the item it labels, the point it belongs to and the
+// side it prefers (pixels), its text and the number it prints (empty for names).
+struct LabelRequest {
+    int of = -1;
+    ImVec2 anchor{0, 0}, direction{0, -1};
+    std::string text;
+    std::vector<double> value;
+    Colour colour = 0;
+    bool small = false;  // the small font
+};
+// The label item for `request`, its box placed by `placer` (LabelPlacer::place, `pad` and
+// `gap` as place_label's); its body is the labelled item's.
+Annotation placed_label(const FontSet& fonts, LabelPlacer* placer, const Annotations& items,
+                        const LabelRequest& request, float pad, float gap);
 
 // The items as JSON objects {"kind", "body", "from", "to", "value", "text", "box"} (and
 // "sweep" for spins, "of" for labels): points and vectors with `dimension` components, a

@@ -178,37 +178,6 @@ void DiagramView::draw_body(ImDrawList* dl, std::size_t i, const BodyState& s, b
         draw_com_marker(dl, centre, style_.lw(style_.com), c.ink, c.background, angle);
 }
 
-namespace {
-
-// A vector's components in the scene's dimension (1D: x; 2D: x, y).
-std::vector<double> components(const Vec3& v, int dimension) {
-    std::vector<double> out;
-    for (int k = 0; k < dimension; ++k) out.push_back(v[k]);
-    return out;
-}
-
-// A body's pose as annotations.json gives it (Annotation::value).
-std::vector<double> pose_value(const BodyState& s, int dimension) {
-    if (dimension == 1) return {s.x.x()};
-    if (dimension == 2) return {s.x.x(), s.x.y(), s.angle};
-    return {s.x.x(), s.x.y(), s.x.z(), s.q.w(), s.q.x(), s.q.y(), s.q.z()};
-}
-
-// The state a body item is drawn at: its centre and its pose's angle or orientation.
-BodyState pose_state(const Annotation& a, int dimension) {
-    BodyState s;
-    s.x = a.from;
-    if (dimension == 2 && a.value.size() == 3) {
-        s.angle = a.value[2];
-        s.q = lift_angle(s.angle);
-    } else if (dimension == 3 && a.value.size() == 7) {
-        s.q = Quat(a.value[3], a.value[4], a.value[5], a.value[6]);
-    }
-    return s;
-}
-
-}  // namespace
-
 Vec3 DiagramView::to_world(ImVec2 screen) const {
     const double cx = 0.5 * (viewport_.x + viewport_.z), cy = 0.5 * (viewport_.y + viewport_.w);
     return Vec3(centre_.x() + (screen.x - cx) / scale_, centre_.y() - (screen.y - cy) / scale_, 0.0);
@@ -226,13 +195,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     };
     const auto arrow_item = [&](Mark kind, int body, const Vec3& from, const Vec3& to, std::vector<double> value,
                                 Colour colour) {
-        Annotation a;
-        a.kind = kind;
-        a.body = body;
-        a.from = from;
-        a.to = to;
-        a.value = std::move(value);
-        a.colour = colour;
+        Annotation a = arrow_annotation(kind, body, from, to, std::move(value), colour);
         const ImVec2 p = to_screen(from), q = to_screen(to);
         a.box = ImVec4(std::min(p.x, q.x), std::min(p.y, q.y), std::max(p.x, q.x), std::max(p.y, q.y));
         return add(std::move(a));
@@ -273,16 +236,8 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         }
 
     // Label requests, placed at the end in this order (most important first).
-    struct Pending {
-        int of;
-        ImVec2 anchor, direction;
-        std::string text;
-        std::vector<double> value;
-        Colour colour;
-        bool small;
-    };
-    std::vector<Pending> pending;
-    std::vector<Pending> normal_labels;
+    std::vector<LabelRequest> pending;
+    std::vector<LabelRequest> normal_labels;
 
     // Collisions: r vectors, the normal, the impulses, the contact point.
     std::vector<std::size_t> role_a, role_b;
@@ -503,19 +458,9 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         }
     }
     const float pad = style_.px(3.0f), gap = style_.px(6.0f);
-    for (const Pending& p : pending) {
-        Annotation a;
-        a.kind = Mark::label;
-        a.of = p.of;
-        a.body = p.of >= 0 ? items[static_cast<std::size_t>(p.of)].body : -1;
-        a.text = p.text;
-        a.value = p.value;
-        a.colour = p.colour;
-        a.small = p.small;
-        a.anchor = p.anchor;
+    for (const LabelRequest& p : pending) {
+        Annotation a = placed_label(fonts, labels, items, p, pad, gap);
         a.from = a.to = to_world(p.anchor);
-        a.box = place_label_box(fonts, labels, p.small ? fonts.small : fonts.text, p.anchor, p.direction, p.text,
-                                pad, gap);
         add(std::move(a));
     }
     return items;
@@ -557,7 +502,7 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
         case Mark::plane:
             break;  // draw_planes
         case Mark::body:
-            draw_body(dl, static_cast<std::size_t>(a.body), pose_state(a, scene_.dimension), a.small);
+            draw_body(dl, static_cast<std::size_t>(a.body), pose_of(a), a.small);
             break;
         case Mark::lever_arm: {
             const ImVec2 d = unit(q - p);

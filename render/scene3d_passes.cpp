@@ -45,15 +45,6 @@ void arrow(std::vector<MeshDraw>* out, const Vec3& p, const Vec3& d, Colour colo
 // The arrows' thickness (m).
 double thickness(const View3d& view) { return 0.03 * view.scales.unit; }
 
-// The state a body item stands for: its centre and orientation (annotation.h's pose).
-BodyState pose_of(const Annotation& a) {
-    BodyState s;
-    s.x = a.from;
-    if (a.value.size() == 7) s.q = Quat(a.value[3], a.value[4], a.value[5], a.value[6]);
-    else if (a.value.size() == 3) s.q = lift_angle(a.value[2]);
-    return s;
-}
-
 // The bodies, shaded (a sphere with wedges, so that its spin shows); static ones grey.
 void body_pass(const View3d& view, const Annotations& items, Overlay* out) {
     const Palette& pal = view.style.colours;
@@ -266,31 +257,16 @@ Annotations annotations3d(const View3d& view, const FrameState& frame, const Dec
     const int dim = view.scene.dimension;
     const std::size_t n = std::min(frame.bodies.size(), view.scene.bodies.size());
     Annotations items;
-    // A vector in the scene's dimension (a 2D scene's spin: its number about +z).
-    const auto value = [dim](const Vec3& v) {
-        std::vector<double> out;
-        for (int c = 0; c < dim; ++c) out.push_back(v[c]);
-        return out;
-    };
+    const auto value = [dim](const Vec3& v) { return components(v, dim); };
     const auto item = [&](Mark kind, int body, const Vec3& from, const Vec3& to, std::vector<double> v,
                           Colour colour) -> Annotation& {
-        Annotation a;
-        a.kind = kind;
-        a.body = body;
-        a.from = from;
-        a.to = to;
-        a.value = std::move(v);
-        a.colour = colour;
-        items.push_back(std::move(a));
+        items.push_back(arrow_annotation(kind, body, from, to, std::move(v), colour));
         return items.back();
     };
     for (std::size_t i = 0; i < n; ++i) {
         if (!view.solids.bodies[i].drawn()) continue;
         const BodyState& s = frame.bodies[i];
-        std::vector<double> pose = value(s.x);
-        if (dim == 2) pose.push_back(s.angle);
-        if (dim == 3) pose.insert(pose.end(), {s.q.w(), s.q.x(), s.q.y(), s.q.z()});
-        item(Mark::body, static_cast<int>(i), s.x, s.x, pose, 0).small = decor.com;
+        item(Mark::body, static_cast<int>(i), s.x, s.x, pose_value(s, dim), 0).small = decor.com;
     }
     if (decor.impacts)
         for (const ImpactMark& im : frame.impacts) {

@@ -222,20 +222,12 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     const std::size_t n = std::min(frame.bodies.size(), I.scene.bodies.size());
     for (std::size_t i = 0; i < n; ++i)
         if (I.solids.bodies[i].drawn()) labels->avoid(I.screen_outline(i, frame.bodies[i]));
-    struct Pending {
-        int of;
-        ImVec2 anchor, direction;
-        std::string text;
-        std::vector<double> value;
-        Colour colour;
-        bool small;
-    };
-    std::vector<Pending> pending;
+    std::vector<LabelRequest> pending;
     const auto screen = [&cam](const Vec3& p) { return cam.project(p); };
     const auto toward = [](ImVec2 from, ImVec2 to) { return ImVec2(to.x - from.x, to.y - from.y); };
     // Impacts first (each impulse, its normal, its r vectors), then velocities and spins, then
     // the names, as before the list existed.
-    std::vector<Pending> impacts, motion;
+    std::vector<LabelRequest> impacts, motion;
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         const int of = static_cast<int>(k);
@@ -282,21 +274,8 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         pending.push_back({static_cast<int>(k), top, ImVec2(0, -1), I.scene.bodies[i].name, {}, c.ink, true});
     }
     const float pad = I.style.px(3.0f), gap = I.style.px(6.0f);
-    for (const Pending& p : pending) {
-        if (p.text.empty()) continue;
-        Annotation a;
-        a.kind = Mark::label;
-        a.of = p.of;
-        a.body = items[static_cast<std::size_t>(p.of)].body;
-        a.text = p.text;
-        a.value = p.value;
-        a.colour = p.colour;
-        a.small = p.small;
-        a.anchor = p.anchor;
-        a.box = place_label_box(fonts, labels, p.small ? fonts.small : fonts.text, p.anchor, p.direction, p.text,
-                                pad, gap);
-        items.push_back(std::move(a));
-    }
+    for (const LabelRequest& p : pending)
+        if (!p.text.empty()) items.push_back(placed_label(fonts, labels, items, p, pad, gap));
     return items;
 }
 
