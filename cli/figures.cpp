@@ -87,14 +87,15 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     out.times[2] = moments.after;
     std::vector<std::string> notes = time_notes(moments, settings.time_decimals + 1);
     if (view.directions && scene.dimension == 1) {
-        // The page's captions: a (the left block) catches b before, and does not pass it
-        // after. The arrows show the positive direction; the velocities may be negative.
-        // With the bodies' names (the page's a and b are the left and the right block).
-        const std::size_t a = moments.instant.a, b = moments.instant.b;
-        const std::string A = scene.bodies[a].name, B = scene.bodies[b].name;
-        const double va = moments.states[2].bodies[a].v.x(), vb = moments.states[2].bodies[b].v.x();
-        notes[0] += "     v_{" + A + "i} > v_{" + B + "i}";
-        notes[2] += "     v_{" + A + "f}" + (va <= vb ? " \u2264 " : " > ") + "v_{" + B + "f}";
+        // The page's captions: the left block catches the right one before, and does not pass
+        // it after. The arrows show the positive direction; the velocities may be negative.
+        // With the bodies' names, whichever of them the lesson calls a.
+        std::size_t left = moments.instant.a, right = moments.instant.b;
+        if (moments.states[1].bodies[left].x.x() > moments.states[1].bodies[right].x.x()) std::swap(left, right);
+        const std::string L = scene.bodies[left].name, R = scene.bodies[right].name;
+        const double vl = moments.states[2].bodies[left].v.x(), vr = moments.states[2].bodies[right].v.x();
+        notes[0] += "     v_{" + L + "i} > v_{" + R + "i}";
+        notes[2] += "     v_{" + L + "f}" + (vl <= vr ? " \u2264 " : " > ") + "v_{" + R + "f}";
     }
     out.figure = render::compose_figure(context, out.panels, {"before", "at collision", "after"}, notes, height);
     out.panel = panel;
@@ -142,12 +143,13 @@ std::string annotations_json(const Scene& scene, const Figure* figure) {
 }
 
 Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
-                    const PictureOut& out) {
+                    const PictureOut& out, int number) {
     Figure fig = collision_figure(context, shots.scene, shots.view, settings, shots.moments);
-    render::write_file_atomic(out.dir + "/annotations.json", annotations_json(shots.scene, &fig));
-    // A thumbnail (lesson indexes): the collision panel, 480 pixels wide.
-    write_png(out, "thumb.png", render::shrink(fig.panels[1], 480));
-    write_png(out, "figure.png", fig.figure);
+    const std::string suffix = number > 1 ? "-" + std::to_string(number) : "";
+    render::write_file_atomic(out.dir + "/annotations" + suffix + ".json", annotations_json(shots.scene, &fig));
+    // A thumbnail (lesson indexes): the first figure's collision panel, 480 pixels wide.
+    if (number <= 1) write_png(out, "thumb.png", render::shrink(fig.panels[1], 480));
+    write_png(out, "figure" + suffix + ".png", fig.figure);
     return fig;
 }
 

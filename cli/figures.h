@@ -61,9 +61,9 @@ void write_stills(render::Renderer& frames, const CollisionShots& shots, const P
 // ("panels": {} when there is no figure: `figure` null, the run has no collision).
 std::string annotations_json(const Scene& scene, const Figure* figure);
 // figure.png, thumb.png (the collision panel, 480 pixels wide) and annotations.json; returns
-// the figure.
+// the figure. A lesson's next figures are number 2, 3, ...: figure-K.png and annotations-K.json.
 Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
-                    const PictureOut& out);
+                    const PictureOut& out, int number = 1);
 // variants.png: the same three moments of each row, framed alike with `figure`'s panels.
 void write_variants(render::GlContext& context, const std::vector<VariantRow>& rows,
                     const render::RenderSettings& settings, const Figure& figure, const PictureOut& out);

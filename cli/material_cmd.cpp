@@ -178,16 +178,24 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         o << "</ul>\n";
     }
     o << "<h2>Explanation</h2>\n" << paragraphs(L.explanation);
-    if (r.problem) {
-        const std::string alt = r.solution ? figure_alt(*r.problem, *r.solution, r.first_collision->t)
-                                           : "The bodies before, at and after the first collision";
-        o << "<figure><a href=\"figure.png\" title=\"Open the figure at full size\"><img src=\"figure.png\" alt=\""
-          << escape(alt) << "\"></a>"
-             "<figcaption>Before, at and after the first collision (t = "
-          << escape(n(r.first_collision->t)) << " s), from the simulation.";
-        if (L.view.directions) o << " Grey arrows: the positive directions (velocities may be negative).";
-        o << " Click it to see it at full size.</figcaption></figure>\n";
-    }
+    // The figures: the collision each shows, before, at and after; the first above the
+    // animation, the next ones with their worked examples below it.
+    const auto figure_html = [&](const RenderReport::Shown& f) {
+        std::ostringstream h;
+        const std::string alt = figure_alt(f.problem, f.solution, f.instant.t);
+        const std::string what = f.caption.empty() ? (&f == &r.figures.front() && L.figures.empty()
+                                                          ? "Before, at and after the first collision"
+                                                          : "Before, at and after the collision of " + f.problem.a.name +
+                                                                " (a) and " + f.problem.b.name + " (b)")
+                                                   : f.caption;
+        h << "<figure><a href=\"" << f.file << "\" title=\"Open the figure at full size\"><img src=\"" << f.file
+          << "\" alt=\"" << escape(alt) << "\"></a><figcaption>" << math(what) << " (t = " << escape(n(f.instant.t))
+          << " s), from the simulation.";
+        if (L.view.directions) h << " Grey arrows: the positive directions (velocities may be negative).";
+        h << " Click it to see it at full size.</figcaption></figure>\n";
+        return h.str();
+    };
+    if (!r.figures.empty()) o << figure_html(r.figures.front());
     // The animation is for the screen: a printed page leaves the section out.
     o << "<section class=\"animation noprint\">\n<h2>Animation</h2>\n";
     if (r.video == "animation.mp4") {
@@ -205,23 +213,31 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
     if (r.problem && r.solution) {
         const SolveProblem& P = *r.problem;
         const Solution& S = *r.solution;
-        o << "<h2>The first collision, worked out</h2>\n";
+        o << "<h2>" << (L.figures.empty() ? std::string("The first collision, worked out")
+                                          : "The collision of " + escape(P.a.name) + " and " + escape(P.b.name) +
+                                                ", worked out")
+          << "</h2>\n";
         o << "<p class=\"note\">Conventions: the normal n points from A into B; the impulse P acts as +P on B "
              "and −P on A at the contact point; u = v<sub>pb</sub> − v<sub>pa</sub>; SI units. Model: "
           << escape(model_name(P.model)) << ".</p>\n";
         o << worked_html(P, S, r.world_note);
+        // The lesson's next figures, each with its collision worked out.
+        for (std::size_t k = 1; k < r.figures.size(); ++k) {
+            const RenderReport::Shown& f = r.figures[k];
+            o << "<h2>The collision of " << escape(f.problem.a.name) << " and " << escape(f.problem.b.name)
+              << ", worked out</h2>\n" << figure_html(f) << worked_html(f.problem, f.solution, f.world_note);
+        }
         if (!r.later.empty()) {
             // The run's later collisions, each worked out the same way, folded.
-            o << "<h2>The later collisions, worked out</h2>\n<p class=\"note\">The run has "
-              << r.collision_times.size() << " collisions"
-              << (r.later.size() + 1 < r.collision_times.size() ? "; the first " + std::to_string(r.later.size() + 1) +
-                                                                      " are worked out here"
-                                                                : "")
+            const std::size_t worked = r.later.size() + r.figures.size();
+            o << "<h2>" << (L.figures.empty() ? "The later collisions" : "The other collisions")
+              << ", worked out</h2>\n<p class=\"note\">The run has " << r.collision_times.size() << " collisions"
+              << (worked < r.collision_times.size() ? "; " + std::to_string(worked) + " are worked out here" : "")
               << ". Open one to see it step by step.</p>\n";
             for (std::size_t i = 0; i < r.later.size(); ++i) {
                 const RenderReport::Later& c = r.later[i];
                 const int dc = c.problem.dimension;
-                o << "<details class=\"later\"><summary>Collision " << i + 2 << ": " << escape(c.problem.a.name)
+                o << "<details class=\"later\"><summary>" << escape(c.problem.a.name)
                   << " and " << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t))
                   << " s, impulse on " << escape(c.problem.b.name) << " "
                   << escape(dc == 1 ? sig3(c.solution.P.x()) : sig3(c.solution.P.norm())) << " N s</summary>\n";

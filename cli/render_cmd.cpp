@@ -139,6 +139,13 @@ void prepare_directory(const RenderRequest& rq) {
         const std::string name = e.path().filename().string();
         if (name.rfind("frame_", 0) == 0 && e.path().extension() == ".png") fs::remove(e.path(), ec);
     }
+    // A lesson's next figures (figure-2.png, annotations-2.json, ...) from an earlier render.
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
+        const std::string name = e.path().filename().string();
+        if ((name.rfind("figure-", 0) == 0 && e.path().extension() == ".png") ||
+            (name.rfind("annotations-", 0) == 0 && e.path().extension() == ".json"))
+            fs::remove(e.path(), ec);
+    }
     for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "variants.png", "worked-example.md",
                              "lesson.md", "penalty.svg", "penalty-overlap.svg", "penalty.csv", "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
@@ -212,21 +219,43 @@ Ran run_stage(const Loaded& in) {
     return out;
 }
 
-// 3. Analyse: the first collision's moments and worked example, and a lesson's variants (each
-// run once, sampled as the lesson's own scene). Nothing here without a collision.
+// 3. Analyse: the collisions the figures show (a lesson's [[figure]] entries, else the run's
+// first collision), their moments and worked examples, and a lesson's variants (each run once,
+// sampled as the lesson's own scene). Nothing here without a collision.
+struct Shot {
+    Moments moments;
+    WorkedExample worked;
+    std::string caption;
+};
 struct Analysis {
-    std::optional<Moments> moments;
+    std::optional<Moments> moments;               // figure.png's collision
     std::optional<WorkedExample> worked;
+    std::string caption;                          // its [[figure]] caption, if any
+    std::vector<Shot> more;                       // figure-2.png, ...: the lesson's next figures
     std::vector<RenderReport::Variant> variants;  // the lesson's scene, then each variant
     std::vector<VariantRow> rows;                 // variants.png: those with a collision
 };
+
+// What a lesson's [[figure]] entries pick (none: the run's first collision).
+std::vector<CollisionPick> lesson_picks(const Loaded& in) {
+    std::vector<CollisionPick> picks;
+    if (in.lesson)
+        for (const LessonFigure& f : in.lesson->figures) picks.push_back({f.ia, f.ib, f.collision});
+    return picks;
+}
+
+std::optional<Moments> pick_moments(const Scene& scene, const SceneRun& run, const std::vector<CollisionPick>& picks) {
+    return picks.empty() ? first_moments(scene, run) : collision_moments(scene, run, picks.front());
+}
 
 void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
     std::vector<std::pair<std::string, const Scene*>> scenes = {
         {in.lesson->label.empty() ? "as above" : in.lesson->label, &in.scene}};
     for (const LessonVariant& v : in.lesson->variants) scenes.push_back({v.label, &v.scene});
+    const std::vector<CollisionPick> picks = lesson_picks(in);
     for (const auto& [label, s] : scenes) {
-        const std::optional<Moments> m = s == &in.scene ? moments : first_moments(*s, run_scene(*s, in.times));
+        // Each variant at its own collision: the one the lesson's first figure picks.
+        const std::optional<Moments> m = s == &in.scene ? moments : pick_moments(*s, run_scene(*s, in.times), picks);
         RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
         if (m) {
             result.first = m->instant;
@@ -240,7 +269,33 @@ void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
 
 Analysis analyse_stage(const Loaded& in, const SceneRun& run) {
     Analysis out;
-    out.moments = first_moments(in.scene, run);
+    const std::vector<CollisionPick> picks = lesson_picks(in);
+    if (picks.empty()) {
+        out.moments = first_moments(in.scene, run);
+    } else {
+        // A figure whose collision the run does not have is a mistake in the lesson: said
+        // before anything is written.
+        for (std::size_t k = 0; k < picks.size(); ++k) {
+            const LessonFigure& f = in.lesson->figures[k];
+            std::optional<Moments> m = collision_moments(in.scene, run, picks[k]);
+            if (!m) {
+                const int n = pair_collisions(run, f.ia, f.ib);
+                const std::string times = n == 0 ? "never collide" : n == 1 ? "collide only once" :
+                                          "collide only " + std::to_string(n) + " times";
+                throw InputError(in.lesson->file, f.pos, f.key,
+                                 "'" + f.a + "' and '" + f.b + "' " + times + " in the run's first " +
+                                     std::to_string(RecordOptions{}.instants) +
+                                     " collision instants, so there is no collision " + std::to_string(f.collision) +
+                                     " to show");
+            }
+            if (k == 0) {
+                out.moments = std::move(m);
+                out.caption = f.caption;
+            } else {
+                out.more.push_back({*m, worked_example(in.scene, m->instant), f.caption});
+            }
+        }
+    }
     if (!out.moments) return out;
     out.worked = worked_example(in.scene, out.moments->instant);
     if (in.lesson && !in.lesson->variants.empty()) analyse_variants(in, *out.moments, &out);
@@ -323,6 +378,9 @@ double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun&
         const PictureOut out{rq.out_dir, rq.frame.quality.png};
         write_stills(renderer, shots, out);
         const Figure figure = write_figure(*context, shots, settings, out);
+        for (std::size_t k = 0; k < a.more.size(); ++k)
+            write_figure(*context, CollisionShots{in.scene, in.view, run, a.more[k].moments}, settings, out,
+                         static_cast<int>(k + 2));
         if (!a.rows.empty()) write_variants(*context, a.rows, settings, figure, out);
     } else {
         render::write_file_atomic(rq.out_dir + "/annotations.json", annotations_json(in.scene, nullptr));
@@ -382,10 +440,26 @@ RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, 
         r.solution = a.worked->solution;
         r.world_note = a.worked->formula.note;
     }
-    if (a.moments) r.first_collision = a.moments->instant;
+    if (a.moments) {
+        r.first_collision = a.moments->instant;
+        r.figures.push_back({a.moments->instant, r.problem ? *r.problem : SolveProblem{},
+                             r.solution ? *r.solution : Solution{}, r.world_note, a.caption, "figure.png"});
+    }
+    std::vector<std::size_t> shown;  // the events the figures work out
+    if (a.moments) shown.push_back(a.moments->event);
+    for (std::size_t k = 0; k < a.more.size(); ++k) {
+        const Shot& s = a.more[k];
+        r.figures.push_back({s.moments.instant, s.worked.problem, s.worked.solution, s.worked.formula.note, s.caption,
+                             "figure-" + std::to_string(k + 2) + ".png"});
+        shown.push_back(s.moments.event);
+    }
     std::visit([&](const auto& rec) {
-        for (std::size_t k = 1; k < rec.events.size() && r.later.size() < RenderReport::kLaterCollisions; ++k) {
-            const CollisionInstant c = collision_instant(rec.events[k]);
+        for (std::size_t k = 0; k < rec.events.size() && r.later.size() < RenderReport::kLaterCollisions; ++k) {
+            if (std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
+            // In the lesson's roles, as its figures name the pair.
+            CollisionInstant c = collision_instant(rec.events[k]);
+            if (r.lesson)
+                for (const LessonFigure& f : r.lesson->figures) c = with_roles(c, f.ia, f.ib);
             WorkedExample w = worked_example(r.scene, c);
             r.later.push_back({c, std::move(w.problem), std::move(w.solution), std::move(w.formula.note)});
         }

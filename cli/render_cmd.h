@@ -39,8 +39,8 @@ struct RenderReport {
     std::optional<CollisionInstant> first_collision;
     std::string world_note;  // when the world resolved several points there (the formula box's note)
     std::vector<double> collision_times;       // s, every collision of the run
-    // The run's next collisions after the first (at most kLaterCollisions), each worked out
-    // as the first is: the site explains them below it.
+    // The run's collisions the figures do not show (at most kLaterCollisions), each worked
+    // out as those are: the site explains them below them.
     struct Later {
         CollisionInstant instant;
         SolveProblem problem;
@@ -48,7 +48,18 @@ struct RenderReport {
         std::string world_note;
     };
     static constexpr std::size_t kLaterCollisions = 8;
-    std::vector<Later> later;
+    std::vector<Later> later;  // the run's other collisions, in time order
+    // The collisions the figures show, each worked out: figure.png's (the first collision,
+    // or a lesson's first [[figure]]), then a lesson's next [[figure]] entries (figure-2.png, ...).
+    struct Shown {
+        CollisionInstant instant;
+        SolveProblem problem;
+        Solution solution;
+        std::string world_note;
+        std::string caption;  // the [[figure]]'s, or ""
+        std::string file;     // "figure.png", "figure-2.png", ...
+    };
+    std::vector<Shown> figures;
     // A lesson's scene and its variants side by side (variants.png): the first collision of
     // each (none when it has none).
     struct Variant {

@@ -141,10 +141,52 @@ void with_velocities(const std::vector<BodyState>& at, FrameState* frame) {
     }
 }
 
+// The two bodies of an event as they are just after its impulses.
+void after_impulses(const Event1& e, std::vector<BodyState>* bodies) {
+    (*bodies)[e.a].v = lift_line(e.va_after);
+    (*bodies)[e.b].v = lift_line(e.vb_after);
+}
 template <int D>
-Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& rec) {
-    const typename Recording<D>::Instant& instant = rec.instants.front();  // the first collision's
-    const auto& first = rec.events.front();
+void after_impulses(const Event<D>& e, std::vector<BodyState>* bodies) {
+    (*bodies)[e.a].v = lift(e.after_a.v);
+    (*bodies)[e.a].w = lift_spin(e.after_a.w);
+    (*bodies)[e.b].v = lift(e.after_b.v);
+    (*bodies)[e.b].w = lift_spin(e.after_b.w);
+}
+
+// The events of `pick`: those of its pair in the pick.order-th recorded instant where that
+// pair collides, as [first, end) within it; false when the run has no such collision.
+template <class Recording>
+bool find_pick(const Recording& rec, const CollisionPick& pick, std::size_t* which, std::size_t* first,
+               std::size_t* end) {
+    int seen = 0;
+    for (std::size_t i = 0; i < rec.instants.size(); ++i) {
+        const auto& in = rec.instants[i];
+        std::size_t f = in.end, l = in.end;
+        for (std::size_t k = in.first; k < in.end; ++k) {
+            const auto& e = rec.events[k];
+            if ((e.a == pick.a && e.b == pick.b) || (e.a == pick.b && e.b == pick.a)) {
+                if (f == in.end) f = k;
+                l = k + 1;
+            }
+        }
+        if (f != in.end && ++seen == pick.order) {
+            *which = i;
+            *first = f;
+            *end = l;
+            return true;
+        }
+    }
+    return false;
+}
+
+template <int D>
+std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& rec,
+                                  const CollisionPick& pick) {
+    std::size_t which = 0, first_event = 0, end_event = 0;
+    if (!find_pick(rec, pick, &which, &first_event, &end_event)) return std::nullopt;
+    const typename Recording<D>::Instant& instant = rec.instants[which];
+    const auto& first = rec.events[first_event];
     const double te = instant.t;
     // A moment long enough for the bodies to move visibly: half the smaller body's size at
     // their approach speed (from the last sample before the collision).
@@ -175,7 +217,18 @@ Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& 
     m.before = t[kb];
     m.states[0] = run.frames[kb];
     m.states[1] = render::frame_state(scene, te, instant.bodies);
-    for (std::size_t k = instant.first; k < instant.end; ++k) m.states[1].impacts.push_back(run.impacts[k]);
+    // The instant's impacts of this pair only (a cradle's next contact is its own figure),
+    // or all of them for the whole instant.
+    if (pick.whole_instant) {
+        first_event = instant.first;
+        end_event = instant.end;
+    }
+    const std::size_t event = static_cast<std::size_t>(&first - rec.events.data());
+    for (std::size_t k = first_event; k < end_event; ++k) {
+        const auto& e = rec.events[k];
+        if (pick.whole_instant || (e.a == pick.a && e.b == pick.b) || (e.a == pick.b && e.b == pick.a))
+            m.states[1].impacts.push_back(with_roles(run.impacts[k], pick.a, pick.b));
+    }
     const double target = std::min({scene.duration, te + dt, te + 0.5 * (next - te)});
     std::size_t ka = 0;  // the first sample at or after the target, before the next collision
     while (ka < t.size() && t[ka] < target) ++ka;
@@ -191,17 +244,44 @@ Moments moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& 
         m.after = te;
         m.states[2] = render::frame_state(scene, te, instant.bodies);
     }
-    // The numbers of the instant: "before" and "after" show the velocities just before and
-    // just after the impacts (the page's meaning; with gravity the recorded frames' differ).
+    // The numbers of the collision: "before" and "after" show the velocities just before and
+    // just after its impacts (the page's meaning; with gravity the recorded frames' differ).
+    // Within an instant resolved one contact after another, the contacts before this pair's
+    // have acted already, and those after it not yet.
     std::vector<BodyState> pre, post;
-    instant_velocities(scene, rec, 0, &pre, &post);
+    instant_velocities(scene, rec, which, &pre, &post);
+    if (scene.policy == Policy::sequential)
+        for (std::size_t k = instant.first; k < first_event; ++k) after_impulses(rec.events[k], &pre);
+    before_impulses(first, &pre);
+    post = pre;
+    for (std::size_t k = first_event; k < end_event; ++k) after_impulses(rec.events[k], &post);
     with_velocities(pre, &m.states[0]);
     with_velocities(post, &m.states[2]);
-    m.instant = collision_instant(first);
+    m.instant = with_roles(collision_instant(first), pick.a, pick.b);
+    m.event = event;
     return m;
 }
 
 }  // namespace
+
+int pair_collisions(const SceneRun& run, std::size_t a, std::size_t b) {
+    return visit_record(run, [&](const auto& rec) {
+        int n = 0;
+        std::size_t which = 0, first = 0, end = 0;
+        while (find_pick(rec, CollisionPick{a, b, n + 1}, &which, &first, &end)) ++n;
+        return n;
+    });
+}
+
+render::ImpactMark with_roles(const render::ImpactMark& mark, std::size_t a, std::size_t b) {
+    if (mark.a != b || mark.b != a) return mark;
+    render::ImpactMark out = mark;
+    out.a = mark.b;
+    out.b = mark.a;
+    out.normal = -mark.normal;
+    out.impulse = -mark.impulse;
+    return out;
+}
 
 SceneRun run_scene(const Scene& scene, const std::vector<double>& times) {
     SceneRun run;
@@ -253,8 +333,12 @@ std::vector<InstantTotals> instant_totals(const Scene& scene, const SceneRun& ru
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run) {
     return visit_record(run, [&](const auto& rec) -> std::optional<Moments> {
         if (rec.events.empty()) return std::nullopt;
-        return moments_of(scene, run, rec);
+        return moments_of(scene, run, rec, CollisionPick{rec.events.front().a, rec.events.front().b, 1, true});
     });
+}
+
+std::optional<Moments> collision_moments(const Scene& scene, const SceneRun& run, const CollisionPick& pick) {
+    return visit_record(run, [&](const auto& rec) { return moments_of(scene, run, rec, pick); });
 }
 
 }  // namespace collide

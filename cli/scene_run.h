@@ -40,9 +40,30 @@ DataFiles data_files(const Scene& scene, const SceneRun& run);
 struct Moments {
     double before = 0, at = 0, after = 0;   // s
     render::FrameState states[3];           // at those times; states[1] has the instant's impacts
-    CollisionInstant instant;               // the first collision, the bodies where they touch
+    CollisionInstant instant;               // the collision, the bodies where they touch
+    std::size_t event = 0;                  // its (first) event's index in the run
 };
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run);
+
+// A collision to show: the `order`-th recorded instant (from 1) at which bodies a and b
+// collide, with a as body a and b as body b (teach/event_problem.h with_roles).
+struct CollisionPick {
+    std::size_t a = 0, b = 0;
+    int order = 1;
+    bool whole_instant = false;  // every impact of that instant, before and after all of them
+};
+// Its moments, as first_moments gives the first collision's; the "at" state holds only this
+// pair's impacts, and before / after carry the velocities just before and just after them
+// (in an instant resolved one contact after another, the earlier contacts have acted).
+// nullopt when the run has no such collision among its recorded instants.
+std::optional<Moments> collision_moments(const Scene& scene, const SceneRun& run, const CollisionPick& pick);
+
+// How many recorded instants of the run have a collision of bodies a and b.
+int pair_collisions(const SceneRun& run, std::size_t a, std::size_t b);
+
+// An impact drawn with the roles given (with_roles for the mark): the same impulse and normal
+// with a and b swapped when the engine found them the other way round.
+render::ImpactMark with_roles(const render::ImpactMark& mark, std::size_t a, std::size_t b);
 
 // The totals (energies, momentum) just before and just after each recorded collision instant
 // (the first RecordOptions::instants of the run), exact: plots step there instead of

@@ -81,7 +81,7 @@ const std::map<std::string, QuantityInfo>& quantity_table() {
 }
 const std::vector<std::string>& lesson_tables() {
 
-    static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty"};
+    static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty", "figure"};
     return tables;
 }
 
@@ -162,6 +162,51 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
                        "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs only "
                        "in 3D scenes with policy = \"sequential\"");
             L.variants.push_back(std::move(V));
+        }
+    }
+
+    // [[figure]]: the collisions the lesson is about, with the roles a and b it gives them.
+    if (const toml::node* list = root.node("figure")) {
+        const toml::array* fs = list->as_array();
+        if (!fs) root.fail("figure", "expected [[figure]] tables");
+        std::vector<std::string> names;
+        for (const SceneBody& b : L.scene.bodies) names.push_back(b.name);
+        for (std::size_t i = 0; i < fs->size(); ++i) {
+            const toml::table* t = fs->get(i)->as_table();
+            const std::string key = "figure[" + std::to_string(i + 1) + "]";
+            if (!t) root.fail("figure", key + " is not a table; write [[figure]]");
+            const TableReader f(*t, name, key);
+            f.allow_only({"a", "b", "collision", "caption"});
+            LessonFigure F;
+            F.key = key;
+            F.pos = f.table_pos();
+            const auto body = [&](const char* role, std::size_t* index) {
+                const std::string who = f.string(role, "a body's name").value_or("");
+                if (who.empty())
+                    f.fail(role, std::string("missing key '") + role + "' (the body the figure calls " + role + ")");
+                const auto it = std::find(names.begin(), names.end(), who);
+                if (it == names.end()) {
+                    const std::string hint = closest_match(who, names);
+                    f.fail(role, "no body named '" + who + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+                }
+                *index = static_cast<std::size_t>(it - names.begin());
+                return who;
+            };
+            F.a = body("a", &F.ia);
+            F.b = body("b", &F.ib);
+            if (F.ia == F.ib) f.fail("b", "a and b are the same body '" + F.a + "'");
+            const long long k = f.integer("collision", "which collision of a and b, from 1").value_or(1);
+            if (k < 1 || k > 1000000) f.fail("collision", "expected a collision number from 1, got " + std::to_string(k));
+            F.collision = static_cast<int>(k);
+            F.caption = f.string("caption", "the figure's caption (text)").value_or("");
+            for (const LessonFigure& G : L.figures) {
+                if ((G.ia == F.ib && G.ib == F.ia))
+                    f.fail("a", G.key + " calls '" + G.a + "' a and '" + G.b +
+                                    "' b: one lesson gives a pair of bodies one pair of roles");
+                if (G.ia == F.ia && G.ib == F.ib && G.collision == F.collision)
+                    f.fail("collision", "the same collision as " + G.key);
+            }
+            L.figures.push_back(std::move(F));
         }
     }
 

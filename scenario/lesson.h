@@ -31,6 +31,21 @@ struct LessonVariant {
     Scene scene;              // the lesson's scene with the variant's settings
 };
 
+// [[figure]]: a collision the lesson is about, shown as its own before / at / after figure and
+// worked out on its own: the `collision`-th time (from 1) that bodies a and b collide, drawn
+// and worked out with a as the page's body a and b as its body b (the normal n points from a
+// into b, b receives +P) whatever order the engine found them in. The first entry is
+// figure.png (and the worked example, stills and annotations.json); each next one is
+// figure-K.png. The roles hold for every collision of that pair: answers, later collisions.
+struct LessonFigure {
+    std::string a, b;            // the bodies' names
+    std::size_t ia = 0, ib = 0;  // their scene indices
+    int collision = 1;           // which collision of the pair, in time order, from 1
+    std::string caption;         // optional: what the figure shows, in the lesson's words
+    SourcePos pos;               // of the entry (for errors found when the scene is run)
+    std::string key;             // "figure[K]"
+};
+
 // [penalty] (1D lessons, README.md "Lessons"): the first collision again with a penalty
 // (spring-damper) contact instead of the impulse (engine/penalty.h, teach/lesson_penalty.h).
 struct LessonPenalty {
@@ -58,6 +73,7 @@ struct Lesson {
     std::string label;        // the scene's own label beside its variants (e.g. "e = 0.5")
     std::vector<LessonVariant> variants;
     std::optional<LessonPenalty> penalty;
+    std::vector<LessonFigure> figures;  // [[figure]] entries, in order (may be empty)
     SceneView view;
 };
 

@@ -68,7 +68,10 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
     std::map<std::size_t, CollisionInstant> instants;
     const auto instant = [&](std::size_t k) -> const CollisionInstant& {
         if (auto it = instants.find(k); it != instants.end()) return it->second;
-        return instants.emplace(k, collision_instant(events[k])).first->second;
+        // In the lesson's roles: a [[figure]] naming this pair says which body is a.
+        CollisionInstant c = collision_instant(events[k]);
+        for (const LessonFigure& f : L.figures) c = with_roles(c, f.ia, f.ib);
+        return instants.emplace(k, c).first->second;
     };
     const auto body_index = [&](const std::string& name) {
         for (std::size_t i = 0; i < scene.bodies.size(); ++i)

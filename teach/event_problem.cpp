@@ -92,6 +92,22 @@ CollisionInstant collision_instant(const Event1& e) {
 CollisionInstant collision_instant(const Event2& e) { return instant(e); }
 CollisionInstant collision_instant(const Event3& e) { return instant(e); }
 
+CollisionInstant with_roles(const CollisionInstant& c, std::size_t a, std::size_t b) {
+    if (c.a != b || c.b != a) return c;
+    CollisionInstant out = c;
+    out.a = c.b;
+    out.b = c.a;
+    out.normal = -c.normal;
+    out.impulse = -c.impulse;  // what the new b (the old a) received
+    out.before_a = c.before_b;
+    out.before_b = c.before_a;
+    out.va_after = c.vb_after;
+    out.wa_after = c.wb_after;
+    out.vb_after = c.va_after;
+    out.wb_after = c.wa_after;
+    return out;
+}
+
 double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after) {
     // The collision problem's bodies carry the scene's mass and inertia and the instant's
     // pose; only their velocities change.
@@ -130,7 +146,7 @@ SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c) {
     p.model = scene.model;
     p.restitution = scene.pair_restitution(c.a, c.b);
     p.friction = scene.pair_friction(c.a, c.b);
-    p.normal = scene.dimension == 1 ? Vec3::UnitX() : c.normal;
+    p.normal = c.normal;  // 1D: +x, or -x when b is the left block
     p.point = c.point;
     p.about = Vec3::Zero();
     p.a = solve_body(scene, c.a, c.before_a);

@@ -38,6 +38,11 @@ CollisionInstant collision_instant(const Event1& e);
 CollisionInstant collision_instant(const Event2& e);
 CollisionInstant collision_instant(const Event3& e);
 
+// The same collision with the roles given: `a` as body a and `b` as body b. When the engine
+// found them the other way round, the bodies swap sides and the normal and the impulse change
+// sign (n from a into b, +P on b): the same physics in the other names. Unchanged otherwise.
+CollisionInstant with_roles(const CollisionInstant& c, std::size_t a, std::size_t b);
+
 // The problem: the bodies' masses and inertia from the scene, their state from `c`, the
 // pair's restitution and friction (Scene::pair_restitution / pair_friction), the scene's
 // model; angular momentum about the origin.

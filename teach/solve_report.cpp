@@ -72,6 +72,8 @@ private:
 
     F V(const Vec3& v) const { return vec(v, d); }
     F W(const Vec3& w) const { return spin(w, d); }
+    // After an operator: a negative 1D value in parentheses (vectors carry their own).
+    F Vp(const Vec3& v) const { return d == 1 ? paren(v.x()) : vec(v, d); }
     // After an operator: a negative 2D spin in parentheses.
     F Wp(const Vec3& w) const { return d == 2 ? paren(w.z()) : spin(w, d); }
     static F paren(double x) { return x < 0 ? f("(") + num(x) + f(")") : num(x); }
@@ -370,7 +372,7 @@ private:
                 continue;
             }
             lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + sign + "P/" + sym("m", c) + " = ") +
-                            V(v0) + f(sign) + V(s.P) + f(" / ") + num(body(c).b3.mass) +
+                            V(v0) + f(sign) + Vp(s.P) + f(" / ") + num(body(c).b3.mass) +
                             f(" = ") + V(v) + unit("m/s"));
             if (d >= 2) {
                 const std::string torque = d == 2 ? "(" + sym("r", c) + " × P)/" + sym("I", c)

@@ -251,6 +251,41 @@ TEST(RenderCommand, ThePlotsStepExactlyAtEachCollision) {
     EXPECT_EQ(r.plot_t.size(), r.plot_totals.size());
 }
 
+// Lesson 2 names A (right, 2 kg, 0.3 m/s) as a and B (left, 1 kg, 1.5 m/s) as b, as the page
+// does: n = -x from A into B, and B receives the page's J = (1 + e) m_a m_b (v_a - v_b) / (m_a + m_b)
+// = 1.5 x 2 x 1 x (0.3 - 1.5) / 3 = -1.2 N s, negative; the figure draws it on B.
+TEST(RenderCommand, AReversedLessonWorksOutTheNegativeJInItsOwnRoles) {
+    const render::test::TempDir dir;
+    const std::string lesson = std::string(COLLIDE_SOURCE_DIR) + "/lessons/02-reversed.toml";
+    std::ostringstream err;
+    const RenderReport r = render_scenario(parse_render_request(tiny(lesson, dir / "out")), err);
+    ASSERT_TRUE(r.problem && r.solution);
+    EXPECT_EQ(r.problem->a.name, "A");
+    EXPECT_EQ(r.problem->b.name, "B");
+    EXPECT_EQ(r.problem->normal.x(), -1.0);
+    EXPECT_NEAR(r.solution->P.x(), 1.5 * 2 * 1 * (0.3 - 1.5) / 3, 1e-12);
+    EXPECT_NEAR(r.solution->va.x(), 0.3 - (-1.2) / 2, 1e-12);
+    EXPECT_NEAR(r.solution->vb.x(), 1.5 + (-1.2) / 1, 1e-12);
+    std::ifstream in(dir / "out/annotations.json");
+    const nlohmann::json doc = nlohmann::json::parse(in);
+    int on_b = 0;
+    for (const nlohmann::json& it : doc["panels"]["at"]) {
+        if (it["kind"] != "impulse") continue;
+        const double P = it["value"].is_array() ? it["value"][0].get<double>() : it["value"].get<double>();
+        if (it["body"] == "B") {
+            EXPECT_NEAR(P, -1.2, 1e-9);
+            ++on_b;
+        } else {
+            EXPECT_EQ(it["body"], "A");
+            EXPECT_NEAR(P, 1.2, 1e-9);
+        }
+    }
+    EXPECT_EQ(on_b, 1);
+    std::ifstream md(dir / "out/worked-example.md");
+    const std::string text((std::istreambuf_iterator<char>(md)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("P = j n = -1.2"), std::string::npos) << text;
+}
+
 TEST(RenderCommand, RefusesANonEmptyDirectoryUnlessForced) {
     render::test::TempDir dir;
     const std::string scenario = write(dir, "s.toml", kCollision2d);

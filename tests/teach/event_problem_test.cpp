@@ -53,6 +53,20 @@ v = -1.0
     EXPECT_NEAR(s.P.x(), expected, 1e-12);
     EXPECT_NEAR(s.P.x(), e.impulse, 1e-12);
     EXPECT_NEAR(s.vb.x(), e.vb_after, 1e-12);
+
+    // The same collision with the right block as a (a lesson's roles): n = -x from a into b,
+    // and the left block, now b, receives P = -expected along x; the velocities are the same.
+    EXPECT_EQ(with_roles(c, c.a, c.b).a, c.a);  // already in those roles: unchanged
+    const CollisionInstant r = with_roles(c, c.b, c.a);
+    EXPECT_EQ(r.a, c.b);
+    const SolveProblem q = collision_problem(scene, r);
+    EXPECT_EQ(q.normal.x(), -1.0);
+    EXPECT_EQ(q.a.name, "right");
+    const Solution t = solve(q);
+    EXPECT_NEAR(t.P.x(), -expected, 1e-12);
+    EXPECT_NEAR(t.va.x(), e.vb_after, 1e-12);
+    EXPECT_NEAR(t.vb.x(), e.va_after, 1e-12);
+    EXPECT_NEAR(t.un_after, -0.5 * t.un, 1e-12);
 }
 
 TEST(EventProblem, TwoDimensionalOffCentreHitReproducesTheWorldsImpulse) {
@@ -127,6 +141,16 @@ w = [0.0, 1.0, 0.0]
     EXPECT_NEAR((s.wb - e.after_b.w).norm(), 0.0, 1e-9);
     // Momentum of the pair is kept by any impulse pair +P, -P.
     EXPECT_NEAR((s.p_after - s.p_before).norm(), 0.0, 1e-12);
+
+    // With the box as a (a lesson's roles): the normal and the impulse on b change sign, and
+    // each body ends as the world left it, whatever it is called.
+    const Solution t = solve(collision_problem(scene, with_roles(c, c.b, c.a)));
+    EXPECT_NEAR((t.n + c.normal).norm(), 0.0, 1e-15);
+    EXPECT_NEAR((t.P + e.impulse).norm(), 0.0, 1e-9 * scale);
+    EXPECT_NEAR((t.va - e.after_b.v).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((t.wa - e.after_b.w).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((t.vb - e.after_a.v).norm(), 0.0, 1e-9);
+    EXPECT_NEAR((t.wb - e.after_a.w).norm(), 0.0, 1e-9);
 }
 
 }  // namespace
