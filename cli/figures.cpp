@@ -23,12 +23,14 @@ std::string fixed_text(double x, int decimals) {
 // The captions under the three panels: the moments' times, and that before and after show
 // the velocities of the instant (drawn where the bodies were a moment earlier or later).
 std::vector<std::string> time_notes(const Moments& moments, int decimals) {
-    if (moments.after == moments.at)  // no sample between this collision and the next
-        return {"pose at t = " + fixed_text(moments.before, decimals) + " s, velocities just before",
-                "t = " + fixed_text(moments.at, decimals) + " s", "velocities just after"};
-    return {"pose at t = " + fixed_text(moments.before, decimals) + " s, velocities just before",
-            "t = " + fixed_text(moments.at, decimals) + " s",
-            "pose at t = " + fixed_text(moments.after, decimals) + " s, velocities just after"};
+    // Drawn at the instant itself (no sample between, or a contact among others at that
+    // instant): the velocities just before or after it, where the bodies touch.
+    const auto note = [&](double t, const char* when) {
+        return (t == moments.at ? "where they touch" : "pose at t = " + fixed_text(t, decimals) + " s") +
+               ", velocities just " + when;
+    };
+    return {note(moments.before, "before"), "t = " + fixed_text(moments.at, decimals) + " s",
+            note(moments.after, "after")};
 }
 
 // The three moments drawn by a renderer framed on them: no trails, at the instant the impulse
@@ -40,6 +42,7 @@ std::vector<render::Image> three_panels(render::Renderer& renderer, const Moment
     for (int k = 0; k < 3; ++k) {
         render::Decor d;
         d.velocities = k != 1;
+        d.focus = moments.focus;
         d.trails = false;
         panels.push_back(renderer.render(moments.states[k], d));
         if (annotations) annotations->push_back(renderer.annotations());
@@ -76,9 +79,14 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
         const Vec2 size = probe.box_hi() - probe.box_lo();
         if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
     }
-    const double area = 0.62 * 0.62 * 1.3 * height * height;
-    panel.height = static_cast<int>(std::lround(std::sqrt(area / aspect)));
-    panel.width = static_cast<int>(std::lround(std::sqrt(area * aspect)));
+    // Laid out for the page (kColumnWidth, kWideFigureWidth at 720p; scaled with the size):
+    // wide strips stacked, the others side by side.
+    const double scale = height / 720.0;
+    const double gap = 20.0;  // compose_figure's margin at 720p
+    out.stacked = aspect >= 2.0;
+    const double width = out.stacked ? kColumnWidth - 2 * gap : (kWideFigureWidth - 4 * gap) / 3;
+    panel.width = static_cast<int>(std::lround(scale * width));
+    panel.height = static_cast<int>(std::lround(scale * width / aspect));
     render::Renderer panels_renderer(context, scene, panel);
     panels_renderer.prepare(three, moments.states[1].impacts);
     out.panels = three_panels(panels_renderer, moments, &out.annotations);
@@ -97,7 +105,8 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
         notes[0] += "     v_{" + L + "i} > v_{" + R + "i}";
         notes[2] += "     v_{" + L + "f}" + (vl <= vr ? " \u2264 " : " > ") + "v_{" + R + "f}";
     }
-    out.figure = render::compose_figure(context, out.panels, {"before", "at collision", "after"}, notes, height);
+    out.figure =
+        render::compose_figure(context, out.panels, {"before", "at collision", "after"}, notes, height, out.stacked);
     out.panel = panel;
     return out;
 }
@@ -113,6 +122,7 @@ void write_stills(render::Renderer& frames, const CollisionShots& shots, const P
         render::add_trails(shots.run.frames, trail_seconds(shots.scene), &f);
         render::Decor d;
         d.velocities = k != 1;  // at the instant: the impulse, not the velocities
+        d.focus = shots.moments.focus;
         d.directions = shots.view.directions;
         write_png(out, names[k], frames.render(f, d));
     }
@@ -162,7 +172,8 @@ void write_variants(render::GlContext& context, const std::vector<VariantRow>& r
         render::Renderer r(context, *row.scene, figure.panel);
         r.prepare(three, m.states[1].impacts);
         images.push_back(render::compose_figure(context, three_panels(r, m), {row.label + ": before", "at collision", "after"},
-                                                time_notes(m, settings.time_decimals + 1), settings.height));
+                                                time_notes(m, settings.time_decimals + 1), settings.height,
+                                                figure.stacked));
     }
     write_png(out, "variants.png", render::stack_vertically(images));
 }

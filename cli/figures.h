@@ -34,6 +34,14 @@ struct PictureOut {
     render::PngOptions png;
 };
 
+// The widths (pixels) the site shows a figure at (assets/site/style.css): its text column,
+// and the wider box of a figure whose panels stand side by side. A figure is laid out for them
+// (at 720p fonts; other sizes scale): wide strips (1D) are stacked to the column's width,
+// others stand side by side in the wide box. So its smallest label (13 px) shows at least
+// 12 px tall.
+constexpr int kColumnWidth = 944;
+constexpr int kWideFigureWidth = 1200;
+
 // The before / at / after panels framed on the moments without the table, and the figure of
 // the three with their captions.
 struct Figure {
@@ -42,6 +50,7 @@ struct Figure {
     double times[3] = {0, 0, 0};                    // s: the panels' moments
     render::Image figure;
     render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
+    bool stacked = false;          // the panels one above the other (variants.png too)
 };
 
 // One row of variants.png: a scene (the lesson's own or a variant) and its first collision.

@@ -16,6 +16,7 @@
 #include "scenario/input_error.h"
 #include "teach/answers.h"
 #include "teach/notation.h"
+#include "cli/figures.h"
 #include "cli/render_cmd.h"
 #include "render/png.h"
 #include "render/video.h"
@@ -145,6 +146,8 @@ struct Built {
     Lesson lesson;
     RenderReport report;
     bool thumb = false;
+    std::vector<int> figure_widths;  // pixels, of report.figures' PNG files
+    int variants_width = 0;          // of variants.png
 };
 
 // A collision worked out: each step's formula, then its numbers (the response's last line
@@ -182,13 +185,17 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
     // animation, the next ones with their worked examples below it.
     const auto figure_html = [&](const RenderReport::Shown& f) {
         std::ostringstream h;
+        // Panels side by side are shown up to their own width, beyond the text column when the
+        // window allows (style.css, figure.wide), so that their labels stay readable.
+        const std::size_t k = static_cast<std::size_t>(&f - r.figures.data());
+        const bool wide = k < b.figure_widths.size() && b.figure_widths[k] > kColumnWidth;
         const std::string alt = figure_alt(f.problem, f.solution, f.instant.t);
         const std::string what = f.caption.empty() ? (&f == &r.figures.front() && L.figures.empty()
                                                           ? "Before, at and after the first collision"
                                                           : "Before, at and after the collision of " + f.problem.a.name +
                                                                 " (a) and " + f.problem.b.name + " (b)")
                                                    : f.caption;
-        h << "<figure><a href=\"" << f.file << "\" title=\"Open the figure at full size\"><img src=\"" << f.file
+        h << "<figure" << (wide ? " class=\"wide\"" : "") << "><a href=\"" << f.file << "\" title=\"Open the figure at full size\"><img src=\"" << f.file
           << "\" alt=\"" << escape(alt) << "\"></a><figcaption>" << math(what) << " (t = " << escape(n(f.instant.t))
           << " s), from the simulation.";
         if (L.view.directions) h << " Grey arrows: the positive directions (velocities may be negative).";
@@ -266,8 +273,9 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
           << "</td></tr>\n</table>\n";
     }
     if (!r.variants.empty()) {
-        o << "<h2>Side by side</h2>\n<figure><img src=\"variants.png\" alt=\"The scene and its variants, "
-             "before, at and after the first collision\"></figure>\n<table>\n<tr><th></th><th>impulse on b (N s)</th>"
+        o << "<h2>Side by side</h2>\n<figure" << (b.variants_width > kColumnWidth ? " class=\"wide\"" : "")
+          << "><a href=\"variants.png\" title=\"Open the figure at full size\"><img src=\"variants.png\" "
+             "alt=\"The scene and its variants, before, at and after the collision\"></a></figure>\n<table>\n<tr><th></th><th>impulse on b (N s)</th>"
              "<th>a after (m/s)</th><th>b after (m/s)</th><th>kinetic energy lost (J)</th></tr>\n";
         for (const RenderReport::Variant& v : r.variants) {
             if (!v.first) {
@@ -384,7 +392,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             request.scenario = L.file;
             request.out_dir = (tmp / L.id).string();
             std::ostringstream notes;  // "no collision" notes: not an error for a lesson page
-            Built b{L, render_scenario(request, notes), false};
+            Built b{L, render_scenario(request, notes), false, {}, 0};
             // The thumbnail: the figure's collision panel (collide render writes it), else the
             // first frame.
             const fs::path lesson_dir = tmp / L.id;
@@ -393,6 +401,10 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                 render::write_png_atomic((lesson_dir / "thumb.png").string(), thumb.width, thumb.height, thumb.rgba.data());
             }
             b.thumb = fs::exists(lesson_dir / "thumb.png");
+            for (const RenderReport::Shown& f : b.report.figures)
+                b.figure_widths.push_back(render::read_png((lesson_dir / f.file).string()).width);
+            if (fs::exists(lesson_dir / "variants.png"))
+                b.variants_width = render::read_png((lesson_dir / "variants.png").string()).width;
             // Plots.
             const RenderReport& r = b.report;
             const render::TotalsColumns col = render::totals_columns(r.plot_totals);

@@ -237,6 +237,14 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
         for (std::size_t k = 0; k < t.size() && t[k] < next; ++k)
             if (t[k] > te) ka = k;
     }
+    // A contact resolved in the same instant as others (a cradle's, one after another): the
+    // bodies do not move between them, so before and after are drawn where they touch.
+    const bool shared = !pick.whole_instant && (first_event > instant.first || end_event < instant.end);
+    if (shared) {
+        m.before = te;
+        m.states[0] = render::frame_state(scene, te, instant.bodies);
+        ka = t.size();
+    }
     if (ka < t.size()) {
         m.after = t[ka];
         m.states[2] = run.frames[ka];
@@ -259,6 +267,7 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
     with_velocities(post, &m.states[2]);
     m.instant = with_roles(collision_instant(first), pick.a, pick.b);
     m.event = event;
+    if (!pick.whole_instant) m.focus = {pick.a, pick.b};
     return m;
 }
 

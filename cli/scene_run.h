@@ -42,6 +42,8 @@ struct Moments {
     render::FrameState states[3];           // at those times; states[1] has the instant's impacts
     CollisionInstant instant;               // the collision, the bodies where they touch
     std::size_t event = 0;                  // its (first) event's index in the run
+    std::vector<std::size_t> focus;         // a picked pair's two bodies (their arrows only);
+                                            // empty for a whole instant (every body's)
 };
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run);
 

@@ -68,8 +68,9 @@ Annotation placed_label(const FontSet& fonts, LabelPlacer* placer, const Annotat
     a.colour = request.colour;
     a.small = request.small;
     a.anchor = request.anchor;
-    a.box = place_label_box(fonts, placer, request.small ? fonts.small : fonts.text, request.anchor,
-                            request.direction, request.text, pad, gap);
+    ImFont* font = request.small ? fonts.small : fonts.text;
+    a.font_px = font->FontSize;
+    a.box = place_label_box(fonts, placer, font, request.anchor, request.direction, request.text, pad, gap);
     return a;
 }
 
@@ -146,7 +147,7 @@ void write_annotations_json(std::ostream& out, const Annotations& items, int dim
         out << ", \"text\": " << quoted(a.text) << ", \"box\": [" << pixels(a.box.x) << ", "
             << pixels(a.box.y) << ", " << pixels(a.box.z) << ", " << pixels(a.box.w) << "]";
         if (a.kind == Mark::spin) out << ", \"sweep\": " << number(a.sweep);
-        if (a.kind == Mark::label) out << ", \"of\": " << a.of;
+        if (a.kind == Mark::label) out << ", \"of\": " << a.of << ", \"font_px\": " << pixels(a.font_px);
         out << "}";
     }
     out << (items.empty() ? "]" : "\n" + pad + "]");

@@ -305,7 +305,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     // Velocities and spins.
     if (decor.velocities) {
         for (std::size_t i = 0; i < n; ++i) {
-            if (scene_.bodies[i].is_static()) continue;
+            if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
             const BodyState& s = frame.bodies[i];
             const ImVec2 from = to_screen(s.x);
             const ImVec2 tip = to_screen(s.x + k_velocity_ * s.v);
@@ -396,6 +396,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         a.text = text;
         a.colour = colour;
         a.small = small;
+        a.font_px = font->FontSize;
         a.faint = true;  // labels: no backing
         a.anchor = at;
         a.from = a.to = to_world(at);

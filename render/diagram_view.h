@@ -16,6 +16,8 @@
 // sampled states, and fixes the arrow scales from the largest speed, spin and impulse.
 #pragma once
 
+#include <algorithm>
+
 #include <string>
 #include <vector>
 
@@ -40,6 +42,12 @@ struct Decor {
     // block an arrow along +x ("+v": velocities are measured that way, and may be negative);
     // 2D, one glyph in the corner: +x, +y and the counter-clockwise arc of +ω.
     bool directions = false;
+    // When not empty: velocities and spins of these bodies only (scene indices): a figure
+    // about one pair of a busy scene leaves the others' arrows out.
+    std::vector<std::size_t> focus;
+    bool in_focus(std::size_t i) const {
+        return focus.empty() || std::find(focus.begin(), focus.end(), i) != focus.end();
+    }
 };
 
 class DiagramView {

@@ -319,7 +319,7 @@ Image Renderer::render(const FrameState& frame, const Decor& decor) {
 
 Image compose_figure(GlContext& context, const std::vector<Image>& panels,
                      const std::vector<std::string>& captions,
-                     const std::vector<std::string>& notes, int font_height,
+                     const std::vector<std::string>& notes, int font_height, bool stacked,
                      const std::string& font_dir) {
     if (panels.empty()) throw std::invalid_argument("compose_figure: no panels");
     const Gl& gl = context.gl();
@@ -328,9 +328,11 @@ Image compose_figure(GlContext& context, const std::vector<Image>& panels,
     const int pw = panels[0].width, ph = panels[0].height;
     const float g = style.px(20.0f);
     const int n = static_cast<int>(panels.size());
-    const int width = static_cast<int>(std::ceil(static_cast<float>(n * pw) + g * static_cast<float>(n + 1)));
     const float caption_h = sizes.bold * 1.5f + (notes.empty() ? 0.0f : sizes.small * 1.5f);
-    const int height = static_cast<int>(std::ceil(static_cast<float>(ph) + 2 * g + caption_h));
+    const int across = stacked ? 1 : n, down = stacked ? n : 1;
+    const int width = static_cast<int>(std::ceil(static_cast<float>(across * pw) + g * static_cast<float>(across + 1)));
+    const int height = static_cast<int>(
+        std::ceil(static_cast<float>(down) * (static_cast<float>(ph) + g + caption_h) + g));
 
     RenderTarget target(gl, width, height, 0);  // panels are already anti-aliased
     ImGuiLayer imgui(gl, width, height, sizes, font_dir);
@@ -352,8 +354,9 @@ Image compose_figure(GlContext& context, const std::vector<Image>& panels,
     ImDrawList* dl = imgui.draw_list();
     const FontSet& fonts = imgui.fonts();
     for (int k = 0; k < n; ++k) {
-        const float x = g + static_cast<float>(k) * (static_cast<float>(pw) + g);
-        const ImVec2 p0(x, g), p1(x + static_cast<float>(pw), g + static_cast<float>(ph));
+        const float x = g + static_cast<float>(stacked ? 0 : k) * (static_cast<float>(pw) + g);
+        const float top = g + static_cast<float>(stacked ? k : 0) * (static_cast<float>(ph) + g + caption_h);
+        const ImVec2 p0(x, top), p1(x + static_cast<float>(pw), top + static_cast<float>(ph));
         dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(textures[static_cast<std::size_t>(k)])),
                      p0, p1);
         dl->AddRect(ImVec2(p0.x - 0.5f, p0.y - 0.5f), ImVec2(p1.x + 0.5f, p1.y + 0.5f),

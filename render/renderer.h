@@ -108,10 +108,11 @@ private:
 };
 
 // One figure of panels side by side with a caption under each (e.g. before / at collision /
-// after), on the diagrams' paper. All panels must have the same size.
+// after), on the diagrams' paper; `stacked`: one above the other (wide strips, so that the
+// figure fits a page's width). All panels must have the same size.
 Image compose_figure(GlContext& context, const std::vector<Image>& panels,
                      const std::vector<std::string>& captions,
-                     const std::vector<std::string>& notes, int font_height,
+                     const std::vector<std::string>& notes, int font_height, bool stacked = false,
                      const std::string& font_dir = "/usr/share/fonts/truetype/dejavu");
 
 }  // namespace collide::render

@@ -289,7 +289,7 @@ Annotations annotations3d(const View3d& view, const FrameState& frame, const Dec
     if (decor.velocities)
         for (std::size_t i = 0; i < n; ++i) {
             const Solid& solid = view.solids.bodies[i];
-            if (view.scene.bodies[i].is_static() || !solid.drawn()) continue;
+            if (view.scene.bodies[i].is_static() || !solid.drawn() || !decor.in_focus(i)) continue;
             const BodyState& s = frame.bodies[i];
             if (s.v.norm() * k.k_velocity > 1e-3 * unit) {
                 const Vec3 start = velocity_start(solid, s);

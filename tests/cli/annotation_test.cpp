@@ -17,7 +17,10 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/figures.h"
 #include "cli/render_cmd.h"
+#include "render/png.h"
+#include "scenario/lesson.h"
 #include "tests/render/test_util.h"
 
 namespace collide {
@@ -161,22 +164,25 @@ double labelled_quantity(const json& item, int dimension, bool three_d) {
     return std::hypot(v[0], v[1]);
 }
 
-struct Lesson {
+struct LessonFile {
     std::string id;
     std::string path;
 };
 
-std::vector<Lesson> bundled_lessons() {
-    std::vector<Lesson> out;
+std::vector<LessonFile> bundled_lessons() {
+    std::vector<LessonFile> out;
     for (const auto& e : fs::directory_iterator(fs::path(COLLIDE_SOURCE_DIR) / "lessons"))
         if (e.path().extension() == ".toml") out.push_back({e.path().stem().string(), e.path().string()});
-    std::sort(out.begin(), out.end(), [](const Lesson& a, const Lesson& b) { return a.id < b.id; });
+    std::sort(out.begin(), out.end(), [](const LessonFile& a, const LessonFile& b) { return a.id < b.id; });
     return out;
 }
 
-void PrintTo(const Lesson& lesson, std::ostream* os) { *os << lesson.id; }
+void PrintTo(const LessonFile& lesson, std::ostream* os) { *os << lesson.id; }
 
-class LessonFigure : public ::testing::TestWithParam<Lesson> {};
+class LessonFigure : public ::testing::TestWithParam<LessonFile> {};
+
+void check_figure(const std::string& file, const ::collide::LessonFigure* pick, const std::vector<EventRow>& events,
+                  const json& data);
 
 TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
     render::test::TempDir dir;
@@ -189,23 +195,70 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
     std::ostringstream out, err;
     ASSERT_EQ(run_render(o, out, err), 0) << err.str();
 
-    std::ifstream in(dir / "out/annotations.json");
-    ASSERT_TRUE(in) << "no annotations.json";
-    const json doc = json::parse(in);
-    const int dim = doc["dimension"];
-    const bool three_d = doc["view"] == "3d";
     const std::vector<EventRow> events = read_events(dir / "out/events.csv");
     std::ifstream data_in(dir / "out/data.json");
     const json data = json::parse(data_in);
     ASSERT_FALSE(events.empty()) << "every bundled lesson has a collision";
+    // Each figure: figure.png (annotations.json), then a lesson's next [[figure]] entries
+    // (annotations-K.json), each about its pair's collision.
+    const collide::Lesson lesson = load_lesson(GetParam().path);
+    const std::size_t figures = std::max<std::size_t>(1, lesson.figures.size());
+    for (std::size_t fig = 0; fig < figures; ++fig)
+        check_figure(dir / (fig == 0 ? std::string("out/annotations.json")
+                                     : "out/annotations-" + std::to_string(fig + 1) + ".json"),
+                     lesson.figures.empty() ? nullptr : &lesson.figures[fig], events, data);
+}
+
+// One figure's annotations against the run: `pick` the [[figure]] it shows (nullptr: the
+// run's first collision); only that pair's events are drawn at its collision.
+void check_figure(const std::string& file, const ::collide::LessonFigure* pick, const std::vector<EventRow>& events,
+                  const json& data) {
+    SCOPED_TRACE(file);
+    std::ifstream in(file);
+    ASSERT_TRUE(in) << "no " << file;
+    const json doc = json::parse(in);
+    const int dim = doc["dimension"];
+    const bool three_d = doc["view"] == "3d";
+
+    // Readable at the size the site shows it: a figure wider than the text column is shown in
+    // the wide box, the others in the column (style.css; width: 100%, so each is scaled to
+    // exactly that width), and every label's text is then at least 12 px tall.
+    std::string png = file;
+    png.replace(png.rfind("annotations"), std::string("annotations").size(), "figure");
+    png.replace(png.rfind(".json"), 5, ".png");
+    const int width = render::read_png(png).width;
+    const double shown = width > kColumnWidth ? kWideFigureWidth : kColumnWidth;
+    EXPECT_LE(width, kWideFigureWidth) << png << " is wider than the site shows it";
+    for (const char* panel : {"before", "at", "after"})
+        for (const json& it : doc["panels"][panel])
+            if (it["kind"] == "label") {
+                EXPECT_GE(it["font_px"].get<double>() * shown / width, 12.0)
+                    << "the label \"" << it["text"] << "\" of " << png << " shows "
+                    << it["font_px"].get<double>() * shown / width << " px tall";
+                EXPECT_LE(it["font_px"].get<double>(), it["box"][3].get<double>() - it["box"][1].get<double>() + 1e-3)
+                    << "a label's text is taller than its box";
+            }
+
+    const auto in_pick = [&](const std::string& a, const std::string& b) {
+        return !pick || (a == pick->a && b == pick->b) || (a == pick->b && b == pick->a);
+    };
     ASSERT_TRUE(doc["panels"].contains("at"));
 
-    // The collision panel is the first collision's instant.
+    // The collision panel is the instant of the figure's collision: the run's first, or the
+    // pick's (its pair's `collision`-th instant).
     const double t_at = doc["times"]["at"];
-    EXPECT_NEAR(t_at, events.front().num("t"), 1e-9 * std::max(1.0, t_at));
-    std::vector<const EventRow*> now;  // the events of that instant
+    std::vector<double> pair_times;
     for (const EventRow& e : events)
-        if (std::abs(e.num("t") - t_at) <= 1e-9 * std::max(1.0, t_at)) now.push_back(&e);
+        if (in_pick(e.text.at("a"), e.text.at("b")) &&
+            (pair_times.empty() || e.num("t") > pair_times.back() + 1e-9 * std::max(1.0, e.num("t"))))
+            pair_times.push_back(e.num("t"));
+    const std::size_t order = pick ? static_cast<std::size_t>(pick->collision) : 1;
+    ASSERT_GE(pair_times.size(), order);
+    EXPECT_NEAR(t_at, pair_times[order - 1], 1e-9 * std::max(1.0, t_at));
+    std::vector<const EventRow*> now;  // the events of that instant (of that pair)
+    for (const EventRow& e : events)
+        if (std::abs(e.num("t") - t_at) <= 1e-9 * std::max(1.0, t_at) && in_pick(e.text.at("a"), e.text.at("b")))
+            now.push_back(&e);
 
     int impulses_on_b = 0;
     for (const char* panel : {"before", "at", "after"}) {
@@ -323,6 +376,7 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
                 const std::string body = it["body"];
                 for (const json& e : data["events"]) {
                     if (std::abs(e["t"].get<double>() - t_at) > 1e-9 * std::max(1.0, t_at)) continue;
+                    if (!in_pick(e["a"], e["b"])) continue;
                     if (!e[when].contains(body)) continue;
                     const std::vector<double> expected = vec(e[when][body][kind == "velocity" ? "v" : "w"]);
                     const std::vector<double> drawn = vec(it["value"]);
@@ -389,7 +443,7 @@ TEST_P(LessonFigure, AnnotationsAgreeWithTheEventsAndTheGeometry) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Bundled, LessonFigure, ::testing::ValuesIn(bundled_lessons()),
-                         [](const ::testing::TestParamInfo<Lesson>& info) {
+                         [](const ::testing::TestParamInfo<LessonFile>& info) {
                              std::string name;
                              for (char c : info.param.id) name += std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
                              return name;

@@ -12,6 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli/figures.h"
 #include "render/png.h"
 #include "render/video.h"
 #include "tests/render/test_util.h"
@@ -80,7 +81,10 @@ TEST(RenderCommand, WritesFramesStillsFigureAndData) {
     for (const char* still : {"before.png", "at.png", "after.png"})
         EXPECT_EQ(render::read_png(dir / (std::string("out/") + still)).width, 160) << still;
     const render::Image figure = render::read_png(dir / "out/figure.png");
-    EXPECT_GT(figure.width, 3 * 80);
+    // Laid out for the site's text column (cli/figures.h), scaled to the 120-pixel size: the
+    // wide strips of this scene (two discs on a line) stacked, three of them.
+    EXPECT_NEAR(figure.width, kColumnWidth * 120.0 / 720.0, 2.0);
+    EXPECT_GT(figure.height, figure.width);
     EXPECT_EQ(lines(dir / "out/data.csv"), 7u);  // header + 6 frames
     EXPECT_EQ(lines(dir / "out/events.csv"), 2u);  // header + the collision
     std::ifstream in(dir / "out/data.json");
