@@ -37,12 +37,14 @@ std::vector<std::string> time_notes(const Moments& moments, int decimals) {
 // instead of the velocities.
 // What each panel drew goes to `annotations` when given.
 std::vector<render::Image> three_panels(render::Renderer& renderer, const Moments& moments,
+                                        const std::vector<render::PointMark>& points,
                                         std::vector<render::Annotations>* annotations = nullptr) {
     std::vector<render::Image> panels;
     for (int k = 0; k < 3; ++k) {
         render::Decor d;
         d.velocities = k != 1;
         d.focus = moments.focus;
+        d.points = points;
         d.trails = false;
         panels.push_back(renderer.render(moments.states[k], d));
         if (annotations) annotations->push_back(renderer.annotations());
@@ -89,7 +91,8 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     panel.height = static_cast<int>(std::lround(scale * width / aspect));
     render::Renderer panels_renderer(context, scene, panel);
     panels_renderer.prepare(three, moments.states[1].impacts);
-    out.panels = three_panels(panels_renderer, moments, &out.annotations);
+    out.points = points_of(view);
+    out.panels = three_panels(panels_renderer, moments, out.points, &out.annotations);
     out.times[0] = moments.before;
     out.times[1] = moments.at;
     out.times[2] = moments.after;
@@ -115,6 +118,12 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
 
 double trail_seconds(const Scene& scene) { return std::min(1.0, 0.3 * scene.duration); }
 
+std::vector<render::PointMark> points_of(const SceneView& view) {
+    std::vector<render::PointMark> out;
+    for (const ViewMark& m : view.marks) out.push_back({m.body, m.at, m.name, m.velocity});
+    return out;
+}
+
 void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out) {
     const char* names[3] = {"before.png", "at.png", "after.png"};
     for (int k = 0; k < 3; ++k) {
@@ -123,6 +132,7 @@ void write_stills(render::Renderer& frames, const CollisionShots& shots, const P
         render::Decor d;
         d.velocities = k != 1;  // at the instant: the impulse, not the velocities
         d.focus = shots.moments.focus;
+        d.points = points_of(shots.view);
         d.directions = shots.view.directions;
         write_png(out, names[k], frames.render(f, d));
     }
@@ -171,7 +181,7 @@ void write_variants(render::GlContext& context, const std::vector<VariantRow>& r
         std::vector<FrameState> three(m.states, m.states + 3);
         render::Renderer r(context, *row.scene, figure.panel);
         r.prepare(three, m.states[1].impacts);
-        images.push_back(render::compose_figure(context, three_panels(r, m), {row.label + ": before", "at collision", "after"},
+        images.push_back(render::compose_figure(context, three_panels(r, m, figure.points), {row.label + ": before", "at collision", "after"},
                                                 time_notes(m, settings.time_decimals + 1), settings.height,
                                                 figure.stacked));
     }

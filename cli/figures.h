@@ -19,6 +19,9 @@ namespace collide {
 // The trails behind the bodies (s) in the frames and in the stills.
 double trail_seconds(const Scene& scene);
 
+// A scene's [[mark]] points as the diagrams draw them (render::Decor::points).
+std::vector<render::PointMark> points_of(const SceneView& view);
+
 // What a collision's pictures are drawn from: a scene, its [view] table, its run, and the
 // moments of its first collision in that run.
 struct CollisionShots {
@@ -51,6 +54,7 @@ struct Figure {
     render::Image figure;
     render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
     bool stacked = false;          // the panels one above the other (variants.png too)
+    std::vector<render::PointMark> points;  // the scene's marked points (variants.png too)
 };
 
 // One row of variants.png: a scene (the lesson's own or a variant) and its first collision.

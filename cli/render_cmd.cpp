@@ -330,7 +330,7 @@ void write_worked_example(const std::string& dir, const WorkedExample& worked) {
 // frames/frame_00000.png ...: rendering here, PNG encoding beside it. Returns the seconds it
 // took; throws Interrupted on SIGINT / SIGTERM (the frames already handed over are finished).
 double write_frames(render::Renderer& renderer, const SceneRun& run, const RenderRequest& rq, double trail,
-                    std::ostream& err) {
+                    const SceneView& view, std::ostream& err) {
     const Quality& q = rq.frame.quality;
     render::FrameSinkOptions sink_options;
     sink_options.dir = rq.out_dir + "/frames";
@@ -341,6 +341,7 @@ double write_frames(render::Renderer& renderer, const SceneRun& run, const Rende
     render::ProgressBar progress(err, static_cast<long>(run.frames.size()), shows_progress(rq, err), "rendering");
     std::size_t next_impact = 0;
     render::Decor decor;
+    decor.points = points_of(view);
     const auto start = std::chrono::steady_clock::now();
     for (std::size_t k = 0; k < run.frames.size(); ++k) {
         if (interrupted()) {
@@ -372,7 +373,7 @@ double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun&
         frame_settings(rq.frame, in.scene, in.view, a.worked ? &a.worked->formula : nullptr);
     render::Renderer renderer(*context, in.scene, settings);
     renderer.prepare(run.frames, run.impacts);
-    const double seconds = write_frames(renderer, run, rq, trail_seconds(in.scene), err);
+    const double seconds = write_frames(renderer, run, rq, trail_seconds(in.scene), in.view, err);
     if (a.moments) {
         const CollisionShots shots{in.scene, in.view, run, *a.moments};
         const PictureOut out{rq.out_dir, rq.frame.quality.png};

@@ -17,6 +17,8 @@ const char* mark_name(Mark kind) {
     case Mark::contact: return "contact";
     case Mark::direction: return "direction";
     case Mark::label: return "label";
+    case Mark::point: return "point";
+    case Mark::point_velocity: return "point_velocity";
     }
     return "label";
 }

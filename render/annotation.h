@@ -30,6 +30,8 @@ enum class Mark {
     contact,    // the contact point
     direction,  // a positive direction (+x, +y, +ω, +v), not a quantity
     label,      // text; `of` is the item it names or gives the value of
+    point,      // a point of `body` a lesson marks (a handle): `from` where it is, `text` its name
+    point_velocity,  // that point's velocity v + ω × (p − x) (m/s), from the point
 };
 const char* mark_name(Mark kind);
 

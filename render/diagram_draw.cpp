@@ -337,6 +337,42 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         }
     }
 
+    // Marked points of bodies (a handle, a sweet spot): a ring and its name, and where the
+    // velocities are drawn the point's own velocity v + ω × r: "at rest" below 1/1000 of the
+    // frame's largest speed (a sweet spot given to 5 digits leaves its handle 10^-4 of that).
+    double fastest = 0;
+    for (const BodyState& s : frame.bodies) fastest = std::max(fastest, s.v.norm());
+    for (const PointMark& m : decor.points) {
+        if (m.body >= n) continue;
+        const BodyState& s = frame.bodies[m.body];
+        const double ca = std::cos(s.angle), sa = std::sin(s.angle);
+        const Vec3 r = dim == 1 ? Vec3(m.at.x(), 0, 0)
+                                : Vec3(ca * m.at.x() - sa * m.at.y(), sa * m.at.x() + ca * m.at.y(), 0);
+        const Vec3 p = s.x + r;
+        Annotation a;
+        a.kind = Mark::point;
+        a.body = static_cast<int>(m.body);
+        a.from = a.to = p;
+        a.value = components(p, dim);
+        a.text = m.name;
+        a.colour = c.ink;
+        const ImVec2 at = to_screen(p);
+        a.box = ImVec4(at.x - style_.px(5), at.y - style_.px(5), at.x + style_.px(5), at.y + style_.px(5));
+        const int k = add(std::move(a));
+        const bool moving = m.velocity && decor.velocities && decor.in_focus(m.body);
+        const Vec3 vp = dim == 1 ? Vec3(s.v.x(), 0, 0) : Vec3(s.v + s.w.cross(r));
+        const ImVec2 tip = to_screen(p + k_velocity_ * vp);
+        if (moving && vp.norm() > 1e-3 * fastest) {
+            const int kv = arrow_item(Mark::point_velocity, static_cast<int>(m.body), p, p + k_velocity_ * vp,
+                                      components(vp, dim), c.velocity);
+            const double shown = dim == 1 ? vp.x() : xy(vp).norm();
+            pending.push_back({kv, tip, unit(tip - at), m.name + ": v = " + format_number(shown) + " m/s", {shown},
+                               c.velocity, true});
+        } else {
+            pending.push_back({k, at, ImVec2(0, 1), moving ? m.name + ": at rest" : m.name, {}, c.ink, true});
+        }
+    }
+
     // Positive directions. 1D: an arrow along +x above each moving block ("+v"), as in the
     // page's figure. 2D: one glyph in the view's lower left corner: +x, +y and the
     // counter-clockwise sense of +ω (velocities and spins are measured that way).
@@ -532,6 +568,13 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             break;
         case Mark::velocity:
             draw_arrow(dl, p, q, a.colour, arrow, hl, hw);
+            break;
+        case Mark::point:
+            dl->AddCircleFilled(p, style_.px(5.0f), c.background);
+            dl->AddCircle(p, style_.px(4.5f), a.colour, 0, style_.lw(2.0f));
+            break;
+        case Mark::point_velocity:
+            draw_arrow(dl, p, q, a.colour, style_.lw(2.0f), hl * 0.85f, hw * 0.85f);
             break;
         case Mark::spin: {
             // An arc centred above the body, its head in the sense of the spin.

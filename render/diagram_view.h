@@ -17,7 +17,6 @@
 #pragma once
 
 #include <algorithm>
-
 #include <string>
 #include <vector>
 
@@ -30,6 +29,15 @@
 #include "render/style.h"
 
 namespace collide::render {
+
+// A point fixed in a body that a lesson marks (a bat's handle end, its sweet spot), given in
+// the body's frame: from its centre along its unrotated axes (m; 1D: along x).
+struct PointMark {
+    std::size_t body = 0;
+    Vec3 at = Vec3::Zero();
+    std::string name;       // drawn beside the point
+    bool velocity = false;  // also its velocity v + ω × r where the body's velocity is drawn
+};
 
 // What a frame shows besides the bodies.
 struct Decor {
@@ -45,6 +53,7 @@ struct Decor {
     // When not empty: velocities and spins of these bodies only (scene indices): a figure
     // about one pair of a busy scene leaves the others' arrows out.
     std::vector<std::size_t> focus;
+    std::vector<PointMark> points;  // marked points (1D and 2D diagrams)
     bool in_focus(std::size_t i) const {
         return focus.empty() || std::find(focus.begin(), focus.end(), i) != focus.end();
     }

@@ -247,7 +247,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
     if (!root.has("scene") && (root.has("a") || root.has("dimension")))
         root.fail("", "this is a collision file (dimension, [a], [b] at the top): run it with "
                       "'collide solve'; scenario files have a [scene] table and [[body]] tables");
-    std::vector<std::string> top = {"scene", "body", "view"};
+    std::vector<std::string> top = {"scene", "body", "view", "mark"};
     top.insert(top.end(), also_allowed.begin(), also_allowed.end());
     root.allow_only(top);
     auto sc = root.table("scene");
@@ -303,6 +303,36 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
                 readers[j].fail(readers[j].has("position") ? "position" : "",
                                 "'" + b.name + "' overlaps '" + a.name + "' by " + show(depth) +
                                     " m at the start; bodies may touch but not overlap");
+        }
+    }
+    // [[mark]]: points of bodies to draw (after the bodies: they name one).
+    if (const toml::node* marks = root.node("mark")) {
+        const toml::array* ms = marks->as_array();
+        if (!ms) root.fail("mark", "expected [[mark]] tables");
+        for (std::size_t i = 0; i < ms->size(); ++i) {
+            const toml::table* t = ms->get(i)->as_table();
+            const std::string key = "mark[" + std::to_string(i + 1) + "]";
+            if (!t) root.fail("mark", key + " is not a table; write [[mark]]");
+            const TableReader m(*t, name, key);
+            m.allow_only({"body", "at", "name", "velocity"});
+            if (s.dimension == 3) m.fail("", "marked points are drawn in 1D and 2D diagrams only");
+            ViewMark v;
+            const std::string who = m.string("body", "a body's name").value_or("");
+            if (who.empty()) m.fail("body", "missing key 'body' (the body the point belongs to)");
+            std::vector<std::string> names;
+            for (const SceneBody& b : s.bodies) names.push_back(b.name);
+            const auto it = std::find(names.begin(), names.end(), who);
+            if (it == names.end()) {
+                const std::string hint = closest_match(who, names);
+                m.fail("body", "no body named '" + who + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+            }
+            v.body = static_cast<std::size_t>(it - names.begin());
+            if (!m.has("at")) m.fail("at", "missing key 'at' (the point in the body's frame, m)");
+            v.at = *read_vec(m, "at", s.dimension, "m");
+            v.name = m.string("name", "the point's name").value_or("");
+            if (v.name.empty()) m.fail("name", "missing key 'name' (drawn beside the point)");
+            v.velocity = m.boolean("velocity").value_or(false);
+            if (view) view->marks.push_back(std::move(v));
         }
     }
     return s;

@@ -11,12 +11,22 @@ namespace collide {
 
 // How the scenario asks to be shown: the optional [view] table (README.md), read by
 // `collide render`. Unset camera values are chosen from the scene's extent.
+// [[mark]]: a point fixed in a body, drawn in the figures and frames with its name (and, with
+// `velocity`, its own velocity v + ω × r): a bat's handle end, its sweet spot. 1D and 2D.
+struct ViewMark {
+    std::size_t body = 0;    // scene index
+    Vec3 at = Vec3::Zero();  // m, in the body's frame: from its centre along its unrotated axes
+    std::string name;
+    bool velocity = false;
+};
+
 struct SceneView {
     std::optional<double> camera_azimuth;    // degrees, -360..360: turned right of the front (+z)
     std::optional<double> camera_elevation;  // degrees, -89..89: above the horizon
     std::optional<Vec3> camera_target;       // m: the point looked at
     std::optional<double> camera_distance;   // m from the target, > 0
     bool directions = false;  // the page's positive-direction arrows in the figure's panels
+    std::vector<ViewMark> marks;
 };
 
 // Parses and validates; throws InputError naming file, line, column and key. Beyond the

@@ -330,6 +330,25 @@ void check_figure(const std::string& file, const ::collide::LessonFigure* pick, 
                 EXPECT_TRUE(same(from, centre[it["body"]], 1.0) || (three_d && along(out_of, vec(it["value"]))))
                     << "a velocity not drawn from the centre";
                 EXPECT_TRUE(along(minus(to, from), vec(it["value"]))) << "a velocity arrow against v";
+            } else if (kind == "point_velocity") {
+                // A marked point's velocity, from the point: v + ω × (p − x) of its body as
+                // the panel draws the body (a velocity or spin not drawn is zero).
+                ASSERT_TRUE(centre.count(it["body"]));
+                std::vector<double> v(static_cast<std::size_t>(dim), 0.0), w;
+                for (const json& o : items) {
+                    if (o["body"] != it["body"]) continue;
+                    if (o["kind"] == "velocity") v = vec(o["value"]);
+                    if (o["kind"] == "spin") w = vec(o["value"]);
+                }
+                const std::vector<double> r = minus(from, centre[it["body"]]);
+                std::vector<double> expected = v;
+                if (dim == 2 && !w.empty()) {
+                    expected[0] -= w[0] * r[1];
+                    expected[1] += w[0] * r[0];
+                }
+                EXPECT_TRUE(same(vec(it["value"]), expected, std::max(1.0, norm(expected))))
+                    << "a point's velocity that is not v + w x r of its body";
+                EXPECT_TRUE(along(minus(to, from), vec(it["value"]))) << "a point's velocity arrow against it";
             } else if (kind == "spin") {
                 const double sweep = it["sweep"];
                 if (three_d) {
@@ -422,7 +441,7 @@ void check_figure(const std::string& file, const ::collide::LessonFigure* pick, 
             if (it["kind"] != "label" || it["value"].is_null()) continue;
             const std::string labelled = items[it["of"].get<std::size_t>()]["kind"];
             const std::string text = it["text"];
-            const std::string unit = labelled == "velocity" ? " m/s"
+            const std::string unit = labelled == "velocity" || labelled == "point_velocity" ? " m/s"
                                      : labelled == "spin"   ? " rad/s"
                                                             : " N s";
             EXPECT_TRUE(text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
