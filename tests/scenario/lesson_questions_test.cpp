@@ -1,11 +1,14 @@
-// [[question]] kinds (scenario/lesson.h): each kind parses into its fields, and
-// lesson_with_values changes a scene as if its file had been written so.
+// [[question]] kinds (scenario/lesson.h): each kind parses into its fields, every bundled lesson
+// asks students to predict and to explain or choose, and lesson_with_values changes a scene
+// as if its file had been written so.
 #include "scenario/lesson.h"
 
 #include <gtest/gtest.h>
 
 namespace collide {
 namespace {
+
+const std::string kDir = std::string(COLLIDE_SOURCE_DIR) + "/lessons";
 
 // A valid 1D lesson: A (2 kg, 1.5 m/s) catches B (1 kg, 0.3 m/s); questions are appended.
 const char* kLesson = R"([lesson]
@@ -121,6 +124,44 @@ TEST(LessonQuestions, LessonWithValuesRefusesWhatTheFileWouldRefuse) {
     }
     EXPECT_THROW(lesson_with_values(L, {{"scene.restitution", 1.5}}), InputError);
     EXPECT_THROW(lesson_with_values(L, {{"mass", 1.0}}), InputError);
+}
+
+// The content the issue asks for: every lesson makes students predict, and explain or choose.
+TEST(LessonQuestions, EveryBundledLessonHasAPredictionAndAWhyOrChoiceQuestion) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    ASSERT_EQ(all.size(), 19u);
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.id);
+        int predict = 0, think = 0, numeric = 0;
+        for (const LessonQuestion& q : L.questions) {
+            predict += q.kind == QuestionKind::predict;
+            think += q.kind == QuestionKind::explain || q.kind == QuestionKind::choice;
+            numeric += q.kind == QuestionKind::numeric;
+        }
+        EXPECT_GE(predict, 1);
+        EXPECT_GE(think, 1);
+        EXPECT_GE(numeric, 1);  // the engine's numbers stay
+    }
+}
+
+TEST(LessonQuestions, EveryBundledChoiceHasAReasonForEachOptionAndARightOneInRange) {
+    int choices = 0;
+    for (const Lesson& L : load_lessons(kDir))
+        for (const LessonQuestion& q : L.questions) {
+            SCOPED_TRACE(L.id + ": " + q.text);
+            if (q.kind == QuestionKind::predict) {
+                EXPECT_FALSE(q.explain.empty());
+            }
+            if (!q.has_choices()) continue;
+            ++choices;
+            EXPECT_GE(q.choices.size(), 2u);
+            EXPECT_LE(q.choices.size(), 6u);
+            EXPECT_EQ(q.reasons.size(), q.choices.size());
+            EXPECT_GE(q.correct, 1);
+            EXPECT_LE(q.correct, static_cast<int>(q.choices.size()));
+            for (const std::string& r : q.reasons) EXPECT_FALSE(r.empty());
+        }
+    EXPECT_GE(choices, 19);
 }
 
 }  // namespace
