@@ -374,11 +374,18 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     if (const toml::node* list = root.node("question")) {
         const toml::array* qs = list->as_array();
         if (!qs) root.fail("question", "expected [[question]] tables");
+        constexpr int kMaxWhatIfs = 20;
+        int what_ifs = 0;
         for (std::size_t i = 0; i < qs->size(); ++i) {
             const toml::table* t = qs->get(i)->as_table();
             const std::string key = "question[" + std::to_string(i + 1) + "]";
             if (!t) root.fail("question", key + " is not a table; write [[question]]");
-            L.questions.push_back(parse_question(TableReader(*t, name, key), L));
+            const TableReader q(*t, name, key);
+            // Each what-if reads the whole file again (and its answer runs the scene again):
+            // a bound keeps a lesson's cost linear in its size.
+            if (q.has("what_if") && ++what_ifs > kMaxWhatIfs)
+                q.fail("what_if", "a lesson may have at most " + std::to_string(kMaxWhatIfs) + " what-if questions");
+            L.questions.push_back(parse_question(q, L));
         }
     }
     return L;

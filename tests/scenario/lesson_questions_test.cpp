@@ -126,6 +126,20 @@ TEST(LessonQuestions, LessonWithValuesRefusesWhatTheFileWouldRefuse) {
     EXPECT_THROW(lesson_with_values(L, {{"mass", 1.0}}), InputError);
 }
 
+// Each what-if reads the lesson again: their number is bounded, so a file's cost stays linear.
+TEST(LessonQuestions, ALessonHasAtMostTwentyWhatIfQuestions) {
+    std::string twenty, one_more;
+    for (int i = 0; i < 20; ++i) twenty += "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\nwhat_if = { \"A.mass\" = 3.0 }\n";
+    EXPECT_EQ(parse(twenty).questions.size(), 20u);
+    try {
+        parse(twenty + "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\nwhat_if = { \"A.mass\" = 3.0 }\n");
+        FAIL() << "accepted 21";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.key(), "question[21].what_if");
+        EXPECT_NE(e.message().find("at most 20 what-if questions"), std::string::npos) << e.what();
+    }
+}
+
 // The content the issue asks for: every lesson makes students predict, and explain or choose.
 TEST(LessonQuestions, EveryBundledLessonHasAPredictionAndAWhyOrChoiceQuestion) {
     const std::vector<Lesson> all = load_lessons(kDir);
