@@ -198,6 +198,36 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
 }
 
+// A prediction of a number: on screen a field to type it in, printed a space to write it in;
+// after the animation the engine's answer with its tolerance and why. A what-if's answer is
+// its own scene's.
+TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
+    render::test::TempDir dir;
+    const std::string file = dir / "predict-number.toml";
+    std::string text = read(fs::path(COLLIDE_SOURCE_DIR) / "lessons/01-catch-up.toml");
+    const std::string id = "id = \"catch-up\"";
+    text.replace(text.find(id), id.size(), "id = \"predict-number\"");
+    text += "\n[[question]]\nkind = \"predict\"\ntext = \"How fast will B move after the collision?\"\n"
+            "quantity = \"velocity_after\"\nbody = \"B\"\ntolerance = 0.05\nexplain = \"B receives +J.\"\n";
+    std::ofstream(file) << text;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons = {file};
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const std::string page = read(fs::path(dir / "site") / "predict-number/index.html");
+    const std::size_t asked = page.find("How fast will B move after the collision? <span class=\"tolerance\">(to within 5 %)</span>"),
+                      animation = page.find("<section class=\"animation noprint\">"),
+                      check = page.find("<section class=\"check\">");
+    ASSERT_NE(asked, std::string::npos);
+    EXPECT_LT(asked, animation);
+    const std::string before = page.substr(asked, page.find("</section>", asked) - asked);  // the box
+    EXPECT_NE(before.find("<input type=\"text\" class=\"prediction\""), std::string::npos);
+    EXPECT_NE(before.find("<div class=\"write-here\" aria-hidden=\"true\"></div>"), std::string::npos);
+    EXPECT_EQ(before.find("1.5 m/s"), std::string::npos);  // not answered where it is asked
+    // v_bf = v_bi + J / m_b = 0.3 + 1.2 / 1 (the lesson's worked numbers)
+    EXPECT_NE(page.find("<span class=\"answer\">1.5 m/s</span><br>B receives +J.", check), std::string::npos);
+}
+
 TEST(Material, BadInputWritesNothing) {
     render::test::TempDir dir;
     std::ostringstream out, err;
