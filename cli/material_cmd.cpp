@@ -166,6 +166,114 @@ std::string worked_html(const SolveProblem& P, const Solution& S, const std::str
     return o.str();
 }
 
+// ---- Questions ----
+
+// The options of a choice (or predict) question: lettered, each a radio button on screen so a
+// student can choose by keyboard; printed, the letters stay for circling one.
+std::string choices_html(const LessonQuestion& q, std::size_t qi) {
+    std::ostringstream o;
+    o << "<ul class=\"choices\">\n";
+    for (std::size_t k = 0; k < q.choices.size(); ++k)
+        o << "<li><label><input type=\"radio\" name=\"q" << qi + 1 << "\" value=\"" << option_letter(k)
+          << "\"> <span class=\"letter\">" << option_letter(k) << ".</span> " << math(q.choices[k])
+          << "</label></li>\n";
+    o << "</ul>\n";
+    return o.str();
+}
+
+// A question's answer: the engine's number, the right option with every option's reason, or
+// the model answer; then why.
+std::string answer_html(const LessonQuestion& q, const LessonAnswer* a) {
+    std::ostringstream o;
+    if (q.has_choices()) {
+        o << "<p><span class=\"answer\">Option " << option_letter(static_cast<std::size_t>(q.correct - 1))
+          << ".</span></p>\n<ul class=\"reasons\">\n";
+        for (std::size_t k = 0; k < q.choices.size(); ++k) {
+            const bool right = static_cast<int>(k) + 1 == q.correct;
+            o << "<li class=\"" << (right ? "right" : "wrong") << "\"><span class=\"letter\">" << option_letter(k)
+              << ".</span> <em>" << (right ? "Right" : "Wrong") << ":</em> " << math(q.reasons[k]) << "</li>\n";
+        }
+        o << "</ul>\n";
+        if (!q.explain.empty()) o << "<p>" << math(q.explain) << "</p>\n";
+    } else if (q.kind == QuestionKind::explain) {
+        o << paragraphs(q.answer);
+    } else {
+        o << "<p><span class=\"answer\">" << math(a ? a->text : "?") << "</span>";
+        if (!q.explain.empty()) o << "<br>" << math(q.explain);
+        o << "</p>\n";
+    }
+    return o.str();
+}
+
+// The question as asked: its text, the tolerance a number is marked to, its options.
+std::string question_html(const LessonQuestion& q, std::size_t qi) {
+    std::string s = "<p class=\"ask\">" + math(q.text);
+    if (shows_tolerance(q)) s += " <span class=\"tolerance\">(to within " + escape(tolerance_text(q.tolerance)) + ")</span>";
+    s += "</p>\n";
+    if (q.has_choices()) s += choices_html(q, qi);
+    return s;
+}
+
+// Printed, a space to write in (choices: the student circles a letter instead).
+std::string write_space(const LessonQuestion& q) {
+    if (q.has_choices()) return "";
+    return std::string("<div class=\"write-here") + (q.kind == QuestionKind::explain ? " tall" : "") +
+           "\" aria-hidden=\"true\"></div>\n";
+}
+
+// An answer that opens on click on screen; printed, only in the teacher's copy.
+std::string folded_answer(const LessonQuestion& q, const LessonAnswer* a, const char* summary) {
+    const std::string body = answer_html(q, a);
+    return std::string("<details><summary>") + summary + "</summary>\n" + body +
+           "</details>\n<div class=\"printed-answer\"><p class=\"label\">Answer:</p>\n" + body + "</div>\n";
+}
+
+// "Before you watch": the predictions, asked before the figure and the animation show what
+// happens; a space to write each (or the options to choose from), no answers.
+std::string predict_html(const Lesson& L, const std::vector<std::size_t>& predict) {
+    std::ostringstream o;
+    o << "<section class=\"predict\" aria-labelledby=\"predict-heading\">\n<h2 id=\"predict-heading\">Before you watch"
+         "</h2>\n" << kPrintChoice << "<p class=\"note\">Predict first: write down or choose what you expect, then look at the figure "
+         "and the animation, and check your prediction below them.</p>\n<ol class=\"predictions\">\n";
+    for (std::size_t i : predict) {
+        const LessonQuestion& q = L.questions[i];
+        o << "<li>" << question_html(q, i);
+        if (!q.has_choices())
+            o << "<p class=\"noprint\"><label>My prediction: <input type=\"text\" class=\"prediction\" size=\"24\">"
+                 "</label></p>\n";
+        o << write_space(q) << "</li>\n";
+    }
+    o << "</ol>\n</section>\n";
+    return o.str();
+}
+
+// "Check your prediction": after the animation, each prediction's answer, folded.
+std::string check_html(const Lesson& L, const std::vector<LessonAnswer>& answers, const std::vector<std::size_t>& predict) {
+    std::ostringstream o;
+    o << "<section class=\"check\">\n<h2>Check your predictions</h2>\n<ol class=\"predictions\">\n";
+    for (std::size_t i : predict)
+        o << "<li><p class=\"ask\">" << math(L.questions[i].text) << "</p>\n"
+          << folded_answer(L.questions[i], i < answers.size() ? &answers[i] : nullptr, "Check your prediction")
+          << "</li>\n";
+    o << "</ol>\n</section>\n";
+    return o.str();
+}
+
+// The questions after the worked example: numbers, choices and explanations, each answer
+// folded on screen; printed, a space to write in or, ticked, the teacher's copy.
+std::string questions_html(const Lesson& L, const std::vector<LessonAnswer>& answers,
+                           const std::vector<std::size_t>& asked, bool print_choice) {
+    std::ostringstream o;
+    o << "<h2>Questions</h2>\n" << (print_choice ? kPrintChoice : "") << "<ol class=\"questions\">\n";
+    for (std::size_t i : asked) {
+        const LessonQuestion& q = L.questions[i];
+        o << "<li class=\"" << question_kind_name(q.kind) << "\">" << question_html(q, i)
+          << folded_answer(q, i < answers.size() ? &answers[i] : nullptr, "Answer") << write_space(q) << "</li>\n";
+    }
+    o << "</ol>\n";
+    return o.str();
+}
+
 std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
     const Lesson& L = b.lesson;
     const RenderReport& r = b.report;
@@ -202,6 +310,12 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         h << " Click it to see it at full size.</figcaption></figure>\n";
         return h.str();
     };
+    std::vector<std::size_t> predict, asked;
+    for (std::size_t i = 0; i < L.questions.size(); ++i)
+        (L.questions[i].kind == QuestionKind::predict ? predict : asked).push_back(i);
+    // The predictions before the figure: it shows what happens. The print choice goes with the
+    // first questions of the page: it decides how every one prints.
+    if (!predict.empty()) o << predict_html(L, predict);
     if (!r.figures.empty()) o << figure_html(r.figures.front());
     // The animation is for the screen: a printed page leaves the section out.
     o << "<section class=\"animation noprint\">\n<h2>Animation</h2>\n";
@@ -217,6 +331,7 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
           << " PNG files); install ffmpeg for a video.</p>\n";
     }
     o << "</section>\n";
+    if (!predict.empty()) o << check_html(L, r.answers, predict);
     if (r.problem && r.solution) {
         const SolveProblem& P = *r.problem;
         const Solution& S = *r.solution;
@@ -297,21 +412,7 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
          "<img src=\"energy.svg\" alt=\"Energy against time\"><img src=\"momentum.svg\" alt=\"Momentum against time\"></div>\n"
          "<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "
          "<a href=\"data.json\">data.json</a>, <a href=\"events.csv\">events.csv</a>.</p>\n";
-    if (!L.questions.empty()) {
-        o << "<h2>Questions</h2>\n" << kPrintChoice << "<ol class=\"questions\">\n";
-        for (std::size_t i = 0; i < L.questions.size(); ++i) {
-            const LessonQuestion& q = L.questions[i];
-            std::string answer = "<span class=\"answer\">" + math(i < r.answers.size() ? r.answers[i].text : "?") + "</span>";
-            if (!q.explain.empty()) answer += "<br>" + math(q.explain);
-            // On screen the answer opens on demand; printed, a space to write in, or the
-            // answer itself in the teacher's copy.
-            o << "<li>" << math(q.text) << "\n<details><summary>Answer</summary><p>" << answer
-              << "</p></details>\n<div class=\"write-here\" aria-hidden=\"true\"></div>"
-                 "<p class=\"printed-answer\">Answer: "
-              << answer << "</p></li>\n";
-        }
-        o << "</ol>\n";
-    }
+    if (!asked.empty()) o << questions_html(L, r.answers, asked, predict.empty());
     o << "<nav class=\"pager\">";
     o << (prev ? "<a href=\"../" + prev->lesson.id + "/index.html\">← " + math(prev->lesson.title) + "</a>" : "<span></span>");
     o << "<a href=\"../index.html\">All lessons</a>";

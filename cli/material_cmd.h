@@ -2,10 +2,12 @@
 // works offline (README.md, "collide material"):
 //   DIR/index.html             every lesson with a thumbnail, its section and dimension
 //   DIR/style.css              one stylesheet, with print rules
-//   DIR/ID/index.html          a lesson: goals, explanation, the before / at / after figure, the
-//                              animation, the worked example (formula, then numbers), a table
-//                              of the first collision, plots of energy and momentum against
-//                              time (SVG), questions with answers that open on click
+//   DIR/ID/index.html          a lesson: goals, explanation, its predictions ("Before you
+//                              watch"), the before / at / after figure, the animation, the
+//                              predictions checked, the worked example (formula, then
+//                              numbers), a table of the first collision, plots of energy and
+//                              momentum against time (SVG), questions with answers that open
+//                              on click (printed: a space to write in, or the teacher's copy)
 //   DIR/ID/...                 everything `collide render ID` writes (frames, data, Markdown)
 // The site is built in a temporary directory beside DIR and renamed into place at the end:
 // DIR is complete or untouched.

@@ -12,6 +12,7 @@
 #include <variant>
 #include <utility>
 #include <ostream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -40,7 +41,179 @@ std::vector<std::string> strings(const TableReader& t, const std::string& key, c
     return out;
 }
 
+// The keys a question of each kind may have (anything else is refused by name).
+const std::vector<std::string>& question_keys() {
+    static const std::vector<std::string> keys = {"kind", "text", "quantity", "event", "body", "explain", "at",
+                                                  "about", "tolerance", "choices", "correct", "reasons",
+                                                  "answer", "what_if"};
+    return keys;
+}
+
+// Keys that mean nothing on this question: "'reasons' is for choice and predict questions;
+// this one is a numeric question".
+void forbid_on(const TableReader& q, const std::string& kind, const std::vector<std::string>& keys,
+               const std::string& for_what) {
+    const std::string article = kind == "explain" ? "an " : "a ";
+    for (const std::string& k : keys)
+        q.forbid(k, "'" + k + "' is " + for_what + "; this one is " + article + kind + " question");
+}
+
+// The engine quantity of a question and what it needs (event, body, at, about), checked
+// against the lesson's scene.
+void parse_quantity(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
+    Q.quantity = read_choice(q, "quantity", lesson_quantities(), "quantity", "");
+    const QuantityInfo& info = quantity_table().at(Q.quantity);
+    if (info.needs_event) {
+        const long long e = q.integer("event", "a collision number, from 1").value_or(1);
+        if (e < 1 || e > 1000000) q.fail("event", "expected a collision number from 1");
+        Q.event = static_cast<int>(e);
+    } else {
+        q.forbid("event", "'" + Q.quantity + "' is about the whole run, not one collision");
+    }
+    if (info.needs_body) {
+        Q.body = q.string("body", "a body's name").value_or("");
+        if (Q.body.empty()) q.fail("body", "missing key 'body' ('" + Q.quantity + "' is a body's)");
+        bool found = false;
+        std::vector<std::string> names;
+        for (const SceneBody& b : L.scene.bodies) {
+            names.push_back(b.name);
+            found = found || b.name == Q.body;
+        }
+        if (!found) {
+            const std::string hint = closest_match(Q.body, names);
+            q.fail("body", "no body named '" + Q.body + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+        }
+    } else {
+        q.forbid("body", "'" + Q.quantity + "' is not about one body");
+    }
+    if (info.penalty && !L.penalty)
+        q.fail("quantity", "'" + Q.quantity + "' is answered by the penalty contact: add a [penalty] table");
+    if (info.angular && L.scene.dimension == 1)
+        q.fail("quantity", "bodies on a line do not spin (no angular quantities in 1D)");
+    const bool point_velocity = Q.quantity.rfind("point_velocity_", 0) == 0;
+    const bool about_point = Q.quantity.rfind("angular_momentum_", 0) == 0;
+    if (point_velocity) Q.at = read_vec(q, "at", L.scene.dimension, "m");
+    else q.forbid("at", "'at' (a point of the body) is for point_velocity_before and _after");
+    if (about_point) Q.about = read_vec(q, "about", L.scene.dimension, "m");
+    else q.forbid("about", "'about' (a fixed point) is for angular_momentum_before and _after");
+    if (q.has("tolerance")) {
+        Q.tolerance = *q.number("tolerance", "a relative tolerance (0.02 for 2 %)");
+        if (!(Q.tolerance > 0 && Q.tolerance < 1))
+            q.fail("tolerance", "expected a relative tolerance > 0 and < 1 (0.02 for 2 %), got " + show(Q.tolerance));
+    }
+}
+
+// A list of 1 to `most` non-empty strings.
+std::vector<std::string> text_list(const TableReader& q, const std::string& key, const std::string& what) {
+    std::vector<std::string> out = strings(q, key, what);
+    for (const std::string& s : out)
+        if (s.empty()) q.fail(key, "expected " + what + "; one of them is empty");
+    return out;
+}
+
+// `choices`, `correct` and `reasons`: 2 to 6 options, the right one among them, and a reason
+// for each (why it is right or wrong: what a student who picks it needs to read).
+void parse_choices(const TableReader& q, LessonQuestion& Q) {
+    if (!q.has("choices")) q.fail("choices", "missing key 'choices' (2 to 6 options, as a list of strings)");
+    Q.choices = text_list(q, "choices", "a list of 2 to 6 options (strings)");
+    if (Q.choices.size() < 2 || Q.choices.size() > 6)
+        q.fail("choices", "expected 2 to 6 options, got " + std::to_string(Q.choices.size()));
+    if (!q.has("correct")) q.fail("correct", "missing key 'correct' (the right option's number, from 1)");
+    const long long k = *q.integer("correct", "the right option's number, from 1");
+    if (k < 1 || k > static_cast<long long>(Q.choices.size()))
+        q.fail("correct", "expected an option's number from 1 to " + std::to_string(Q.choices.size()) + ", got " +
+                              std::to_string(k));
+    Q.correct = static_cast<int>(k);
+    if (!q.has("reasons"))
+        q.fail("reasons", "missing key 'reasons' (one for each choice: why it is right or wrong)");
+    Q.reasons = text_list(q, "reasons", "a list of reasons (strings), one for each choice");
+    if (Q.reasons.size() != Q.choices.size())
+        q.fail("reasons", "expected one reason for each of the " + std::to_string(Q.choices.size()) +
+                              " choices, got " + std::to_string(Q.reasons.size()));
+}
+
+// `what_if = { "A.mass" = 4.0 }`: each value a number; the lesson with them must load (its
+// errors are given at the what_if key, since the changed file has no lines of its own).
+void parse_what_if(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
+    const toml::table* t = q.node("what_if")->as_table();
+    if (!t || t->empty())
+        q.fail("what_if", "expected a table of values, e.g. what_if = { \"A.mass\" = 4.0, \"scene.restitution\" = 1.0 }");
+    const TableReader w(*t, q.file(), q.full_key("what_if"));
+    for (auto&& [k, v] : *t) {
+        const std::string key(k.str());
+        Q.what_if[key] = *w.number(key, "a number (the value " + key + " takes in this question)");
+    }
+    try {
+        lesson_with_values(L, Q.what_if);
+    } catch (const InputError& e) {
+        q.fail("what_if", "the lesson with these values is refused: " + e.key() + ": " + e.message());
+    }
+}
+
+// One [[question]] table, by its kind (README.md, "Lessons").
+LessonQuestion parse_question(const TableReader& q, const Lesson& L) {
+    q.allow_only(question_keys());
+    LessonQuestion Q;
+    const std::string kind = read_choice(q, "kind", {"numeric", "predict", "choice", "explain"}, "kind", "numeric");
+    Q.kind = kind == "predict" ? QuestionKind::predict
+             : kind == "choice" ? QuestionKind::choice
+             : kind == "explain" ? QuestionKind::explain
+                                 : QuestionKind::numeric;
+    Q.text = q.string("text", "the question (text)").value_or("");
+    if (Q.text.empty()) q.fail("text", "missing key 'text'");
+    Q.explain = q.string("explain", "why (text)").value_or("");
+    const std::vector<std::string> choice_keys = {"choices", "correct", "reasons"};
+    const std::vector<std::string> quantity_keys = {"quantity", "event", "body", "at", "about", "tolerance"};
+    if (Q.kind != QuestionKind::explain) forbid_on(q, kind, {"answer"}, "the model answer of an explain question");
+    if (Q.kind != QuestionKind::numeric) forbid_on(q, kind, {"what_if"}, "for numeric questions");
+    switch (Q.kind) {
+    case QuestionKind::numeric:
+        forbid_on(q, kind, choice_keys, "for choice and predict questions");
+        parse_quantity(q, L, Q);
+        if (q.has("what_if")) parse_what_if(q, L, Q);
+        break;
+    case QuestionKind::predict:
+        if (q.has("quantity") == q.has("choices"))
+            q.fail(q.has("quantity") ? "choices" : "quantity",
+                   "a predict question has either 'choices' (with 'correct' and 'reasons') or a 'quantity' the "
+                   "engine answers, not both and not neither");
+        if (q.has("quantity")) {
+            for (const std::string& k : choice_keys)
+                q.forbid(k, "'" + k + "' goes with 'choices'; this predict question has a 'quantity' instead");
+            parse_quantity(q, L, Q);
+        } else {
+            for (const std::string& k : quantity_keys)
+                q.forbid(k, "'" + k + "' goes with 'quantity'; this predict question has 'choices' instead");
+            parse_choices(q, Q);
+        }
+        if (Q.explain.empty()) q.fail("explain", "missing key 'explain' (why it happens: shown when the student checks the prediction)");
+        break;
+    case QuestionKind::choice:
+        forbid_on(q, kind, quantity_keys, "for numeric and predict questions");
+        parse_choices(q, Q);
+        break;
+    case QuestionKind::explain:
+        forbid_on(q, kind, quantity_keys, "for numeric and predict questions");
+        forbid_on(q, kind, choice_keys, "for choice and predict questions");
+        q.forbid("explain", "an explain question's model answer is its 'answer' (write it there)");
+        Q.answer = q.string("answer", "the model answer (text)").value_or("");
+        if (Q.answer.empty()) q.fail("answer", "missing key 'answer' (the model answer an explain question shows)");
+        break;
+    }
+    return Q;
+}
+
 }  // namespace
+
+const char* question_kind_name(QuestionKind kind) {
+    switch (kind) {
+    case QuestionKind::numeric: return "numeric";
+    case QuestionKind::predict: return "predict";
+    case QuestionKind::choice: return "choice";
+    case QuestionKind::explain: return "explain";
+    }
+    return "numeric";
+}
 
 const std::map<std::string, QuantityInfo>& quantity_table() {
     static const std::map<std::string, QuantityInfo> table = {
@@ -103,6 +276,8 @@ Lesson load_lesson(const std::string& path) {
 Lesson parse_lesson_text(const std::string& text, const std::string& name, const std::string& path) {
     Lesson L;
     L.file = path;
+    L.source = text;
+    L.source_name = name;
     L.scene = parse_scene_text(text, name, &L.view, lesson_tables());
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
@@ -244,56 +419,70 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     if (const toml::node* list = root.node("question")) {
         const toml::array* qs = list->as_array();
         if (!qs) root.fail("question", "expected [[question]] tables");
+        constexpr int kMaxWhatIfs = 20;
+        int what_ifs = 0;
         for (std::size_t i = 0; i < qs->size(); ++i) {
             const toml::table* t = qs->get(i)->as_table();
             const std::string key = "question[" + std::to_string(i + 1) + "]";
             if (!t) root.fail("question", key + " is not a table; write [[question]]");
             const TableReader q(*t, name, key);
-            q.allow_only({"text", "quantity", "event", "body", "explain", "at", "about"});
-            LessonQuestion Q;
-            Q.text = q.string("text", "the question (text)").value_or("");
-            if (Q.text.empty()) q.fail("text", "missing key 'text'");
-            Q.quantity = read_choice(q, "quantity", lesson_quantities(), "quantity", "");
-            const QuantityInfo& info = quantity_table().at(Q.quantity);
-            if (info.needs_event) {
-                const long long e = q.integer("event", "a collision number, from 1").value_or(1);
-                if (e < 1 || e > 1000000) q.fail("event", "expected a collision number from 1");
-                Q.event = static_cast<int>(e);
-            } else {
-                q.forbid("event", "'" + Q.quantity + "' is about the whole run, not one collision");
-            }
-            if (info.needs_body) {
-                Q.body = q.string("body", "a body's name").value_or("");
-                if (Q.body.empty()) q.fail("body", "missing key 'body' ('" + Q.quantity + "' is a body's)");
-                bool found = false;
-                std::vector<std::string> names;
-                for (const SceneBody& b : L.scene.bodies) {
-                    names.push_back(b.name);
-                    found = found || b.name == Q.body;
-                }
-                if (!found) {
-                    const std::string hint = closest_match(Q.body, names);
-                    q.fail("body", "no body named '" + Q.body + "'" +
-                                       (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
-                }
-            } else {
-                q.forbid("body", "'" + Q.quantity + "' is not about one body");
-            }
-            if (info.penalty && !L.penalty)
-                q.fail("quantity", "'" + Q.quantity + "' is answered by the penalty contact: add a [penalty] table");
-            if (info.angular && L.scene.dimension == 1)
-                q.fail("quantity", "bodies on a line do not spin (no angular quantities in 1D)");
-            const bool point_velocity = Q.quantity.rfind("point_velocity_", 0) == 0;
-            const bool about_point = Q.quantity.rfind("angular_momentum_", 0) == 0;
-            if (point_velocity) Q.at = read_vec(q, "at", L.scene.dimension, "m");
-            else q.forbid("at", "'at' (a point of the body) is for point_velocity_before and _after");
-            if (about_point) Q.about = read_vec(q, "about", L.scene.dimension, "m");
-            else q.forbid("about", "'about' (a fixed point) is for angular_momentum_before and _after");
-            Q.explain = q.string("explain", "how to get there (text)").value_or("");
-            L.questions.push_back(std::move(Q));
+            // Each what-if reads the whole file again (and its answer runs the scene again):
+            // a bound keeps a lesson's cost linear in its size.
+            if (q.has("what_if") && ++what_ifs > kMaxWhatIfs)
+                q.fail("what_if", "a lesson may have at most " + std::to_string(kMaxWhatIfs) + " what-if questions");
+            L.questions.push_back(parse_question(q, L));
         }
     }
     return L;
+}
+
+namespace {
+
+// "A.mass = 4, scene.restitution = 1": the changed values, for messages.
+std::string describe_values(const std::map<std::string, double>& values) {
+    std::string s;
+    for (const auto& [key, value] : values) s += (s.empty() ? "" : ", ") + key + " = " + show(value);
+    return s;
+}
+
+// The table a "BODY.KEY" or "scene.KEY" value goes into: [scene], or the [[body]] named BODY.
+toml::table& value_owner(toml::table& file, const std::string& owner, const Lesson& L, const std::string& key) {
+    if (owner == "scene") {
+        if (toml::table* scene = file["scene"].as_table()) return *scene;
+    } else if (toml::array* bodies = file["body"].as_array()) {
+        for (toml::node& b : *bodies)
+            if (toml::table* t = b.as_table(); t && (*t)["name"].value<std::string>() == owner) return *t;
+    }
+    std::vector<std::string> names = {"scene"};
+    for (const SceneBody& b : L.scene.bodies) names.push_back(b.name);
+    const std::string hint = closest_match(owner, names);
+    throw InputError(L.source_name, {}, key,
+                     "no body named '" + owner + "' (write BODY.KEY for a [[body]] or scene.KEY)" +
+                         (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
+}
+
+}  // namespace
+
+Lesson lesson_with_values(const Lesson& L, const std::map<std::string, double>& values) {
+    toml::table file = parse_toml_text(L.source, L.source_name);
+    file.erase("question");  // only the scene is wanted, and questions may hold what_if themselves
+    for (const auto& [key, value] : values) {
+        const std::size_t dot = key.find('.');
+        if (dot == std::string::npos || dot == 0 || dot + 1 == key.size())
+            throw InputError(L.source_name, {}, key, "expected BODY.KEY or scene.KEY (e.g. A.mass, scene.restitution)");
+        toml::table& owner = value_owner(file, key.substr(0, dot), L, key);
+        const std::string name = key.substr(dot + 1);
+        // An integer stays an integer when the file wrote one (a key may require it).
+        const toml::node* old = owner.get(name);
+        if (old && old->is_integer() && value == std::floor(value) && std::abs(value) < 1e15)
+            owner.insert_or_assign(name, static_cast<int64_t>(value));
+        else
+            owner.insert_or_assign(name, value);
+    }
+    std::ostringstream text;
+    text << file;
+    Lesson out = parse_lesson_text(text.str(), L.source_name + " (with " + describe_values(values) + ")", L.file);
+    return out;
 }
 
 std::string lessons_dir() {

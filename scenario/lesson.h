@@ -1,6 +1,8 @@
 // Lessons (README.md, "Lessons"): a scenario (the [scene], [[body]] and [view] tables of a
-// scenario file) with its teaching text in a [lesson] table and [[question]] tables whose
-// answers the engine computes from the run. Lesson files live in lessons/*.toml.
+// scenario file) with its teaching text in a [lesson] table and [[question]] tables of four
+// kinds (QuestionKind below): numeric ones, whose answers the engine computes from the run,
+// predictions asked before the animation, multiple choice with a reason for each option, and
+// why / what-if questions with a model answer. Lesson files live in lessons/*.toml.
 #pragma once
 
 #include <iosfwd>
@@ -14,16 +16,44 @@
 
 namespace collide {
 
+// What a [[question]] asks of the student (README.md, "Lessons", questions):
+//   numeric  (the default) a quantity the engine computes from the run (`quantity`, with
+//            `event`, `body`, `at`, `about` as it needs), marked right within `tolerance`
+//            (relative, 0 < tolerance < 1, default 0.02); `what_if` asks it of the scene
+//            run again with other values ({"A.mass" = 4.0, "scene.restitution" = 1.0}).
+//   predict  asked before the animation, checked after it: either `choices` + `correct` +
+//            `reasons` or a `quantity` the engine answers; `explain` (required) says why.
+//   choice   `choices` (2 to 6), `correct` (1-based) and one `reason` per choice (why that
+//            option is right or wrong).
+//   explain  a why or what-if question with a model `answer` (required).
+enum class QuestionKind { numeric, predict, choice, explain };
+
 struct LessonQuestion {
+    QuestionKind kind = QuestionKind::numeric;
     std::string text;      // the question, as asked
-    std::string quantity;  // what answers it: one of lesson_quantities()
+    std::string quantity;  // what answers it: one of lesson_quantities(); "" when the question
+                           // has no engine quantity (choice, explain, predict with choices)
     int event = 1;         // event quantities: which collision of the run, from 1
     std::string body;      // body quantities: the body's name
-    std::string explain;   // optional: how to get there, shown with the answer
+    std::string explain;   // optional (required for predict): why, shown with the answer
     std::optional<Vec3> at;     // point_velocity_*: a point of the body (world frame at the
                                 // collision instant, m); unset: the contact point
     std::optional<Vec3> about;  // angular_momentum_*: the fixed point (m); unset: the origin
+    double tolerance = 0.02;    // with a quantity: relative tolerance for marking an answer
+    std::vector<std::string> choices;  // choice, predict with choices: the options, in order
+    int correct = 0;                   // with choices: the right option, from 1
+    std::vector<std::string> reasons;  // with choices: why each option is right or wrong
+    std::string answer;                // explain: the model answer
+    // numeric: the scene's values changed for this question ("A.mass", "scene.restitution");
+    // empty: the lesson's own run answers it.
+    std::map<std::string, double> what_if;
+
+    bool has_quantity() const { return !quantity.empty(); }
+    bool has_choices() const { return !choices.empty(); }
 };
+
+// The name of a kind as written in a lesson file ("numeric", "predict", ...).
+const char* question_kind_name(QuestionKind kind);
 
 // The same scene with other settings, shown side by side with it ("e = 1, 0.5, 0").
 struct LessonVariant {
@@ -59,6 +89,8 @@ struct LessonPenalty {
 
 struct Lesson {
     std::string file;         // as given or found
+    std::string source;       // the file's text (lesson_with_values edits and re-reads it)
+    std::string source_name;  // the file's name in messages
     std::string id;           // e.g. "catch-up": `collide render catch-up`
     int order = 0;            // position in `collide lessons`
     std::string title;
@@ -119,6 +151,13 @@ const std::vector<std::string>& lesson_quantities();
 Lesson load_lesson(const std::string& path);
 // The same from the file's text (`name` in messages, `path` kept as Lesson::file).
 Lesson parse_lesson_text(const std::string& text, const std::string& name, const std::string& path);
+
+// The lesson with some of its scene's values changed and everything validated again, as if
+// the file had been written so: `values` maps "BODY.KEY" (a [[body]] named BODY) or
+// "scene.KEY" ([scene]) to a number (e.g. {"A.mass": 4.0, "scene.restitution": 1.0}). The
+// result has no questions (only its scene, view, variants and [penalty]). Throws InputError
+// naming the changed key when there is no such body or the changed lesson is refused.
+Lesson lesson_with_values(const Lesson& lesson, const std::map<std::string, double>& values);
 
 // The directory of the bundled lessons: $COLLIDE_LESSONS when set, else the source tree's.
 std::string lessons_dir();

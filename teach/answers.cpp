@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <ostream>
 #include <stdexcept>
@@ -58,6 +59,30 @@ Vec3 spin_of(const Body1&) { return Vec3::Zero(); }
 Vec3 spin_of(const Body2& b) { return Vec3(0, 0, b.w); }
 Vec3 spin_of(const Body3& b) { return b.w; }
 
+// A question without a quantity: its answer is the lesson's own text.
+LessonAnswer written_answer(const LessonQuestion& q) {
+    LessonAnswer a;
+    a.computed = false;
+    a.text = q.has_choices() ? "option " + option_letter(static_cast<std::size_t>(q.correct - 1)) : q.answer;
+    return a;
+}
+
+// A what-if question: the same question asked of the lesson run again with its values.
+LessonAnswer what_if_answer(const Lesson& L, const LessonQuestion& q, std::size_t qi) {
+    const std::string where = "question[" + std::to_string(qi + 1) + "].what_if";
+    Lesson changed = lesson_with_values(L, q.what_if);
+    LessonQuestion plain = q;
+    plain.what_if.clear();
+    changed.questions = {plain};
+    try {
+        return answer_questions(changed).front();
+    } catch (const InputError& e) {
+        std::string values;
+        for (const auto& [key, value] : q.what_if) values += (values.empty() ? "" : ", ") + key + " = " + notation::num_text(value);
+        throw InputError(L.file, {}, where, "with " + values + ": " + e.message());
+    }
+}
+
 template <int D>
 std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const AnyRecording& record,
                                  const PenaltyStudy* given) {
@@ -89,6 +114,14 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
     std::vector<LessonAnswer> out;
     for (std::size_t qi = 0; qi < L.questions.size(); ++qi) {
         const LessonQuestion& q = L.questions[qi];
+        if (!q.has_quantity()) {
+            out.push_back(written_answer(q));
+            continue;
+        }
+        if (!q.what_if.empty()) {
+            out.push_back(what_if_answer(L, q, qi));
+            continue;
+        }
         const QuantityInfo& info = quantity_table().at(q.quantity);
         const std::string where = "question[" + std::to_string(qi + 1) + "]";
         LessonAnswer a;
@@ -196,6 +229,50 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
 
 }  // namespace
 
+std::string option_letter(std::size_t index) { return std::string(1, static_cast<char>('A' + index % 26)); }
+
+bool shows_tolerance(const LessonQuestion& q) { return q.has_quantity() && q.quantity != "collisions"; }
+
+std::string tolerance_text(double tolerance) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g %%", tolerance * 100);
+    return buf;
+}
+
+namespace {
+
+// A question's options as a lettered list (indented under its number).
+void write_choices(const LessonQuestion& q, std::ostream& out) {
+    for (std::size_t k = 0; k < q.choices.size(); ++k) out << "   - " << option_letter(k) << ". " << q.choices[k] << "\n";
+    out << "\n";
+}
+
+// What opens under a question: the answer, then why (each option's reason for choices).
+void write_answer(const LessonQuestion& q, const LessonAnswer* a, const char* summary, std::ostream& out) {
+    out << "   <details><summary>" << summary << "</summary>\n\n   ";
+    if (q.has_choices()) {
+        out << "Option " << option_letter(static_cast<std::size_t>(q.correct - 1)) << ".\n\n";
+        for (std::size_t k = 0; k < q.choices.size(); ++k)
+            out << "   - Option " << option_letter(k) << (static_cast<int>(k) + 1 == q.correct ? " is right: " : " is wrong: ")
+                << q.reasons[k] << "\n";
+        if (!q.explain.empty()) out << "\n   " << q.explain << "\n";
+    } else {
+        out << (a ? a->text : std::string("?"));
+        if (!q.explain.empty()) out << ". " << q.explain;
+        out << "\n";
+    }
+    out << "\n   </details>\n\n";
+}
+
+// The question's own line: its text, and for a number the tolerance it is marked to.
+std::string question_line(const LessonQuestion& q) {
+    std::string s = q.text;
+    if (shows_tolerance(q)) s += " *(to within " + tolerance_text(q.tolerance) + ")*";
+    return s;
+}
+
+}  // namespace
+
 void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& answers, std::ostream& out) {
     out << "# " << L.title << "\n\n";
     if (!L.section.empty()) out << "*The page's section: " << L.section << ".*\n\n";
@@ -205,15 +282,35 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
         out << "\n";
     }
     if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
+    const auto answer_at = [&](std::size_t i) { return i < answers.size() ? &answers[i] : nullptr; };
+    std::vector<std::size_t> predict, others;
+    for (std::size_t i = 0; i < L.questions.size(); ++i)
+        (L.questions[i].kind == QuestionKind::predict ? predict : others).push_back(i);
+    // Predictions before the figure: it shows what happens.
+    if (!predict.empty()) {
+        out << "## Before you watch\n\nWrite down what you expect before you look at the figure and the animation.\n\n";
+        for (std::size_t k = 0; k < predict.size(); ++k) {
+            const LessonQuestion& q = L.questions[predict[k]];
+            out << k + 1 << ". " << question_line(q) << "\n\n";
+            if (q.has_choices()) write_choices(q, out);
+        }
+    }
     out << "![before, at and after the first collision](figure.png)\n\n";
-    if (!L.questions.empty()) {
+    if (!predict.empty()) {
+        out << "## Check your predictions\n\n";
+        for (std::size_t k = 0; k < predict.size(); ++k) {
+            const LessonQuestion& q = L.questions[predict[k]];
+            out << k + 1 << ". " << q.text << "\n\n";
+            write_answer(q, answer_at(predict[k]), "Check your prediction", out);
+        }
+    }
+    if (!others.empty()) {
         out << "## Questions\n\n";
-        for (std::size_t i = 0; i < L.questions.size(); ++i) {
-            const LessonQuestion& q = L.questions[i];
-            out << i + 1 << ". " << q.text << "\n\n   <details><summary>Answer</summary>\n\n   "
-                << (i < answers.size() ? answers[i].text : std::string("?"));
-            if (!q.explain.empty()) out << ". " << q.explain;
-            out << "\n\n   </details>\n\n";
+        for (std::size_t k = 0; k < others.size(); ++k) {
+            const LessonQuestion& q = L.questions[others[k]];
+            out << k + 1 << ". " << question_line(q) << "\n\n";
+            if (q.has_choices()) write_choices(q, out);
+            write_answer(q, answer_at(others[k]), "Answer", out);
         }
     }
     out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";

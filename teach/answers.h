@@ -18,20 +18,32 @@ struct LessonAnswer {
     Vec3 vector = Vec3::Zero();
     bool is_vector = false;   // 2D and 3D vectors and 3D spins
     std::string unit;         // "N s", "m/s", ...
-    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"
+    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"; without a quantity: "option B"
+                              // (choices) or the model answer (explain)
+    bool computed = true;     // the engine's number (false: the lesson's written answer)
 };
-// Answers every question from `run`, a recording of the lesson's scene whose last sample is
+// An option's letter in a list of choices: 0 -> "A", 1 -> "B", ...
+std::string option_letter(std::size_t index);
+// Whether a question's answer is a measured number, marked within its tolerance (a count of
+// collisions is exact: no tolerance is shown for it).
+bool shows_tolerance(const LessonQuestion& q);
+// A relative tolerance as a percentage for the student: 0.02 -> "2 %", 0.005 -> "0.5 %".
+std::string tolerance_text(double tolerance);
+// Answers every question (one answer each, in order) from `run`, a recording of the lesson's
+// scene whose last sample is
 // at its duration (the run's end). Throws InputError (naming the question) when one asks for
 // an event the run does not have or a body it lacks. `penalty`: the lesson's penalty study of
 // this run (teach/lesson_penalty.h) when the caller has made it; else it is made here when a
-// question asks for a penalty quantity.
+// question asks for a penalty quantity. A question with `what_if` is answered from a run of
+// lesson_with_values (its own scene); one without a quantity gets the lesson's written answer.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run,
                                           const PenaltyStudy* penalty = nullptr);
 // The same from a run of the lesson's scene sampled at its end only.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
 
-// The lesson as Markdown: title, the page's section, goals, explanation, the questions with
-// their answers (in <details>, opened on click), and a link to the worked example.
+// The lesson as Markdown: title, the page's section, goals, explanation, the predictions
+// ("Before you watch", before the figure), the figure, the predictions checked, the questions
+// with their answers (in <details>, opened on click), and a link to the worked example.
 void write_lesson_markdown(const Lesson& lesson, const std::vector<LessonAnswer>& answers,
                            std::ostream& out);
 

@@ -3,6 +3,7 @@
 // fetched from the network), the answers are on the pages, and bad input writes nothing.
 #include "cli/material_cmd.h"
 #include "teach/answers.h"
+#include "teach/html.h"
 
 #include <filesystem>
 #include <fstream>
@@ -87,14 +88,79 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     const std::string css = read(fs::path(dir / "site") / "style.css");
     EXPECT_EQ(css.find("nowrap"), std::string::npos);
     EXPECT_NE(lesson.find("<section class=\"animation noprint\">\n<h2>Animation</h2>"), std::string::npos);
-    std::size_t questions = 0, spaces = 0, printed = 0;
-    for (std::size_t at = 0; (at = lesson.find("<details><summary>Answer</summary>", at)) != std::string::npos; ++at)
-        ++questions;
-    for (std::size_t at = 0; (at = lesson.find("class=\"write-here\"", at)) != std::string::npos; ++at) ++spaces;
-    for (std::size_t at = 0; (at = lesson.find("class=\"printed-answer\"", at)) != std::string::npos; ++at) ++printed;
-    EXPECT_GT(questions, 0u);
-    EXPECT_EQ(spaces, questions);
-    EXPECT_EQ(printed, questions);
+    // Per lesson: each question once, folded on screen, with a space to write in (a choice
+    // question: a letter to circle instead) and its answer for the teacher's copy.
+    const auto count = [](const std::string& text, const std::string& what) {
+        std::size_t k = 0;
+        for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += what.size()) ++k;
+        return k;
+    };
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.id);
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        std::size_t predict = 0, asked = 0, spaces = 0, letters = 0;
+        for (const LessonQuestion& q : L.questions) {
+            (q.kind == QuestionKind::predict ? predict : asked) += 1;
+            spaces += q.has_choices() ? 0 : 1;
+            letters += q.choices.size();
+        }
+        EXPECT_EQ(count(page, "<details><summary>Answer</summary>"), asked);
+        EXPECT_EQ(count(page, "<details><summary>Check your prediction</summary>"), predict);
+        EXPECT_EQ(count(page, "<div class=\"write-here"), spaces);
+        EXPECT_EQ(count(page, "class=\"printed-answer\""), L.questions.size());
+        // Every option lettered where it is asked, and again with its reason in the answer
+        // (on screen and printed).
+        EXPECT_EQ(count(page, "<span class=\"letter\">"), 3 * letters);
+        EXPECT_EQ(count(page, "id=\"print-answers\""), 1u);
+    }
+    // The predictions come before the figure and the animation, which show what happens, and
+    // are not screen-only; their answers come after the animation.
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.id);
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::size_t predict = page.find("<section class=\"predict\""),
+                          figure = page.find("<img src=\"figure.png\""),
+                          animation = page.find("<section class=\"animation noprint\">"),
+                          check = page.find("<section class=\"check\">");
+        ASSERT_NE(predict, std::string::npos);
+        ASSERT_NE(check, std::string::npos);
+        EXPECT_LT(predict, figure);
+        EXPECT_LT(predict, animation);
+        EXPECT_GT(check, animation);
+        const std::string before = page.substr(0, animation);
+        EXPECT_EQ(before.find("<details"), std::string::npos) << "an answer before the animation";
+        EXPECT_EQ(before.find("class=\"reasons\""), std::string::npos) << "a reason before the animation";
+        for (const LessonQuestion& q : L.questions) {
+            if (q.kind != QuestionKind::predict) continue;
+            const std::string asked = html::math(q.text);
+            EXPECT_LT(page.find(asked), animation) << q.text;
+            EXPECT_NE(page.find(asked, check), std::string::npos) << q.text;
+        }
+    }
+    // catch-up: the prediction's options lettered, its answer the right letter with every
+    // option's reason; a number's tolerance shown; the why question's model answer.
+    {
+        const Lesson& L = all.front();
+        ASSERT_EQ(L.id, "catch-up");
+        const std::size_t check = lesson.find("<section class=\"check\">");
+        EXPECT_NE(lesson.find("<span class=\"letter\">B.</span> It stops</label>"), std::string::npos);
+        EXPECT_NE(lesson.find("<span class=\"answer\">Option A.</span>", check), std::string::npos);
+        EXPECT_NE(lesson.find("<li class=\"wrong\"><span class=\"letter\">C.</span> <em>Wrong:</em>", check),
+                  std::string::npos);
+        EXPECT_NE(lesson.find("What impulse J does B receive? <span class=\"tolerance\">(to within 2 %)</span>"),
+                  std::string::npos);
+        EXPECT_NE(lesson.find(html::math(L.questions[5].answer)), std::string::npos);
+        EXPECT_NE(lesson.find("<span class=\"answer\">0.3 m/s</span>"), std::string::npos);  // the what-if's run
+    }
+    // Print: predictions print (they are not screen-only) with a space to write in; their
+    // answers and every other answer only in the teacher's copy; explanations get more room.
+    const std::string print = css.substr(css.find("@media print"));
+    for (const char* rule : {".write-here { display: block;", "body.with-answers .printed-answer { display: block; }",
+                             "section.check { display: none; }", "body.with-answers section.check { display: block; }",
+                             ".write-here.tall {", "details { display: none; }", "ol.predictions > li"})
+        EXPECT_NE(print.find(rule), std::string::npos) << rule;
+    for (const char* hidden : {"section.predict { display: none", ".choices { display: none", ".letter { display: none"})
+        EXPECT_EQ(print.find(hidden), std::string::npos) << hidden;
     // Student pages name no commands and no files of the repository: those go in the
     // teacher's section.
     for (const Lesson& L : all) {
@@ -131,6 +197,36 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     // Built beside the directory and renamed: no temporary left.
     for (const auto& e : fs::directory_iterator(dir.str()))
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
+}
+
+// A prediction of a number: on screen a field to type it in, printed a space to write it in;
+// after the animation the engine's answer with its tolerance and why. A what-if's answer is
+// its own scene's.
+TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
+    render::test::TempDir dir;
+    const std::string file = dir / "predict-number.toml";
+    std::string text = read(fs::path(COLLIDE_SOURCE_DIR) / "lessons/01-catch-up.toml");
+    const std::string id = "id = \"catch-up\"";
+    text.replace(text.find(id), id.size(), "id = \"predict-number\"");
+    text += "\n[[question]]\nkind = \"predict\"\ntext = \"How fast will B move after the collision?\"\n"
+            "quantity = \"velocity_after\"\nbody = \"B\"\ntolerance = 0.05\nexplain = \"B receives +J.\"\n";
+    std::ofstream(file) << text;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons = {file};
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const std::string page = read(fs::path(dir / "site") / "predict-number/index.html");
+    const std::size_t asked = page.find("How fast will B move after the collision? <span class=\"tolerance\">(to within 5 %)</span>"),
+                      animation = page.find("<section class=\"animation noprint\">"),
+                      check = page.find("<section class=\"check\">");
+    ASSERT_NE(asked, std::string::npos);
+    EXPECT_LT(asked, animation);
+    const std::string before = page.substr(asked, page.find("</section>", asked) - asked);  // the box
+    EXPECT_NE(before.find("<input type=\"text\" class=\"prediction\""), std::string::npos);
+    EXPECT_NE(before.find("<div class=\"write-here\" aria-hidden=\"true\"></div>"), std::string::npos);
+    EXPECT_EQ(before.find("1.5 m/s"), std::string::npos);  // not answered where it is asked
+    // v_bf = v_bi + J / m_b = 0.3 + 1.2 / 1 (the lesson's worked numbers)
+    EXPECT_NE(page.find("<span class=\"answer\">1.5 m/s</span><br>B receives +J.", check), std::string::npos);
 }
 
 TEST(Material, BadInputWritesNothing) {

@@ -215,7 +215,8 @@ TEST(RenderCommand, ABodyNamedWithACommaIsOneQuotedCsvColumn) {
 }
 
 // One run, one record: a lesson is run once, and each of its variants once; the answers, the
-// figure, the worked example, the data files and the frames all read those runs.
+// figure, the worked example, the data files and the frames all read those runs. A what-if
+// question is the one exception: it asks about another scene, run once for it.
 TEST(RenderCommand, ALessonRunsEachSceneOnce) {
     const render::test::TempDir dir;
     const std::string lesson = std::string(COLLIDE_SOURCE_DIR) + "/lessons/01-catch-up.toml";
@@ -228,7 +229,10 @@ TEST(RenderCommand, ALessonRunsEachSceneOnce) {
     EXPECT_FALSE(r.answers.empty());
     EXPECT_TRUE(r.problem);
     EXPECT_EQ(r.variants.size(), 3u);
-    EXPECT_EQ(runs, 1u + r.lesson->variants.size());
+    std::size_t what_if = 0;
+    for (const LessonQuestion& q : r.lesson->questions) what_if += q.what_if.empty() ? 0 : 1;
+    EXPECT_EQ(what_if, 1u);
+    EXPECT_EQ(runs, 1u + r.lesson->variants.size() + what_if);
 }
 
 // The plots step at a collision: two points at its instant, the totals just before and just

@@ -53,12 +53,70 @@ TEST(Lessons, CatchUpAnswersAreTheClosedForms) {
     const double J = (1 + e) * ma * mb * (va - vb) / (ma + mb);
     const double lost = (1 - e * e) * ma * mb * (va - vb) * (va - vb) / (2 * (ma + mb));
     const std::vector<LessonAnswer> a = answer_questions(L);
-    ASSERT_EQ(a.size(), 4u);
+    ASSERT_EQ(a.size(), 7u);
     EXPECT_NEAR(a[0].value, J, 1e-12);
     EXPECT_NEAR(a[1].value, va - J / ma, 1e-12);
     EXPECT_NEAR(a[2].value, vb + J / mb, 1e-12);
     EXPECT_NEAR(a[3].value, lost, 1e-12);
     EXPECT_GT(J, 0.0);  // A catches B: J > 0
+    // The prediction and the why question are answered by the lesson's own text.
+    EXPECT_FALSE(a[4].computed);
+    EXPECT_EQ(a[4].text, "option A");
+    EXPECT_FALSE(a[5].computed);
+    EXPECT_EQ(a[5].text, L.questions[5].answer);
+    // What if the masses were swapped: the run of the changed scene answers, J unchanged
+    // (m_a m_b / (m_a + m_b) is symmetric) and A, now 1 kg, loses J / 1 of its speed.
+    ASSERT_EQ(L.questions[6].what_if.size(), 2u);
+    EXPECT_TRUE(a[6].computed);
+    const double ma2 = L.questions[6].what_if.at("A.mass"), mb2 = L.questions[6].what_if.at("B.mass");
+    const double J2 = (1 + e) * ma2 * mb2 * (va - vb) / (ma2 + mb2);
+    EXPECT_NEAR(J2, J, 1e-12);
+    EXPECT_NEAR(a[6].value, va - J2 / ma2, 1e-12);
+    EXPECT_GT(std::abs(a[6].value - a[1].value), 0.1);  // not the lesson's own answer
+}
+
+// A what-if on the scene: the bouncing ball's bounces end at T = sqrt(2H/g) (1 + e) / (1 - e)
+// for the question's e, not the lesson's.
+TEST(Lessons, BouncingBallWhatIfIsAnsweredForItsOwnRestitution) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    const Lesson& L = find(all, "bouncing-ball");
+    std::size_t k = L.questions.size();
+    for (std::size_t i = 0; i < L.questions.size(); ++i)
+        if (!L.questions[i].what_if.empty()) k = i;
+    ASSERT_LT(k, L.questions.size());
+    const double e = L.questions[k].what_if.at("scene.restitution");
+    EXPECT_NE(e, L.scene.restitution);
+    const double g = -L.scene.gravity.x();
+    const double H = L.scene.bodies[1].body1.position - L.scene.bodies[1].length / 2 -
+                     (L.scene.bodies[0].body1.position + L.scene.bodies[0].length / 2);
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    EXPECT_NEAR(a[k].value, std::sqrt(2 * H / g) * (1 + e) / (1 - e), 1e-6);
+}
+
+// lesson.md asks the predictions before the figure and checks them after it; choices are
+// lettered and every option's reason is given; numbers show their tolerance.
+TEST(Lessons, MarkdownAsksPredictionsBeforeTheFigureAndChecksThemAfter) {
+    const std::vector<Lesson> all = load_lessons(kDir);
+    const Lesson& L = find(all, "catch-up");
+    std::ostringstream md;
+    write_lesson_markdown(L, answer_questions(L), md);
+    const std::string s = md.str();
+    const std::size_t before = s.find("## Before you watch"), figure = s.find("](figure.png)"),
+                      check = s.find("## Check your predictions"), questions = s.find("## Questions");
+    ASSERT_NE(before, std::string::npos);
+    ASSERT_NE(check, std::string::npos);
+    EXPECT_LT(before, figure);
+    EXPECT_LT(figure, check);
+    EXPECT_LT(check, questions);
+    const std::string& predict = L.questions[4].text;
+    EXPECT_LT(s.find(predict), figure);                   // asked before
+    EXPECT_NE(s.find(predict, figure), std::string::npos);  // and checked after
+    EXPECT_EQ(s.find("Option A is right"), s.find("Option A is right", check));  // only after
+    EXPECT_NE(s.find("   - D. " + L.questions[4].choices[3]), std::string::npos);
+    for (std::size_t k = 0; k < L.questions[4].reasons.size(); ++k)
+        EXPECT_NE(s.find(L.questions[4].reasons[k], check), std::string::npos) << k;
+    EXPECT_NE(s.find("What impulse J does B receive? *(to within 2 %)*"), std::string::npos);
+    EXPECT_NE(s.find(L.questions[5].answer), std::string::npos);
 }
 
 TEST(Lessons, CatchUpVariantsGiveTheClosedFormImpulseForTheirRestitution) {
@@ -204,6 +262,69 @@ INSTANTIATE_TEST_SUITE_P(
         BadLesson{"penalty quantity without [penalty]",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"penalty_impulse\"\n",
                   "question[1].quantity", "add a [penalty] table"},
+        BadLesson{"unknown question kind",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"chioce\"\ntext = \"?\"\n",
+                  "question[1].kind", "did you mean 'choice'?"},
+        BadLesson{"choice: right option out of range",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"choice\"\ntext = \"?\"\n"
+                  "choices = [\"a\", \"b\"]\ncorrect = 0\nreasons = [\"r\", \"s\"]\n",
+                  "question[1].correct", "from 1 to 2, got 0"},
+        BadLesson{"choice: fewer reasons than choices",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"choice\"\ntext = \"?\"\n"
+                  "choices = [\"a\", \"b\", \"c\"]\ncorrect = 1\nreasons = [\"r\", \"s\"]\n",
+                  "question[1].reasons", "one reason for each of the 3 choices, got 2"},
+        BadLesson{"choice: seven options",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"choice\"\ntext = \"?\"\n"
+                  "choices = [\"a\", \"b\", \"c\", \"d\", \"e\", \"f\", \"g\"]\ncorrect = 1\n"
+                  "reasons = [\"1\", \"2\", \"3\", \"4\", \"5\", \"6\", \"7\"]\n",
+                  "question[1].choices", "expected 2 to 6 options, got 7"},
+        BadLesson{"choice: an empty reason",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"choice\"\ntext = \"?\"\n"
+                  "choices = [\"a\", \"b\"]\ncorrect = 1\nreasons = [\"r\", \"\"]\n",
+                  "question[1].reasons", "one of them is empty"},
+        BadLesson{"choice with a quantity",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"choice\"\ntext = \"?\"\n"
+                  "quantity = \"impulse\"\nchoices = [\"a\", \"b\"]\ncorrect = 1\nreasons = [\"r\", \"s\"]\n",
+                  "question[1].quantity", "this one is a choice question"},
+        BadLesson{"explain without an answer",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"explain\"\ntext = \"Why?\"\n",
+                  "question[1].answer", "missing key 'answer'"},
+        BadLesson{"explain with explain",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"explain\"\ntext = \"Why?\"\n"
+                  "answer = \"a\"\nexplain = \"b\"\n",
+                  "question[1].explain", "model answer is its 'answer'"},
+        BadLesson{"numeric tolerance of 0",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impulse\"\n"
+                  "tolerance = 0.0\n",
+                  "question[1].tolerance", "> 0 and < 1"},
+        BadLesson{"numeric with choices",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impulse\"\n"
+                  "choices = [\"a\", \"b\"]\n",
+                  "question[1].choices", "this one is a numeric question"},
+        BadLesson{"predict with neither choices nor a quantity",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"predict\"\ntext = \"?\"\n"
+                  "explain = \"e\"\n",
+                  "question[1].quantity", "either 'choices'"},
+        BadLesson{"predict with choices and a body",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"predict\"\ntext = \"?\"\n"
+                  "choices = [\"a\", \"b\"]\ncorrect = 1\nreasons = [\"r\", \"s\"]\nbody = \"A\"\nexplain = \"e\"\n",
+                  "question[1].body", "goes with 'quantity'"},
+        BadLesson{"predict without why",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\nkind = \"predict\"\ntext = \"?\"\n"
+                  "quantity = \"impulse\"\n",
+                  "question[1].explain", "missing key 'explain'"},
+        BadLesson{"what-if on a body that does not exist",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impulse\"\n"
+                  "what_if = { \"C.mass\" = 2.0 }\n",
+                  "question[1].what_if", "no body named 'C'"},
+        BadLesson{"what-if that is not a number",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impulse\"\n"
+                  "what_if = { \"A.mass\" = \"heavy\" }\n",
+                  "question[1].what_if.A.mass", "expected a number"},
+        BadLesson{"what-if after which the bodies never meet",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impulse\"\n"
+                  "what_if = { \"A.v\" = -1.0 }\n",
+                  "question[1].what_if", "with A.v = -1: asks for collision 1 but the run has 0"},
         BadLesson{"unknown lesson key",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\ngoal = [\"g\"]\n",
                   "lesson.goal", "did you mean 'goals'?"}));
