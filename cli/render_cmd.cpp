@@ -240,7 +240,7 @@ struct Analysis {
 std::vector<CollisionPick> lesson_picks(const Loaded& in) {
     std::vector<CollisionPick> picks;
     if (in.lesson)
-        for (const LessonFigure& f : in.lesson->figures) picks.push_back({f.ia, f.ib, f.collision});
+        for (const LessonFigure& f : in.lesson->figures) picks.push_back({f.ia, f.ib, f.collision, false, f.touching});
     return picks;
 }
 

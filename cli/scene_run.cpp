@@ -240,7 +240,7 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
     // A contact resolved in the same instant as others (a cradle's, one after another): the
     // bodies do not move between them, so before and after are drawn where they touch.
     const bool shared = !pick.whole_instant && (first_event > instant.first || end_event < instant.end);
-    if (shared) {
+    if (shared || pick.touching) {
         m.before = te;
         m.states[0] = render::frame_state(scene, te, instant.bodies);
         ka = t.size();

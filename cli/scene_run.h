@@ -53,6 +53,7 @@ struct CollisionPick {
     std::size_t a = 0, b = 0;
     int order = 1;
     bool whole_instant = false;  // every impact of that instant, before and after all of them
+    bool touching = false;       // before and after drawn at the instant's poses
 };
 // Its moments, as first_moments gives the first collision's; the "at" state holds only this
 // pair's impacts, and before / after carry the velocities just before and just after them

@@ -343,7 +343,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     double fastest = 0;
     for (const BodyState& s : frame.bodies) fastest = std::max(fastest, s.v.norm());
     for (const PointMark& m : decor.points) {
-        if (m.body >= n) continue;
+        if (m.body >= n || !decor.in_focus(m.body)) continue;  // a figure about another pair
         const BodyState& s = frame.bodies[m.body];
         const double ca = std::cos(s.angle), sa = std::sin(s.angle);
         const Vec3 r = dim == 1 ? Vec3(m.at.x(), 0, 0)
@@ -359,7 +359,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         const ImVec2 at = to_screen(p);
         a.box = ImVec4(at.x - style_.px(5), at.y - style_.px(5), at.x + style_.px(5), at.y + style_.px(5));
         const int k = add(std::move(a));
-        const bool moving = m.velocity && decor.velocities && decor.in_focus(m.body);
+        const bool moving = m.velocity && decor.velocities;
         const Vec3 vp = dim == 1 ? Vec3(s.v.x(), 0, 0) : Vec3(s.v + s.w.cross(r));
         const ImVec2 tip = to_screen(p + k_velocity_ * vp);
         if (moving && vp.norm() > 1e-3 * fastest) {

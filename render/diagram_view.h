@@ -53,7 +53,7 @@ struct Decor {
     // When not empty: velocities and spins of these bodies only (scene indices): a figure
     // about one pair of a busy scene leaves the others' arrows out.
     std::vector<std::size_t> focus;
-    std::vector<PointMark> points;  // marked points (1D and 2D diagrams)
+    std::vector<PointMark> points;  // marked points (1D and 2D diagrams) of the bodies in focus
     bool in_focus(std::size_t i) const {
         return focus.empty() || std::find(focus.begin(), focus.end(), i) != focus.end();
     }

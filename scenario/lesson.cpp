@@ -351,7 +351,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
             const std::string key = "figure[" + std::to_string(i + 1) + "]";
             if (!t) root.fail("figure", key + " is not a table; write [[figure]]");
             const TableReader f(*t, name, key);
-            f.allow_only({"a", "b", "collision", "caption"});
+            f.allow_only({"a", "b", "collision", "caption", "touching"});
             LessonFigure F;
             F.key = key;
             F.pos = f.table_pos();
@@ -374,6 +374,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
             if (k < 1 || k > 1000000) f.fail("collision", "expected a collision number from 1, got " + std::to_string(k));
             F.collision = static_cast<int>(k);
             F.caption = f.string("caption", "the figure's caption (text)").value_or("");
+            F.touching = f.boolean("touching").value_or(false);
             for (const LessonFigure& G : L.figures) {
                 if ((G.ia == F.ib && G.ib == F.ia))
                     f.fail("a", G.key + " calls '" + G.a + "' a and '" + G.b +

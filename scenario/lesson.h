@@ -72,6 +72,9 @@ struct LessonFigure {
     std::size_t ia = 0, ib = 0;  // their scene indices
     int collision = 1;           // which collision of the pair, in time order, from 1
     std::string caption;         // optional: what the figure shows, in the lesson's words
+    bool touching = false;       // before and after drawn where the bodies touch (default: a
+                                 // moment apart), so that points of the bodies (a [[mark]]) keep
+                                 // the instant's positions and velocities
     SourcePos pos;               // of the entry (for errors found when the scene is run)
     std::string key;             // "figure[K]"
 };
