@@ -554,8 +554,10 @@ TEST(LessonAnswers, BouncingBall) {
     const Lesson& L = lesson("bouncing-ball");
     const std::vector<LessonAnswer> a = answer_questions(L);
     const SceneBody &floor = body(L, "floor"), &ball = body(L, "ball");
-    const double H = (ball.body1.position - ball.length / 2) - (floor.body1.position + floor.length / 2);
-    const double g = -L.scene.gravity.x(), e = L.scene.restitution;
+    ASSERT_EQ(floor.shape2.kind, Shape2::Kind::half_plane);  // the floor, y = its offset
+    const double H = (ball.body2.position.y() - ball.shape2.radius) - floor.shape2.offset;
+    const double g = -L.scene.gravity.y(), e = L.scene.restitution;
+    EXPECT_EQ(L.scene.gravity.x(), 0.0);  // drawn upright: gravity along -y
     const double t0 = std::sqrt(2 * H / g);
     ASSERT_EQ(engine_answers(L, a), 4u);
     EXPECT_NEAR(ans(L, a, "time").value, t0, 1e-12);

@@ -86,9 +86,9 @@ TEST(Lessons, BouncingBallWhatIfIsAnsweredForItsOwnRestitution) {
     ASSERT_LT(k, L.questions.size());
     const double e = L.questions[k].what_if.at("scene.restitution");
     EXPECT_NE(e, L.scene.restitution);
-    const double g = -L.scene.gravity.x();
-    const double H = L.scene.bodies[1].body1.position - L.scene.bodies[1].length / 2 -
-                     (L.scene.bodies[0].body1.position + L.scene.bodies[0].length / 2);
+    const double g = -L.scene.gravity.y();
+    const double H = L.scene.bodies[1].body2.position.y() - L.scene.bodies[1].shape2.radius -
+                     L.scene.bodies[0].shape2.offset;
     const std::vector<LessonAnswer> a = answer_questions(L);
     EXPECT_NEAR(a[k].value, std::sqrt(2 * H / g) * (1 + e) / (1 - e), 1e-6);
 }
