@@ -105,6 +105,13 @@ std::string num_text(double x) {
     return buf;
 }
 
+std::string num_answer(double x) {
+    if (x == 0.0) x = 0.0;  // no "-0"
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.4g", x);
+    return buf;
+}
+
 std::string num_data(double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.10g", x);

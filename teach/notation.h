@@ -29,6 +29,9 @@ F unit(const std::string& u);
 // A number to 6 significant digits ("-0" shown as "0"; 1e-07 as 1\times10^{-7} in LaTeX).
 F num(double x);
 std::string num_text(double x);
+// An answer for students: 4 significant digits ("-0" shown as "0"). Full precision stays in
+// the data files and in key.json.
+std::string num_answer(double x);
 // Ten significant digits (printf %.10g, "-0" kept): the data files (data.csv, events.csv)
 // and numbers quoted back in messages.
 std::string num_data(double x);
