@@ -339,8 +339,11 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
                                           : "The collision of " + escape(P.a.name) + " and " + escape(P.b.name) +
                                                 ", worked out")
           << "</h2>\n";
-        o << "<p class=\"note\">Conventions: the normal n points from A into B; the impulse P acts as +P on B "
-             "and −P on A at the contact point; u = v<sub>pb</sub> − v<sub>pa</sub>; SI units. Model: "
+        // One notation on the page: our P is the page's J; j its size along n.
+        o << "<p class=\"note\">Conventions: body a is " << escape(P.a.name) << " and body b is " << escape(P.b.name)
+          << "; the normal n points from a into b; the impulse P (the page writes J) acts as +P on b and −P on a "
+             "at the contact point, and j = P · n is its size along n; u = v<sub>pb</sub> − v<sub>pa</sub>; SI "
+             "units. Model: "
           << escape(model_name(P.model)) << ".</p>\n";
         o << worked_html(P, S, r.world_note);
         // The lesson's next figures, each with its collision worked out.
