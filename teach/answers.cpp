@@ -296,7 +296,16 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
             if (q.has_choices()) write_choices(q, out);
         }
     }
-    out << "![before, at and after the first collision](figure.png)\n\n";
+    // The figures: the lesson's [[figure]] entries (figure.png, figure-2.png, ...), each with
+    // its caption, or the run's first collision.
+    if (L.figures.empty()) out << "![before, at and after the first collision](figure.png)\n\n";
+    for (std::size_t k = 0; k < L.figures.size(); ++k) {
+        const LessonFigure& f = L.figures[k];
+        const std::string what = f.caption.empty() ? "before, at and after the collision of " + f.a + " and " + f.b
+                                                   : f.caption;
+        out << "![" << what << "](figure" << (k == 0 ? std::string() : "-" + std::to_string(k + 1)) << ".png)\n\n";
+        if (!f.caption.empty()) out << "*" << f.caption << "*\n\n";
+    }
     if (!predict.empty()) {
         out << "## Check your predictions\n\n";
         for (std::size_t k = 0; k < predict.size(); ++k) {

@@ -66,6 +66,17 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         for (const char* name : {"index.html", "lesson.md", "data.csv", "energy.svg", "momentum.svg"})
             EXPECT_TRUE(fs::exists(d / name)) << name;
         EXPECT_TRUE(fs::exists(d / "frames/frame_00000.png"));
+        // lesson.md shows each of the lesson's figures (figure.png, figure-2.png, ...), and
+        // the page each of them: every [[figure]] has its picture.
+        const std::string md = read(d / "lesson.md"), page = read(d / "index.html");
+        const std::size_t figures = std::max<std::size_t>(1, L.figures.size());
+        for (std::size_t k = 1; k <= figures; ++k) {
+            const std::string file = k == 1 ? "figure.png" : "figure-" + std::to_string(k) + ".png";
+            EXPECT_TRUE(fs::exists(d / file)) << file;
+            EXPECT_NE(md.find("](" + file + ")"), std::string::npos) << "lesson.md lacks " << file;
+            EXPECT_NE(page.find("<img src=\"" + file + "\""), std::string::npos) << "the page lacks " << file;
+        }
+        EXPECT_FALSE(fs::exists(d / ("figure-" + std::to_string(figures + 1) + ".png")));
         if (!L.variants.empty()) {
             EXPECT_TRUE(fs::exists(d / "variants.png"));
         }
