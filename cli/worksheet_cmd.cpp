@@ -5,6 +5,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -100,7 +101,7 @@ ul.choices { list-style: none; padding-left: 4mm; margin: 1mm 0; }
 .math.result { font-weight: bold; }
 .note { color: #444; font-size: 9pt; margin: 1mm 0; }
 .answer { font-weight: bold; }
-@media screen { .sheet { border-bottom: 2px dashed #bbb; padding-bottom: 8mm; margin-bottom: 8mm; } }
+@media screen { body { padding: 8mm; } .sheet { border-bottom: 2px dashed #bbb; padding-bottom: 8mm; margin-bottom: 8mm; } }
 </style>
 )";
 
@@ -169,7 +170,7 @@ std::string givens_html(const Lesson& L) {
 
 // A question as the student sees it: number, text, tolerance; a blank with the unit, room
 // to work, or the options to circle.
-std::string sheet_question(const Lesson& L, std::size_t i, const LessonAnswer& a) {
+std::string sheet_question(const Lesson& L, std::size_t i, const LessonAnswer& a, double work_mm) {
     const LessonQuestion& q = L.questions[i];
     std::ostringstream o;
     o << "<div class=\"q\"><p class=\"ask\"><b>" << question_number(L, i) << ".</b> " << math(q.text);
@@ -182,12 +183,26 @@ std::string sheet_question(const Lesson& L, std::size_t i, const LessonAnswer& a
             o << "<li>" << option_letter(k) << ". " << math(q.choices[k]) << "</li>\n";
         o << "</ul>\n";
     } else if (q.has_quantity()) {
-        o << "<div class=\"work\"></div>\n<p class=\"blank\">Answer:<span class=\"line\"></span>" << math(a.unit) << "</p>\n";
+        char style[48];
+        std::snprintf(style, sizeof style, " style=\"height: %.0fmm\"", work_mm);
+        o << "<div class=\"work\"" << style << "></div>\n<p class=\"blank\">Answer:<span class=\"line\"></span>" << math(a.unit) << "</p>\n";
     } else {
         o << "<div class=\"tall\"></div>\n";
     }
     o << "</div>\n";
     return o.str();
+}
+
+// The room to work each numeric question gets (mm): the page's space for questions shared
+// out, so that a sheet of few questions has room to write and one of many still fits on its
+// page. Measured on A4 PDFs (weasyprint): about 180 mm below the givens, 17 mm for a numeric
+// question's text and answer line, 30 mm for a choice or explain question.
+double work_height(const Lesson& L, const std::vector<std::size_t>& asked) {
+    int numeric = 0, other = 0;
+    for (std::size_t i : asked) (L.questions[i].has_quantity() ? numeric : other)++;
+    if (numeric == 0) return 0.0;
+    const double room = (180.0 - 30.0 * other - 17.0 * numeric) / numeric;
+    return std::clamp(room, 8.0, 35.0);
 }
 
 std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets) {
@@ -197,7 +212,8 @@ std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets
         o << "<section class=\"sheet\">\n<h1>" << math(L.title) << "</h1>\n<p class=\"student\">Student " << s.student
           << "</p>\n<p>Name: <span class=\"fill\"></span> Class: <span class=\"fill short\"></span></p>\n<h2>Given</h2>\n"
           << givens_html(s.lesson) << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
-        for (std::size_t k = 0; k < s.asked.size(); ++k) o << sheet_question(L, s.asked[k], s.answers[k]);
+        const double work = work_height(L, s.asked);
+        for (std::size_t k = 0; k < s.asked.size(); ++k) o << sheet_question(L, s.asked[k], s.answers[k], work);
         o << "</section>\n";
     }
     o << kPageTail;
