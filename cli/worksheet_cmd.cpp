@@ -403,6 +403,10 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
                 err << line << std::flush;
             }
         }
+        // Not an error (a sheet of the lesson's own numbers is still a sheet), but rarely meant.
+        for (const Lesson& L : lessons)
+            if (L.vary.empty())
+                err << "collide: note: " << L.id << " has no [[vary]] ranges: every student gets the lesson's own numbers\n";
         const std::string weasyprint = render::find_program("weasyprint");
         tmp = dir.parent_path() / (dir.filename().string() + ".tmp-" + std::to_string(::getpid()));
         fs::remove_all(tmp, ec);

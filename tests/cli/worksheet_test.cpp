@@ -241,12 +241,20 @@ TEST(Worksheet, PdfsWhenWeasyprintIsInstalled) {
     if (std::system("command -v weasyprint >/dev/null 2>&1") != 0) GTEST_SKIP() << "weasyprint is not installed";
     const fs::path out = scratch("pdf");
     std::string err;
-    ASSERT_EQ(worksheet("catch-up -o " + out.string() + " --students 2", &err, true), 0) << err;
-    for (const char* f : {"sheets.pdf", "key.pdf"}) {
-        const std::string pdf = slurp(out / f);
-        EXPECT_EQ(pdf.rfind("%PDF-", 0), 0u) << f;
-    }
+    ASSERT_EQ(worksheet("catch-up rotation-directions -o " + out.string() + " --students 3", &err, true), 0) << err;
     EXPECT_EQ(err.find("PDFs skipped"), std::string::npos) << err;
+    const bool pdfinfo = std::system("command -v pdfinfo >/dev/null 2>&1") == 0;
+    for (const std::string id : {"catch-up", "rotation-directions"})
+        for (const char* f : {"sheets.pdf", "key.pdf"}) {
+            const fs::path pdf = out / id / f;
+            EXPECT_EQ(slurp(pdf).rfind("%PDF-", 0), 0u) << pdf;
+            if (!pdfinfo || std::string(f) != "sheets.pdf") continue;
+            // One page a student: a sheet that runs onto a second page is not a worksheet.
+            const fs::path info = scratch("pdfinfo");
+            ASSERT_EQ(std::system(("pdfinfo " + pdf.string() + " >" + info.string()).c_str()), 0);
+            EXPECT_NE(slurp(info).find("Pages:           3\n"), std::string::npos) << pdf << "\n" << slurp(info);
+            fs::remove(info);
+        }
     fs::remove_all(out);
 }
 
