@@ -12,6 +12,7 @@
 #include "cli/interactive.h"
 #include "scenario/lesson.h"
 #include "cli/material_cmd.h"
+#include "cli/worksheet_cmd.h"
 #include "cli/render_cmd.h"
 #include "scenario/scene_file.h"
 #include "teach/solve.h"
@@ -169,6 +170,24 @@ int main(int argc, char** argv) {
         "DIR/style.css (with print rules) and, per lesson, what collide render writes. The site is\n"
         "built beside DIR and renamed into place when complete.\n"
         "Example: collide material -o out/site && chromium out/site/index.html");
+    collide::WorksheetOptions worksheet_options;
+    CLI::App* worksheet = app.add_subcommand(
+        "worksheet", "Write printable worksheets: each student's own numbers, and an answer key");
+    worksheet->add_option("LESSON", worksheet_options.lessons, "lesson ids or lesson files")->required();
+    worksheet->add_option("-o,--output", worksheet_options.out_dir, "output directory")->required();
+    worksheet->add_option("--students", worksheet_options.students, "how many sheets (1 to 1000)")
+        ->capture_default_str();
+    worksheet->add_option("--seed", worksheet_options.seed, "the draw: the same seed gives the same sheets")
+        ->capture_default_str();
+    worksheet->add_flag("--force", worksheet_options.force, "replace a directory that is not empty");
+    worksheet->footer(
+        "Each student's values are drawn from the lesson's [[vary]] ranges and the engine answers\n"
+        "each sheet. Writes, in DIR (for several lessons in DIR/ID/, with DIR/index.html):\n"
+        "sheets.html (one page per student: givens, questions, blanks), key.html (every student's\n"
+        "values, answers and worked example), key.json (for scripts) and, when weasyprint is\n"
+        "installed, sheets.pdf and key.pdf. Built beside DIR and renamed into place when complete.\n"
+        "Example: collide worksheet catch-up -o out/ws --students 30 --seed 7\n"
+        "See README.md, section 'collide worksheet'.");
     collide::GuiOptions gui_options;
     CLI::App* gui = app.add_subcommand(
         "gui", "Open a window: the scene's frame with controls to change it, play it and step it");
@@ -259,6 +278,7 @@ int main(int argc, char** argv) {
         if (*render) return collide::run_render(render_options, std::cout, std::cerr);
         if (*gui) return collide::run_gui(gui_options, std::cout, std::cerr);
         if (*material) return collide::run_material(material_options, std::cout, std::cerr);
+        if (*worksheet) return collide::run_worksheet(worksheet_options, std::cout, std::cerr);
         if (*lessons) {
             std::ostringstream out;
             collide::write_lesson_list(collide::load_lessons(collide::lessons_dir()), lessons_json, out);

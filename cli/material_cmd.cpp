@@ -34,6 +34,7 @@ using html::math;
 using html::paragraphs;
 using html::Series;
 using html::svg_plot;
+using html::worked_html;
 
 std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
 std::string vec(const Vec3& v, int dim) {
@@ -149,22 +150,6 @@ struct Built {
     std::vector<int> figure_widths;  // pixels, of report.figures' PNG files
     int variants_width = 0;          // of variants.png
 };
-
-// A collision worked out: each step's formula, then its numbers (the response's last line
-// marked as the result), its notes, and the world's note when it resolved several points.
-std::string worked_html(const SolveProblem& P, const Solution& S, const std::string& world_note) {
-    std::ostringstream o;
-    int k = 0;
-    for (const WorkedStep& st : worked_steps(P, S)) {
-        o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
-        for (std::size_t i = 0; i < st.lines.size(); ++i)
-            o << "<div class=\"math" << (st.response && i + 1 == st.lines.size() ? " result" : "") << "\">"
-              << math(st.lines[i]) << "</div>\n";
-        for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
-    }
-    if (!world_note.empty()) o << "<p class=\"note\">" << math(world_note) << "</p>\n";
-    return o.str();
-}
 
 // ---- Questions ----
 

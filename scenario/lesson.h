@@ -90,6 +90,25 @@ struct LessonPenalty {
     std::string step_key = "penalty";    // when the contact is run)
 };
 
+// [[vary]] (worksheets, README.md "Lessons"): a range a student's value of one input is drawn
+// from: `key` of the [[body]] named `body` (or of [scene] when body is "scene") takes one of
+// lo, lo + step, ... up to hi. The key is a number the table already has (its lesson value).
+struct LessonVary {
+    std::string body;        // a body's name, or "scene"
+    std::string key;         // e.g. "mass"
+    double lo = 0.0, hi = 0.0, step = 1.0;
+    SourcePos pos;           // of the entry (for errors found when a draw is run)
+    std::string where;       // "vary[K]"
+
+    // "A.mass" or "scene.restitution": the name lesson_with_values takes.
+    std::string name() const { return body + "." + key; }
+    // How many values the grid has: floor((hi - lo) / step) + 1.
+    std::size_t count() const;
+    // The k-th value of the grid, lo + k step, rounded to 1e-9 so that it prints as written
+    // (0.1 + 2 * 0.1 gives 0.3, not 0.30000000000000004).
+    double value(std::size_t k) const;
+};
+
 struct Lesson {
     std::string file;         // as given or found
     std::string source;       // the file's text (lesson_with_values edits and re-reads it)
@@ -109,6 +128,7 @@ struct Lesson {
     std::vector<LessonVariant> variants;
     std::optional<LessonPenalty> penalty;
     std::vector<LessonFigure> figures;  // [[figure]] entries, in order (may be empty)
+    std::vector<LessonVary> vary;       // [[vary]] entries, in order (may be empty)
     SceneView view;
 };
 
@@ -158,7 +178,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
 // The lesson with some of its scene's values changed and everything validated again, as if
 // the file had been written so: `values` maps "BODY.KEY" (a [[body]] named BODY) or
 // "scene.KEY" ([scene]) to a number (e.g. {"A.mass": 4.0, "scene.restitution": 1.0}). The
-// result has no questions (only its scene, view, variants and [penalty]). Throws InputError
+// result has no questions and no [[vary]] (only its scene, view, variants, figures and [penalty]). Throws InputError
 // naming the changed key when there is no such body or the changed lesson is refused.
 Lesson lesson_with_values(const Lesson& lesson, const std::map<std::string, double>& values);
 

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "teach/notation.h"
+#include "teach/solve.h"
 
 namespace collide::html {
 
@@ -162,6 +163,20 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
         o << "\"/>\n";
     }
     o << "</svg>\n";
+    return o.str();
+}
+
+std::string worked_html(const SolveProblem& P, const Solution& S, const std::string& world_note) {
+    std::ostringstream o;
+    int k = 0;
+    for (const WorkedStep& st : worked_steps(P, S)) {
+        o << "<h3>" << ++k << ". " << math(st.title) << "</h3>\n";
+        for (std::size_t i = 0; i < st.lines.size(); ++i)
+            o << "<div class=\"math" << (st.response && i + 1 == st.lines.size() ? " result" : "") << "\">"
+              << math(st.lines[i]) << "</div>\n";
+        for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
+    }
+    if (!world_note.empty()) o << "<p class=\"note\">" << math(world_note) << "</p>\n";
     return o.str();
 }
 

@@ -5,6 +5,11 @@
 #include <string>
 #include <vector>
 
+namespace collide {
+struct SolveProblem;
+struct Solution;
+}  // namespace collide
+
 namespace collide::html {
 
 // &, <, >, " escaped.
@@ -14,6 +19,12 @@ std::string escape(const std::string& s);
 std::string math(const std::string& text);
 // Paragraphs separated by blank lines, each as <p> (math()).
 std::string paragraphs(const std::string& text);
+
+// A collision worked out (the lesson pages of collide material, the answer key of collide
+// worksheet): each step's formula, then its numbers (the response's last line marked as the
+// result), its notes, and `world_note` (the world's note when it resolved several points; ""
+// for none).
+std::string worked_html(const SolveProblem& problem, const Solution& solution, const std::string& world_note);
 
 struct Series {
     std::string label;   // in our notation (p_x)

@@ -2,13 +2,15 @@
 # Runs every file of the bad-input catalogue through the commands that read it:
 #   solve/   collision files:  collide solve FILE, collide solve --format json FILE
 #   scene/   scenario files:   collide step FILE, collide render FILE -o DIR --quiet
-#   lesson/  lesson files:     collide step FILE, collide render FILE -o DIR --quiet
+#   lesson/  lesson files:     collide step FILE, collide render FILE -o DIR --quiet,
+#                              collide worksheet FILE -o DIR --students 3
 # Each run must: exit with code 2, print nothing on stdout, print exactly one line on stderr
 # that names the file and contains the expected fragment, and (render) leave no output
 # directory behind. The expectation is the file's first line "# expect: ...", or its entry in
 # the folder's expectations.txt; parts separated by " ... " must each appear. A second line
 # "# only: render" skips `collide step` (a question the run cannot answer: stepping the scene
-# is fine, rendering the lesson is not).
+# is fine, rendering the lesson is not); "# only: worksheet" runs only `collide worksheet` (a
+# [[vary]] range no draw of which can be answered: the lesson itself is fine).
 # Usage: bad_input.sh COLLIDE DIR   (DIR: tests/bad-input)
 set -u
 collide=$1
@@ -60,8 +62,10 @@ for kind in solve scene lesson; do
       check "$f" "$expect" solve "$f"
       check "$f" "$expect" solve --format json "$f"
     else
-      sed -n '2p' "$f" | grep -q '^# only: render' || check "$f" "$expect" step "$f"
-      check "$f" "$expect" render "$f" -o "$tmp/render" --quiet
+      only=$(sed -n '2s/^# only: //p' "$f")
+      [[ -z $only ]] && check "$f" "$expect" step "$f"
+      [[ -z $only || $only == render ]] && check "$f" "$expect" render "$f" -o "$tmp/render" --quiet
+      [[ $kind == lesson && ( -z $only || $only == worksheet ) ]] && check "$f" "$expect" worksheet "$f" -o "$tmp/render" --students 3
     fi
   done
 done
