@@ -186,7 +186,8 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
     std::size_t which = 0, first_event = 0, end_event = 0;
     if (!find_pick(rec, pick, &which, &first_event, &end_event)) return std::nullopt;
     const typename Recording<D>::Instant& instant = rec.instants[which];
-    const auto& first = rec.events[first_event];
+    const std::size_t event = first_event;  // the collision's first event (worked out)
+    const auto& first = rec.events[event];
     const double te = instant.t;
     // A moment long enough for the bodies to move visibly: half the smaller body's size at
     // their approach speed (from the last sample before the collision).
@@ -223,7 +224,6 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
         first_event = instant.first;
         end_event = instant.end;
     }
-    const std::size_t event = static_cast<std::size_t>(&first - rec.events.data());
     for (std::size_t k = first_event; k < end_event; ++k) {
         const auto& e = rec.events[k];
         if (pick.whole_instant || (e.a == pick.a && e.b == pick.b) || (e.a == pick.b && e.b == pick.a))
