@@ -16,6 +16,23 @@ namespace {
 // The front view of a world point or vector (m): its x and y.
 Vec2 xy(const Vec3& v) { return Vec2(v.x(), v.y()); }
 
+// Whether the segment p-q passes through the box (x0, y0, x1, y1): Liang-Barsky clipping.
+bool segment_hits_box(ImVec2 p, ImVec2 q, ImVec4 box) {
+    const float dx = q.x - p.x, dy = q.y - p.y;
+    float t0 = 0.0f, t1 = 1.0f;
+    const float edges[4][2] = {{-dx, p.x - box.x}, {dx, box.z - p.x}, {-dy, p.y - box.y}, {dy, box.w - p.y}};
+    for (const auto& e : edges) {
+        if (e[0] == 0.0f) {
+            if (e[1] < 0.0f) return false;
+        } else {
+            const float r = e[1] / e[0];
+            if (e[0] < 0.0f) t0 = std::max(t0, r);
+            else t1 = std::min(t1, r);
+        }
+    }
+    return t0 < t1;
+}
+
 // The part of segment a-b inside a convex polygon (screen points, either orientation).
 bool clip_to_convex(const std::vector<ImVec2>& poly, ImVec2* a, ImVec2* b) {
     double t0 = 0.0, t1 = 1.0;
@@ -344,6 +361,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     for (const BodyState& s : frame.bodies) fastest = std::max(fastest, s.v.norm());
     for (const PointMark& m : decor.points) {
         if (m.body >= n || !decor.in_focus(m.body)) continue;  // a figure about another pair
+        if (m.velocity && !decor.velocities) continue;  // a point shown for its velocity
         const BodyState& s = frame.bodies[m.body];
         const double ca = std::cos(s.angle), sa = std::sin(s.angle);
         const Vec3 r = dim == 1 ? Vec3(m.at.x(), 0, 0)
@@ -472,6 +490,22 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
             labels->avoid(std::move(poly));
         }
     }
+    // Whether an arrow's shaft (velocity, impulse, a point's velocity) passes through a box.
+    const auto crosses_arrow = [&](const Annotations& all, ImVec4 box) {
+        for (const Annotation& a : all) {
+            if (a.kind != Mark::velocity && a.kind != Mark::impulse && a.kind != Mark::point_velocity) continue;
+            if (segment_hits_box(to_screen(a.from), to_screen(a.to), box)) return true;
+        }
+        return false;
+    };
+    // Arrows too: a label goes over one only when no free place is near.
+    for (const Annotation& a : items) {
+        if (a.kind != Mark::velocity && a.kind != Mark::impulse && a.kind != Mark::point_velocity) continue;
+        const ImVec2 p = to_screen(a.from), q = to_screen(a.to);
+        if (norm(q - p) < 1.0f) continue;
+        const ImVec2 d = unit(q - p), side = ImVec2(-d.y, d.x) * style_.px(4.0f);
+        labels->avoid({p + side, q + side, q - side, p - side});
+    }
     // Body names: inside the body when they fit, else above it.
     for (std::size_t i = 0; i < n; ++i) {
         if (kind(i) == Kind::plane || kind(i) == Kind::none) continue;
@@ -486,8 +520,15 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         const float h_px = static_cast<float>((h - l).y() * scale_);
         const ImVec2 centre = to_screen(frame.bodies[i].x);
         if (size.x < 0.75f * w_px && size.y < 0.4f * h_px) {
-            // Below the centre marker, inside.
-            const ImVec2 at(centre.x - 0.5f * size.x, centre.y + style_.lw(style_.com) + style_.px(4));
+            // Below the centre marker, inside; above it when the body's velocity arrow points
+            // down from the centre (a falling ball), so that the arrow does not cross its name.
+            const float below = centre.y + style_.lw(style_.com) + style_.px(4);
+            const float above = centre.y - style_.lw(style_.com) - style_.px(4) - size.y;
+            const float x0 = centre.x - 0.5f * size.x;
+            const bool crossed = crosses_arrow(items, ImVec4(x0, below, x0 + size.x, below + size.y));
+            const ImVec2 at(x0, crossed && !crosses_arrow(items, ImVec4(x0, above, x0 + size.x, above + size.y))
+                                    ? above
+                                    : below);
             fixed_label(body_item[i], ImVec2(std::round(at.x), std::round(at.y)), name, c.ink, true);
         } else {
             pending.push_back({body_item[i], to_screen(Vec3(frame.bodies[i].x.x(), h.y(), 0)), ImVec2(0, -1), name,

@@ -275,7 +275,8 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
                 }
                 if (step == 0.0f && turn == 0.0f) best = ImVec2(r.x, r.y);
             }
-            if (step >= 2.0f) break;  // near the anchor, or not at all
+            // Near the anchor, or not at all; off bodies and arrows a little further.
+            if (step >= (strict ? 3.0f : 2.0f)) break;
         }
     // Nowhere free: the preferred spot, clamped into the bounds.
     best.x = std::clamp(best.x, bounds_.x, std::max(bounds_.x, bounds_.z - size.x));

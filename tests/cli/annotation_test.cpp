@@ -447,6 +447,41 @@ void check_figure(const std::string& file, const ::collide::LessonFigure* pick, 
             EXPECT_TRUE(text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
                 << "\"" << text << "\" does not end in \"" << unit << "\"";
         }
+        // No arrow shaft (velocity, impulse, a point's velocity) runs through a body's name
+        // (the 2D diagram: an arrow's box is its extent, and its screen direction is the
+        // world's with y flipped, so the shaft is the box's diagonal along it).
+        if (!three_d) {
+            for (const json& name : items) {
+                if (name["kind"] != "label" || name["of"].get<int>() < 0) continue;
+                if (items[name["of"].get<std::size_t>()]["kind"] != "body") continue;
+                const std::vector<double> nb = name["box"].get<std::vector<double>>();
+                for (const json& arrow : items) {
+                    const std::string k = arrow["kind"];
+                    if (k != "velocity" && k != "impulse" && k != "point_velocity") continue;
+                    const std::vector<double> b = arrow["box"].get<std::vector<double>>();
+                    const std::vector<double> d = minus(vec(arrow["to"]), vec(arrow["from"]));
+                    const double dx = d[0], dy = d.size() > 1 ? d[1] : 0.0;
+                    const double px = dx >= 0 ? b[0] : b[2], py = dy >= 0 ? b[3] : b[1];
+                    const double qx = dx >= 0 ? b[2] : b[0], qy = dy >= 0 ? b[1] : b[3];
+                    // Liang-Barsky: does p-q pass through the name's box (shrunk by a pixel)?
+                    double t0 = 0, t1 = 1;
+                    const double e[4][2] = {{-(qx - px), px - (nb[0] + 1)}, {qx - px, (nb[2] - 1) - px},
+                                            {-(qy - py), py - (nb[1] + 1)}, {qy - py, (nb[3] - 1) - py}};
+                    bool outside = false;
+                    for (const auto& c : e) {
+                        if (c[0] == 0) {
+                            outside = outside || c[1] < 0;
+                        } else if (c[0] < 0) {
+                            t0 = std::max(t0, c[1] / c[0]);
+                        } else {
+                            t1 = std::min(t1, c[1] / c[0]);
+                        }
+                    }
+                    EXPECT_FALSE(!outside && t0 < t1)
+                        << "the " << k << " arrow of " << arrow["body"] << " runs through the name " << name["text"];
+                }
+            }
+        }
         // No two labels overlap (their boxes, padding included, may touch).
         std::vector<std::vector<double>> boxes;
         for (const json& it : items)
