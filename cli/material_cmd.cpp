@@ -18,6 +18,7 @@
 #include "teach/notation.h"
 #include "cli/figures.h"
 #include "cli/render_cmd.h"
+#include "cli/staged_dir.h"
 #include "render/png.h"
 #include "render/video.h"
 
@@ -432,7 +433,6 @@ std::string index_page(const std::vector<Built>& all) {
 
 int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& err) {
     const auto start = std::chrono::steady_clock::now();
-    fs::path tmp;
     try {
         if (opt.out_dir.empty()) throw InputError("", {}, "-o", "the output directory is required");
         // The lessons first: nothing is written when one is wrong.
@@ -450,12 +450,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             }
         }
         if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
-        const fs::path dir(opt.out_dir);
-        std::error_code ec;
-        if (fs::exists(dir, ec) && (!fs::is_directory(dir, ec) || (!fs::is_empty(dir, ec) && !opt.force)))
-            throw InputError(opt.out_dir, {}, "",
-                             fs::is_directory(dir, ec) ? "directory is not empty (use --force to replace it)"
-                                                       : "exists and is not a directory");
+        StagedDirectory staged(opt.out_dir, opt.force);
         // The options, read once as collide render reads them: every lesson renders with them,
         // and with an MP4 when ffmpeg is installed.
         RenderOptions ro;
@@ -469,9 +464,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             request.video = VideoRequest{render::VideoFormat::mp4, ffmpeg};
         const bool video = request.video.has_value();
         // Build beside DIR, rename at the end.
-        tmp = dir.parent_path() / (dir.filename().string() + ".tmp-" + std::to_string(::getpid()));
-        fs::remove_all(tmp, ec);
-        fs::create_directories(tmp);
+        const fs::path& tmp = staged.begin();
         const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
 
         std::vector<Built> built;
@@ -529,15 +522,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
         render::write_file_atomic((tmp / "index.html").string(), index_page(built));
         render::write_file_atomic((tmp / "style.css").string(), std::string(assets::site_style_css));
 
-        // Into place: an old DIR (with --force) goes aside first, then away.
-        fs::path old;
-        if (fs::exists(dir, ec)) {
-            old = dir.parent_path() / (dir.filename().string() + ".old-" + std::to_string(::getpid()));
-            fs::rename(dir, old);
-        }
-        fs::rename(tmp, dir);
-        tmp.clear();
-        if (!old.empty()) fs::remove_all(old, ec);
+        staged.commit();
         if (!opt.quiet) {
             char line[200];
             std::snprintf(line, sizeof line, "wrote %zu lessons to %s/index.html in %.1f s%s\n", built.size(),
@@ -547,19 +532,13 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             out << line;
         }
         return 0;
-    } catch (const Interrupted&) {
-        std::error_code ec;
-        if (!tmp.empty()) fs::remove_all(tmp, ec);
+    } catch (const Interrupted&) {  // the staged directory is gone with its scope
         err << "collide: interrupted: " << opt.out_dir << " is untouched\n";
         return 130;
     } catch (const InputError& e) {
-        std::error_code ec;
-        if (!tmp.empty()) fs::remove_all(tmp, ec);
         err << "collide: error: " << e.what() << "\n";
         return kBadInput;
     } catch (const std::exception& e) {
-        std::error_code ec;
-        if (!tmp.empty()) fs::remove_all(tmp, ec);
         err << "collide: " << e.what() << "\n";
         return 1;
     }

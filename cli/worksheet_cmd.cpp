@@ -1,8 +1,5 @@
 #include "cli/worksheet_cmd.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -17,14 +14,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cli/staged_dir.h"
 #include "render/video.h"
 #include "scenario/input_error.h"
 #include "scenario/toml_reader.h"
 #include "teach/html.h"
 #include "teach/notation.h"
 #include "teach/worksheet.h"
-
-extern char** environ;
 
 namespace collide {
 
@@ -316,20 +312,7 @@ void write_file(const fs::path& path, const std::string& text) {
 // `weasyprint IN.html OUT.pdf`, its messages in a log kept only when it fails.
 void to_pdf(const std::string& weasyprint, const fs::path& html_file, const fs::path& pdf) {
     const std::string log = pdf.string() + ".log";
-    std::vector<std::string> args = {weasyprint, "--quiet", html_file.string(), pdf.string()};
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, weasyprint.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    int status = 0;
-    if (spawned == 0) waitpid(pid, &status, 0);
-    if (spawned != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    if (!render::run_program({weasyprint, "--quiet", html_file.string(), pdf.string()}, log).ok()) {
         std::ifstream in(log);
         std::string first;
         std::getline(in, first);
@@ -373,19 +356,13 @@ std::vector<Lesson> load_worksheet_lessons(const std::vector<std::string>& args)
 
 int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& err) {
     const auto start = std::chrono::steady_clock::now();
-    fs::path tmp;
     try {
         if (opt.lessons.empty()) throw InputError("", {}, "LESSON", "give at least one lesson id or lesson file");
         if (opt.out_dir.empty()) throw InputError("", {}, "-o", "the output directory is required");
         if (opt.students < 1 || opt.students > 1000)
             throw InputError("", {}, "--students", "expected 1 to 1000 students, got " + std::to_string(opt.students));
         const std::vector<Lesson> lessons = load_worksheet_lessons(opt.lessons);
-        const fs::path dir(opt.out_dir);
-        std::error_code ec;
-        if (fs::exists(dir, ec) && (!fs::is_directory(dir, ec) || (!fs::is_empty(dir, ec) && !opt.force)))
-            throw InputError(opt.out_dir, {}, "",
-                             fs::is_directory(dir, ec) ? "directory is not empty (use --force to replace it)"
-                                                       : "exists and is not a directory");
+        StagedDirectory staged(opt.out_dir, opt.force);
         const bool terminal = err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
         // Every student of every lesson is drawn and answered before anything is written: a
         // range that cannot be answered leaves no directory behind.
@@ -408,9 +385,7 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
             if (L.vary.empty())
                 err << "collide: note: " << L.id << " has no [[vary]] ranges: every student gets the lesson's own numbers\n";
         const std::string weasyprint = render::find_program("weasyprint");
-        tmp = dir.parent_path() / (dir.filename().string() + ".tmp-" + std::to_string(::getpid()));
-        fs::remove_all(tmp, ec);
-        fs::create_directories(tmp);
+        const fs::path& tmp = staged.begin();
         std::vector<std::string> files;
         if (lessons.size() == 1) {
             files = write_lesson(lessons[0], all[0], opt.seed, tmp, weasyprint);
@@ -419,15 +394,7 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
                 files = write_lesson(lessons[k], all[k], opt.seed, tmp / lessons[k].id, weasyprint);
             write_file(tmp / "index.html", index_page(lessons, opt.students));
         }
-        // Into place: an old DIR (with --force) goes aside first, then away.
-        fs::path old;
-        if (fs::exists(dir, ec)) {
-            old = dir.parent_path() / (dir.filename().string() + ".old-" + std::to_string(::getpid()));
-            fs::rename(dir, old);
-        }
-        fs::rename(tmp, dir);
-        tmp.clear();
-        if (!old.empty()) fs::remove_all(old, ec);
+        staged.commit();
         if (weasyprint.empty())
             err << "collide: note: PDFs skipped: weasyprint is not installed (Debian: apt-get install weasyprint); "
                    "print the HTML from a browser instead\n";
@@ -440,14 +407,10 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
             << (lessons.size() > 1 ? "/ID" : "") << " (" << list << (lessons.size() > 1 ? "; index.html" : "")
             << ") in " << secs << " s\n";
         return 0;
-    } catch (const InputError& e) {
-        std::error_code ec;
-        if (!tmp.empty()) fs::remove_all(tmp, ec);
+    } catch (const InputError& e) {  // the staged directory is gone with its scope
         err << "collide: error: " << e.what() << "\n";
         return kBadInput;
     } catch (const std::exception& e) {
-        std::error_code ec;
-        if (!tmp.empty()) fs::remove_all(tmp, ec);
         err << "collide: " << e.what() << "\n";
         return 1;
     }

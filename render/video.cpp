@@ -32,6 +32,24 @@ std::string find_program(const std::string& program) {
     return "";
 }
 
+ProgramRun run_program(const std::vector<std::string>& args, const std::string& log) {
+    std::vector<std::string> copy = args;
+    std::vector<char*> argv;
+    for (std::string& a : copy) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    pid_t pid = 0;
+    ProgramRun run;
+    run.started = posix_spawn(&pid, copy.front().c_str(), &actions, nullptr, argv.data(), environ) == 0;
+    posix_spawn_file_actions_destroy(&actions);
+    int status = 0;
+    if (run.started && ::waitpid(pid, &status, 0) == pid && WIFEXITED(status)) run.exit = WEXITSTATUS(status);
+    return run;
+}
+
 void encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps,
                   VideoFormat format, const std::string& out_path) {
     char rate[32];
@@ -57,18 +75,7 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
     }
     args.push_back(tmp);
 
-    std::vector<char*> argv;
-    for (std::string& a : args) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_addopen(&actions, 2, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    pid_t pid = 0;
-    const int spawned = posix_spawn(&pid, ffmpeg.c_str(), &actions, nullptr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    int status = 0;
-    if (spawned == 0) ::waitpid(pid, &status, 0);
+    const ProgramRun run = run_program(args, log);
     std::string message;
     {
         std::ifstream in(log);
@@ -78,11 +85,11 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
     }
     std::error_code ec;
     fs::remove(log, ec);
-    if (spawned != 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    if (!run.ok()) {
         fs::remove(tmp, ec);
         while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
         throw std::runtime_error(out_path + ": ffmpeg failed" +
-                                 (spawned != 0 ? std::string(": cannot run ") + ffmpeg
+                                 (!run.started ? std::string(": cannot run ") + ffmpeg
                                                : message.empty() ? std::string() : ": " + message));
     }
     fs::rename(tmp, out_path, ec);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace collide::render {
 
@@ -11,6 +12,16 @@ enum class VideoFormat { mp4, gif };
 
 // The full path of `program` found on $PATH, or "" when it is not there.
 std::string find_program(const std::string& program);
+
+// Runs a program to its end: args[0] is its full path (find_program), args the whole argv; its
+// standard output is discarded and its standard error goes to the file `log`. Says whether it
+// started and how it exited (ffmpeg here, weasyprint for `collide worksheet`).
+struct ProgramRun {
+    bool started = false;
+    int exit = -1;  // its exit status; -1 when it did not exit normally
+    bool ok() const { return started && exit == 0; }
+};
+ProgramRun run_program(const std::vector<std::string>& args, const std::string& log);
 
 // Encodes dir/frame_00000.png, ... (consecutive, all the same size) at `fps` frames per second
 // into `out_path`. MP4: H.264, yuv420p (what players expect), odd sizes rounded down to even.
