@@ -73,16 +73,7 @@ void parse_quantity(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
     if (info.needs_body) {
         Q.body = q.string("body", "a body's name").value_or("");
         if (Q.body.empty()) q.fail("body", "missing key 'body' ('" + Q.quantity + "' is a body's)");
-        bool found = false;
-        std::vector<std::string> names;
-        for (const SceneBody& b : L.scene.bodies) {
-            names.push_back(b.name);
-            found = found || b.name == Q.body;
-        }
-        if (!found) {
-            const std::string hint = closest_match(Q.body, names);
-            q.fail("body", "no body named '" + Q.body + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
-        }
+        body_named(L.scene, Q.body, q, "body");
     } else {
         q.forbid("body", "'" + Q.quantity + "' is not about one body");
     }
@@ -416,8 +407,6 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     if (const toml::node* list = root.node("figure")) {
         const toml::array* fs = list->as_array();
         if (!fs) root.fail("figure", "expected [[figure]] tables");
-        std::vector<std::string> names;
-        for (const SceneBody& b : L.scene.bodies) names.push_back(b.name);
         for (std::size_t i = 0; i < fs->size(); ++i) {
             const toml::table* t = fs->get(i)->as_table();
             const std::string key = "figure[" + std::to_string(i + 1) + "]";
@@ -431,12 +420,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
                 const std::string who = f.string(role, "a body's name").value_or("");
                 if (who.empty())
                     f.fail(role, std::string("missing key '") + role + "' (the body the figure calls " + role + ")");
-                const auto it = std::find(names.begin(), names.end(), who);
-                if (it == names.end()) {
-                    const std::string hint = closest_match(who, names);
-                    f.fail(role, "no body named '" + who + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
-                }
-                *index = static_cast<std::size_t>(it - names.begin());
+                *index = body_named(L.scene, who, f, role);
                 return who;
             };
             F.a = body("a", &F.ia);

@@ -319,14 +319,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
             ViewMark v;
             const std::string who = m.string("body", "a body's name").value_or("");
             if (who.empty()) m.fail("body", "missing key 'body' (the body the point belongs to)");
-            std::vector<std::string> names;
-            for (const SceneBody& b : s.bodies) names.push_back(b.name);
-            const auto it = std::find(names.begin(), names.end(), who);
-            if (it == names.end()) {
-                const std::string hint = closest_match(who, names);
-                m.fail("body", "no body named '" + who + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
-            }
-            v.body = static_cast<std::size_t>(it - names.begin());
+            v.body = body_named(s, who, m, "body");
             if (!m.has("at")) m.fail("at", "missing key 'at' (the point in the body's frame, m)");
             v.at = *read_vec(m, "at", s.dimension, "m");
             v.name = m.string("name", "the point's name").value_or("");
@@ -336,6 +329,15 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
         }
     }
     return s;
+}
+
+std::size_t body_named(const Scene& scene, const std::string& name, const TableReader& table, const std::string& key) {
+    std::vector<std::string> names;
+    for (const SceneBody& b : scene.bodies) names.push_back(b.name);
+    const auto it = std::find(names.begin(), names.end(), name);
+    if (it != names.end()) return static_cast<std::size_t>(it - names.begin());
+    const std::string hint = closest_match(name, names);
+    table.fail(key, "no body named '" + name + "'" + (hint.empty() ? "" : "; did you mean '" + hint + "'?"));
 }
 
 Scene parse_scene_file(const std::string& path, SceneView* view) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/scene.h"
+#include "scenario/toml_reader.h"
 
 namespace collide {
 
@@ -28,6 +29,10 @@ struct SceneView {
     bool directions = false;  // the page's positive-direction arrows in the figure's panels
     std::vector<ViewMark> marks;
 };
+
+// The index of the body of `scene` named `name`; otherwise fails at `table`'s `key` with "no
+// body named 'x'; did you mean 'y'?" (lessons' questions and figures, [[mark]]).
+std::size_t body_named(const Scene& scene, const std::string& name, const TableReader& table, const std::string& key);
 
 // Parses and validates; throws InputError naming file, line, column and key. Beyond the
 // per-key checks: unique names, static bodies at rest, no two bodies overlapping at the start.
