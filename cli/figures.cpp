@@ -72,11 +72,15 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     panel.formula = {};
     panel.directions = view.directions;
     panel.font_height = height;
+    // A 2D figure about one pair: that pair, at its size. (A 1D row stays whole: its blocks
+    // stand side by side, and the row is the context of each contact.)
+    if (scene.dimension == 2) panel.frame_bodies = moments.focus;
     std::vector<FrameState> three(moments.states, moments.states + 3);
     // Panels of about the same area, shaped like what they show (the 3D view: 4:3).
     double aspect = 4.0 / 3.0;
     if (!three_d) {
         render::DiagramView probe(scene, render::Style::for_height(height));
+        probe.frame_only(panel.frame_bodies);
         probe.fit(three, moments.states[1].impacts, ImVec4(0, 0, 1000, 1000));
         const Vec2 size = probe.box_hi() - probe.box_lo();
         if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
@@ -179,7 +183,9 @@ void write_variants(render::GlContext& context, const std::vector<VariantRow>& r
     for (const VariantRow& row : rows) {
         const Moments& m = row.moments;
         std::vector<FrameState> three(m.states, m.states + 3);
-        render::Renderer r(context, *row.scene, figure.panel);
+        render::RenderSettings panel = figure.panel;
+        if (!panel.frame_bodies.empty()) panel.frame_bodies = m.focus;
+        render::Renderer r(context, *row.scene, panel);
         r.prepare(three, m.states[1].impacts);
         images.push_back(render::compose_figure(context, three_panels(r, m, figure.points), {row.label + ": before", "at collision", "after"},
                                                 time_notes(m, settings.time_decimals + 1), settings.height,

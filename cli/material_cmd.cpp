@@ -154,14 +154,14 @@ struct Built {
 
 // ---- Questions ----
 
-// The options of a choice (or predict) question: lettered, each a radio button on screen so a
-// student can choose by keyboard; printed, the letters stay for circling one.
+// The options of a choice (or predict) question: numbered, each a radio button on screen so a
+// student can choose by keyboard; printed, the numbers stay for circling one.
 std::string choices_html(const LessonQuestion& q, std::size_t qi) {
     std::ostringstream o;
     o << "<ul class=\"choices\">\n";
     for (std::size_t k = 0; k < q.choices.size(); ++k)
-        o << "<li><label><input type=\"radio\" name=\"q" << qi + 1 << "\" value=\"" << option_letter(k)
-          << "\"> <span class=\"letter\">" << option_letter(k) << ".</span> " << math(q.choices[k])
+        o << "<li><label><input type=\"radio\" name=\"q" << qi + 1 << "\" value=\"" << option_number(k)
+          << "\"> <span class=\"letter\">(" << option_number(k) << ")</span> " << math(q.choices[k])
           << "</label></li>\n";
     o << "</ul>\n";
     return o.str();
@@ -172,12 +172,12 @@ std::string choices_html(const LessonQuestion& q, std::size_t qi) {
 std::string answer_html(const LessonQuestion& q, const LessonAnswer* a) {
     std::ostringstream o;
     if (q.has_choices()) {
-        o << "<p><span class=\"answer\">Option " << option_letter(static_cast<std::size_t>(q.correct - 1))
+        o << "<p><span class=\"answer\">Option " << option_number(static_cast<std::size_t>(q.correct - 1))
           << ".</span></p>\n<ul class=\"reasons\">\n";
         for (std::size_t k = 0; k < q.choices.size(); ++k) {
             const bool right = static_cast<int>(k) + 1 == q.correct;
-            o << "<li class=\"" << (right ? "right" : "wrong") << "\"><span class=\"letter\">" << option_letter(k)
-              << ".</span> <em>" << (right ? "Right" : "Wrong") << ":</em> " << math(q.reasons[k]) << "</li>\n";
+            o << "<li class=\"" << (right ? "right" : "wrong") << "\"><span class=\"letter\">(" << option_number(k)
+              << ")</span> <em>" << (right ? "Right" : "Wrong") << ":</em> " << math(q.reasons[k]) << "</li>\n";
         }
         o << "</ul>\n";
         if (!q.explain.empty()) o << "<p>" << math(q.explain) << "</p>\n";
@@ -200,7 +200,7 @@ std::string question_html(const LessonQuestion& q, std::size_t qi) {
     return s;
 }
 
-// Printed, a space to write in (choices: the student circles a letter instead).
+// Printed, a space to write in (choices: the student circles a number instead).
 std::string write_space(const LessonQuestion& q) {
     if (q.has_choices()) return "";
     return std::string("<div class=\"write-here") + (q.kind == QuestionKind::explain ? " tall" : "") +

@@ -174,9 +174,9 @@ std::string sheet_question(const Lesson& L, std::size_t i, const LessonAnswer& a
         o << " <span class=\"tolerance\">(to within " << escape(tolerance_text(q.tolerance)) << ")</span>";
     o << "</p>\n";
     if (q.has_choices()) {
-        o << "<p class=\"note\">Circle one letter.</p>\n<ul class=\"choices\">\n";
+        o << "<p class=\"note\">Circle one number.</p>\n<ul class=\"choices\">\n";
         for (std::size_t k = 0; k < q.choices.size(); ++k)
-            o << "<li>" << option_letter(k) << ". " << math(q.choices[k]) << "</li>\n";
+            o << "<li>(" << option_number(k) << ") " << math(q.choices[k]) << "</li>\n";
         o << "</ul>\n";
     } else if (q.has_quantity()) {
         char style[48];
@@ -227,9 +227,9 @@ std::string key_answer(const Lesson& L, std::size_t i, const LessonAnswer& a) {
         if (shows_tolerance(q)) o << " <span class=\"tolerance\">(right within " << escape(tolerance_text(q.tolerance)) << ")</span>";
         o << "</p>\n";
     } else if (q.has_choices()) {
-        o << "<p><span class=\"answer\">Option " << option_letter(static_cast<std::size_t>(q.correct - 1)) << ".</span></p>\n<ul>\n";
+        o << "<p><span class=\"answer\">Option " << option_number(static_cast<std::size_t>(q.correct - 1)) << ".</span></p>\n<ul>\n";
         for (std::size_t k = 0; k < q.choices.size(); ++k)
-            o << "<li>" << option_letter(k) << ". " << (static_cast<int>(k) + 1 == q.correct ? "Right: " : "Wrong: ")
+            o << "<li>(" << option_number(k) << ") " << (static_cast<int>(k) + 1 == q.correct ? "Right: " : "Wrong: ")
               << math(q.reasons[k]) << "</li>\n";
         o << "</ul>\n";
     } else {

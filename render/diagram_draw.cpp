@@ -518,7 +518,15 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         extent(i, frame.bodies[i], &l, &h);
         const float w_px = static_cast<float>((h - l).x() * scale_);
         const float h_px = static_cast<float>((h - l).y() * scale_);
-        const ImVec2 centre = to_screen(frame.bodies[i].x);
+        // A body outside the view (a figure framed on another pair) gets no name; one cut by
+        // the view's edge (a long cushion) has its name in the part that shows.
+        const ImVec2 s_lo = to_screen(Vec3(l.x(), h.y(), 0)), s_hi = to_screen(Vec3(h.x(), l.y(), 0));
+        const float vx0 = std::max(s_lo.x, viewport_.x), vx1 = std::min(s_hi.x, viewport_.z);
+        const float vy0 = std::max(s_lo.y, viewport_.y), vy1 = std::min(s_hi.y, viewport_.w);
+        if (vx0 >= vx1 || vy0 >= vy1) continue;
+        ImVec2 centre = to_screen(frame.bodies[i].x);
+        if (centre.x < viewport_.x || centre.x > viewport_.z) centre.x = 0.5f * (vx0 + vx1);
+        if (centre.y < viewport_.y || centre.y > viewport_.w) centre.y = 0.5f * (vy0 + vy1);
         if (size.x < 0.75f * w_px && size.y < 0.4f * h_px) {
             // Below the centre marker, inside; above it when the body's velocity arrow points
             // down from the centre (a falling ball), so that the arrow does not cross its name.
@@ -531,7 +539,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                     : below);
             fixed_label(body_item[i], ImVec2(std::round(at.x), std::round(at.y)), name, c.ink, true);
         } else {
-            pending.push_back({body_item[i], to_screen(Vec3(frame.bodies[i].x.x(), h.y(), 0)), ImVec2(0, -1), name,
+            pending.push_back({body_item[i], ImVec2(centre.x, s_lo.y), ImVec2(0, -1), name,
                                {}, c.ink, true});
         }
     }

@@ -140,17 +140,36 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
     double max_speed = 0.0;
     std::vector<double> sizes;
     max_spin_ = 0.0;
+    // With frame_only(), a static body among the framed ones counts only near the moving ones.
+    const bool some = !frame_only_.empty();
+    const auto counts = [&](std::size_t i) { return framed(i) && !(some && scene_.bodies[i].is_static()); };
     for (const FrameState& f : samples)
         for (std::size_t i = 0; i < f.bodies.size() && i < scene_.bodies.size(); ++i) {
+            if (!counts(i)) continue;
             extent(i, f.bodies[i], &lo, &hi);
             if (scene_.bodies[i].is_static()) continue;
             max_speed = std::max(max_speed, xy(f.bodies[i].v).norm());
             max_spin_ = std::max(max_spin_, std::abs(f.bodies[i].w.z()));
         }
+    if (some && lo.x() < inf && !samples.empty()) {
+        const Vec2 d = Vec2::Constant(0.5 * (hi - lo).maxCoeff());
+        const Vec2 near_lo = lo - d, near_hi = hi + d;
+        for (std::size_t i = 0; i < scene_.bodies.size() && i < samples.front().bodies.size(); ++i) {
+            if (!framed(i) || !scene_.bodies[i].is_static()) continue;
+            Vec2 l(inf, inf), h(-inf, -inf);
+            extent(i, samples.front().bodies[i], &l, &h);
+            l = l.cwiseMax(near_lo);
+            h = h.cwiseMin(near_hi);
+            if (l.x() <= h.x() && l.y() <= h.y()) {
+                lo = lo.cwiseMin(l);
+                hi = hi.cwiseMax(h);
+            }
+        }
+    }
     for (std::size_t i = 0; i < scene_.bodies.size() && !samples.empty(); ++i) {
         Vec2 l(inf, inf), h(-inf, -inf);
         extent(i, samples.front().bodies[i], &l, &h);
-        if (l.x() < inf && !scene_.bodies[i].is_static()) sizes.push_back((h - l).maxCoeff());
+        if (l.x() < inf && counts(i) && !scene_.bodies[i].is_static()) sizes.push_back((h - l).maxCoeff());
     }
     if (!(lo.x() < inf)) {
         lo = Vec2(-1, -1);
@@ -192,6 +211,7 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
     double max_impulse = 0.0;
     k_impulse_ = std::numeric_limits<double>::infinity();
     for (const ImpactMark& im : impacts) {
+        if (!framed(im.a) && !framed(im.b)) continue;
         const double p = xy(im.impulse).norm();
         if (!(p > 0)) continue;
         max_impulse = std::max(max_impulse, p);
@@ -205,7 +225,7 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
     const Vec2 lo0 = lo, hi0 = hi;
     for (const FrameState& f : samples)
         for (std::size_t i = 0; i < f.bodies.size() && i < scene_.bodies.size(); ++i) {
-            if (scene_.bodies[i].is_static()) continue;
+            if (scene_.bodies[i].is_static() || !framed(i)) continue;
             const Vec2 tip = xy(f.bodies[i].x + k_velocity_ * f.bodies[i].v);
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
@@ -222,6 +242,7 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
             }
         }
     for (const ImpactMark& im : impacts) {
+        if (!framed(im.a) && !framed(im.b)) continue;
         const Vec2 p = xy(im.point), P = xy(im.impulse) * k_impulse_;
         lo = lo.cwiseMin(p + P).cwiseMin(p - P);
         hi = hi.cwiseMax(p + P).cwiseMax(p - P);

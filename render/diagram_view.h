@@ -69,6 +69,10 @@ public:
              ImVec4 viewport);
     // Leave room above the moving bodies for the positive-direction arrows (Decor::directions).
     void reserve_directions(bool on) { directions_room_ = on; }
+    // Frame `bodies` only (empty: all). A static body among them (a cushion, a wall) is framed
+    // only near the moving ones, so that a long wall does not shrink the pair that hits it;
+    // the rest of the scene is drawn where it falls in the view, and cut at its edge.
+    void frame_only(std::vector<std::size_t> bodies) { frame_only_ = std::move(bodies); }
 
     // What draw() draws of `frame`, in drawing order, the labels placed by `labels` (which
     // holds what the other overlays took; null: no labels).
@@ -118,6 +122,10 @@ private:
     ImVec4 viewport_{0, 0, 1, 1};
     Vec2 centre_ = Vec2::Zero();  // world point at the viewport's centre
     bool directions_room_ = false;
+    std::vector<std::size_t> frame_only_;
+    bool framed(std::size_t i) const {
+        return frame_only_.empty() || std::find(frame_only_.begin(), frame_only_.end(), i) != frame_only_.end();
+    }
     double scale_ = 100.0;        // pixels per metre
     double k_velocity_ = 0.0;     // metres of arrow per m/s
     double k_impulse_ = 0.0;      // metres of arrow per N s

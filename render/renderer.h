@@ -45,6 +45,9 @@ struct RenderSettings {
     FormulaText formula;             // the first collision's formula with numbers (bottom)
     CameraRequest camera;            // the 3D view's camera, where the scenario sets it
     bool directions = false;         // the 2D view's positive-direction arrows (Decor::directions)
+    // When not empty, the 2D view frames these bodies only (scene indices): a figure about one
+    // pair of a busy scene is drawn at that pair's size (DiagramView::frame_only).
+    std::vector<std::size_t> frame_bodies;
     int time_decimals = 3;           // "t = 0.350 s"
     // Font sizes: by default for the frame height; figure panels use the frame's.
     int font_height = 0;             // 0: height

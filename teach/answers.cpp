@@ -63,7 +63,7 @@ Vec3 spin_of(const Body3& b) { return b.w; }
 LessonAnswer written_answer(const LessonQuestion& q) {
     LessonAnswer a;
     a.computed = false;
-    a.text = q.has_choices() ? "option " + option_letter(static_cast<std::size_t>(q.correct - 1)) : q.answer;
+    a.text = q.has_choices() ? "option " + option_number(static_cast<std::size_t>(q.correct - 1)) : q.answer;
     return a;
 }
 
@@ -230,7 +230,7 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
 
 }  // namespace
 
-std::string option_letter(std::size_t index) { return std::string(1, static_cast<char>('A' + index % 26)); }
+std::string option_number(std::size_t index) { return std::to_string(index + 1); }
 
 bool shows_tolerance(const LessonQuestion& q) { return q.has_quantity() && q.quantity != "collisions"; }
 
@@ -242,9 +242,9 @@ std::string tolerance_text(double tolerance) {
 
 namespace {
 
-// A question's options as a lettered list (indented under its number).
+// A question's options as a numbered list (indented under its number).
 void write_choices(const LessonQuestion& q, std::ostream& out) {
-    for (std::size_t k = 0; k < q.choices.size(); ++k) out << "   - " << option_letter(k) << ". " << q.choices[k] << "\n";
+    for (std::size_t k = 0; k < q.choices.size(); ++k) out << "   - (" << option_number(k) << ") " << q.choices[k] << "\n";
     out << "\n";
 }
 
@@ -252,9 +252,9 @@ void write_choices(const LessonQuestion& q, std::ostream& out) {
 void write_answer(const LessonQuestion& q, const LessonAnswer* a, const char* summary, std::ostream& out) {
     out << "   <details><summary>" << summary << "</summary>\n\n   ";
     if (q.has_choices()) {
-        out << "Option " << option_letter(static_cast<std::size_t>(q.correct - 1)) << ".\n\n";
+        out << "Option " << option_number(static_cast<std::size_t>(q.correct - 1)) << ".\n\n";
         for (std::size_t k = 0; k < q.choices.size(); ++k)
-            out << "   - Option " << option_letter(k) << (static_cast<int>(k) + 1 == q.correct ? " is right: " : " is wrong: ")
+            out << "   - Option " << option_number(k) << (static_cast<int>(k) + 1 == q.correct ? " is right: " : " is wrong: ")
                 << q.reasons[k] << "\n";
         if (!q.explain.empty()) out << "\n   " << q.explain << "\n";
     } else {

@@ -18,12 +18,13 @@ struct LessonAnswer {
     Vec3 vector = Vec3::Zero();
     bool is_vector = false;   // 2D and 3D vectors and 3D spins
     std::string unit;         // "N s", "m/s", ...
-    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"; without a quantity: "option B"
+    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"; without a quantity: "option 2"
                               // (choices) or the model answer (explain)
     bool computed = true;     // the engine's number (false: the lesson's written answer)
 };
-// An option's letter in a list of choices: 0 -> "A", 1 -> "B", ...
-std::string option_letter(std::size_t index);
+// An option's number in a list of choices: 0 -> "1", 1 -> "2", ... (numbers, not letters:
+// "option B" would read as body B). Lists show it as "(1)", answers as "option 1".
+std::string option_number(std::size_t index);
 // Whether a question's answer is a measured number, marked within its tolerance (a count of
 // collisions is exact: no tolerance is shown for it).
 bool shows_tolerance(const LessonQuestion& q);

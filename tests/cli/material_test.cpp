@@ -100,7 +100,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     EXPECT_EQ(css.find("nowrap"), std::string::npos);
     EXPECT_NE(lesson.find("<section class=\"animation noprint\">\n<h2>Animation</h2>"), std::string::npos);
     // Per lesson: each question once, folded on screen, with a space to write in (a choice
-    // question: a letter to circle instead) and its answer for the teacher's copy.
+    // question: a number to circle instead) and its answer for the teacher's copy.
     const auto count = [](const std::string& text, const std::string& what) {
         std::size_t k = 0;
         for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += what.size()) ++k;
@@ -109,19 +109,19 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
         const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
-        std::size_t predict = 0, asked = 0, spaces = 0, letters = 0;
+        std::size_t predict = 0, asked = 0, spaces = 0, numbers = 0;
         for (const LessonQuestion& q : L.questions) {
             (q.kind == QuestionKind::predict ? predict : asked) += 1;
             spaces += q.has_choices() ? 0 : 1;
-            letters += q.choices.size();
+            numbers += q.choices.size();
         }
         EXPECT_EQ(count(page, "<details><summary>Answer</summary>"), asked);
         EXPECT_EQ(count(page, "<details><summary>Check your prediction</summary>"), predict);
         EXPECT_EQ(count(page, "<div class=\"write-here"), spaces);
         EXPECT_EQ(count(page, "class=\"printed-answer\""), L.questions.size());
-        // Every option lettered where it is asked, and again with its reason in the answer
+        // Every option numbered where it is asked, and again with its reason in the answer
         // (on screen and printed).
-        EXPECT_EQ(count(page, "<span class=\"letter\">"), 3 * letters);
+        EXPECT_EQ(count(page, "<span class=\"letter\">"), 3 * numbers);
         EXPECT_EQ(count(page, "id=\"print-answers\""), 1u);
     }
     // The predictions come before the figure and the animation, which show what happens, and
@@ -148,15 +148,15 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
             EXPECT_NE(page.find(asked, check), std::string::npos) << q.text;
         }
     }
-    // catch-up: the prediction's options lettered, its answer the right letter with every
+    // catch-up: the prediction's options numbered, its answer the right number with every
     // option's reason; a number's tolerance shown; the why question's model answer.
     {
         const Lesson& L = all.front();
         ASSERT_EQ(L.id, "catch-up");
         const std::size_t check = lesson.find("<section class=\"check\">");
-        EXPECT_NE(lesson.find("<span class=\"letter\">B.</span> It stops</label>"), std::string::npos);
-        EXPECT_NE(lesson.find("<span class=\"answer\">Option A.</span>", check), std::string::npos);
-        EXPECT_NE(lesson.find("<li class=\"wrong\"><span class=\"letter\">C.</span> <em>Wrong:</em>", check),
+        EXPECT_NE(lesson.find("<span class=\"letter\">(2)</span> It stops</label>"), std::string::npos);
+        EXPECT_NE(lesson.find("<span class=\"answer\">Option 1.</span>", check), std::string::npos);
+        EXPECT_NE(lesson.find("<li class=\"wrong\"><span class=\"letter\">(3)</span> <em>Wrong:</em>", check),
                   std::string::npos);
         EXPECT_NE(lesson.find("What impulse J does B receive? <span class=\"tolerance\">(to within 2 %)</span>"),
                   std::string::npos);

@@ -61,7 +61,7 @@ TEST(Lessons, CatchUpAnswersAreTheClosedForms) {
     EXPECT_GT(J, 0.0);  // A catches B: J > 0
     // The prediction and the why question are answered by the lesson's own text.
     EXPECT_FALSE(a[4].computed);
-    EXPECT_EQ(a[4].text, "option A");
+    EXPECT_EQ(a[4].text, "option 1");
     EXPECT_FALSE(a[5].computed);
     EXPECT_EQ(a[5].text, L.questions[5].answer);
     // What if the masses were swapped: the run of the changed scene answers, J unchanged
@@ -94,7 +94,7 @@ TEST(Lessons, BouncingBallWhatIfIsAnsweredForItsOwnRestitution) {
 }
 
 // lesson.md asks the predictions before the figure and checks them after it; choices are
-// lettered and every option's reason is given; numbers show their tolerance.
+// numbered and every option's reason is given; numbers show their tolerance.
 TEST(Lessons, MarkdownAsksPredictionsBeforeTheFigureAndChecksThemAfter) {
     const std::vector<Lesson> all = load_lessons(kDir);
     const Lesson& L = find(all, "catch-up");
@@ -111,8 +111,8 @@ TEST(Lessons, MarkdownAsksPredictionsBeforeTheFigureAndChecksThemAfter) {
     const std::string& predict = L.questions[4].text;
     EXPECT_LT(s.find(predict), figure);                   // asked before
     EXPECT_NE(s.find(predict, figure), std::string::npos);  // and checked after
-    EXPECT_EQ(s.find("Option A is right"), s.find("Option A is right", check));  // only after
-    EXPECT_NE(s.find("   - D. " + L.questions[4].choices[3]), std::string::npos);
+    EXPECT_EQ(s.find("Option 1 is right"), s.find("Option 1 is right", check));  // only after
+    EXPECT_NE(s.find("   - (4) " + L.questions[4].choices[3]), std::string::npos);
     for (std::size_t k = 0; k < L.questions[4].reasons.size(); ++k)
         EXPECT_NE(s.find(L.questions[4].reasons[k], check), std::string::npos) << k;
     EXPECT_NE(s.find("What impulse J does B receive? *(to within 2 %)*"), std::string::npos);
