@@ -13,7 +13,8 @@ namespace collide::html {
 
 namespace {
 
-std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
+// Plot labels are read by students: 4 significant figures, as their answers.
+std::string n(double x) { return notation::num_answer(std::abs(x) < 1e-12 ? 0.0 : x); }
 
 }  // namespace
 
