@@ -87,6 +87,7 @@ struct WorkedExample {
 };
 
 WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
+    const notation::StudentNumbers student;  // the frames' formula: 4 figures, no noise
     WorkedExample w;
     w.problem = collision_problem(scene, c);
     w.solution = solve(w.problem);
@@ -322,6 +323,7 @@ void write_data_files(const RenderRequest& rq, const Scene& scene, const SceneRu
 }
 
 void write_worked_example(const std::string& dir, const WorkedExample& worked) {
+    const notation::StudentNumbers student;  // a lesson's: 4 figures, no floating-point noise
     std::ostringstream md;
     write_markdown(worked.problem, worked.solution, md);
     render::write_file_atomic(dir + "/worked-example.md", md.str());

@@ -168,6 +168,7 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
 }
 
 std::string worked_html(const SolveProblem& P, const Solution& S, const std::string& world_note) {
+    const notation::StudentNumbers student;  // 4 figures, no floating-point noise
     std::ostringstream o;
     int k = 0;
     for (const WorkedStep& st : worked_steps(P, S)) {

@@ -98,10 +98,25 @@ F unit(const std::string& u) {
     return {" " + u, "\\,\\mathrm{" + tex + "}"};
 }
 
+namespace {
+thread_local bool student = false;  // StudentNumbers
+constexpr double kNoise = 1e-10;    // SI: shown as 0 for students
+constexpr double kRelativeNoise = 1e-9;
+
+// A vector's or matrix's entries for students: those below 1e-9 of the largest set to 0.
+double cleaned(double x, double largest) {
+    return student && std::abs(x) < kRelativeNoise * largest ? 0.0 : x;
+}
+}  // namespace
+
+StudentNumbers::StudentNumbers() : was_(student) { student = true; }
+StudentNumbers::~StudentNumbers() { student = was_; }
+
 std::string num_text(double x) {
+    if (student && std::abs(x) < kNoise) x = 0.0;
     if (x == 0.0) x = 0.0;  // no "-0"
     char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", x);
+    std::snprintf(buf, sizeof buf, student ? "%.4g" : "%.6g", x);
     return buf;
 }
 
@@ -129,9 +144,10 @@ F num(double x) {
 F vec(const Vec3& v, int dim) {
     if (dim == 1) return num(v.x());
     F out{"(", "("};
+    const double largest = v.head(dim).cwiseAbs().maxCoeff();
     for (int i = 0; i < dim; ++i) {
         if (i) out = out + F{", ", ",\\ "};
-        out = out + num(v[i]);
+        out = out + num(cleaned(v[i], largest));
     }
     return out + F{")", ")"};
 }
@@ -141,9 +157,10 @@ F spin(const Vec3& w, int dim) { return dim == 2 ? num(w.z()) : vec(w, 3); }
 F mat(const Mat3& m, int dim) {
     const int n = dim == 3 ? 3 : dim == 2 ? 2 : 1;
     F out{"[", "\\begin{pmatrix}"};
+    const double largest = m.topLeftCorner(n, n).cwiseAbs().maxCoeff();
     for (int i = 0; i < n; ++i) {
         out = out + F{i ? ", [" : "[", i ? " \\\\ " : ""};
-        for (int j = 0; j < n; ++j) out = out + F{j ? ", " : "", j ? " & " : ""} + num(m(i, j));
+        for (int j = 0; j < n; ++j) out = out + F{j ? ", " : "", j ? " & " : ""} + num(cleaned(m(i, j), largest));
         out = out + F{"]", ""};
     }
     return out + F{"]", "\\end{pmatrix}"};

@@ -192,6 +192,28 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         const std::size_t shown = std::max<std::size_t>(1, L.figures.size());
         EXPECT_EQ(later, std::min<std::size_t>(events > shown ? events - shown : 0, 8)) << L.id;
     }
+    // Worked examples in numbers a student reads: at most 4 significant figures, and no
+    // floating-point noise of the exact event (a contact point at (0, -5.55e-17) m is (0, 0)).
+    const std::regex math_line(R"re(<div class="math[^"]*">(.*?)</div>)re");
+    const std::regex number(R"re((\d+(?:\.\d+)?)(e[-+]?\d+)?)re");
+    std::size_t math_lines = 0;
+    for (const Lesson& L : all) {
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        for (std::sregex_iterator m(page.begin(), page.end(), math_line), end; m != end; ++m) {
+            ++math_lines;
+            const std::string text = (*m)[1];
+            for (std::sregex_iterator k(text.begin(), text.end(), number); k != end; ++k) {
+                std::string digits;
+                for (char ch : (*k)[1].str())
+                    if (ch != '.' && !(digits.empty() && ch == '0')) digits += ch;
+                EXPECT_LE(digits.size(), 4u) << L.id << ": " << (*k)[0] << " in " << text;
+                if ((*k)[2].matched) {
+                    EXPECT_GT(std::stoi((*k)[2].str().substr(1)), -10) << L.id << ": " << text;
+                }
+            }
+        }
+    }
+    EXPECT_GT(math_lines, 19u * 10);
     // Each figure's alternative text tells its own collision: no two lessons share one.
     std::set<std::string> alts;
     const std::regex figure_alt(R"re(<img src="figure.png" alt="([^"]*)")re");

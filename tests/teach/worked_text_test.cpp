@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "teach/notation.h"
 #include "teach/solve.h"
 
 namespace collide {
@@ -259,7 +260,8 @@ struct Reading {
     std::map<std::string, Value> names;  // every value the report gave a name
 };
 
-Reading check_report(const std::string& report, int dimension, bool latex) {
+// `digits`: the significant digits the report prints (6; 4 for students).
+Reading check_report(const std::string& report, int dimension, bool latex, int digits = 6) {
     Reading out;
     std::map<std::string, Value>& names = out.names;
     Evaluator eval(names, dimension);
@@ -280,8 +282,11 @@ Reading check_report(const std::string& report, int dimension, bool latex) {
                 if (!v) continue;
                 ++checked;
                 // The printed numbers have 6 significant digits: each step agrees to about 1e-5
-                // of the largest number in it (differences of nearly equal numbers included).
-                const double tolerance = 1e-4 * std::max(result->scale(), v->scale()) + 2e-5 * operands + 1e-12;
+                // of the largest number in it (differences of nearly equal numbers included);
+                // with 4, to about 1e-3.
+                const double unit = std::pow(10.0, 6 - digits);
+                const double tolerance =
+                    unit * (1e-4 * std::max(result->scale(), v->scale()) + 2e-5 * operands) + 1e-12;
                 bool same = v->x.size() == result->x.size();
                 for (std::size_t c = 0; same && c < v->x.size(); ++c)
                     same = std::abs(v->x[c] - result->x[c]) <= tolerance;
@@ -327,6 +332,38 @@ TEST(WorkedText, EveryStepOfEveryBundledExampleFollowsFromTheOneBefore) {
             EXPECT_TRUE(r.wrong.empty()) << (latex ? "markdown" : "text") << ":\n" << joined(r.wrong);
         }
     }
+}
+
+// The same for the numbers students read (the site, worksheets): 4 significant figures and
+// no floating-point noise still give every step from the one before, to their precision.
+TEST(WorkedText, StudentNumbersStillFollowStepByStep) {
+    int shorter = 0;  // reports whose numbers the student's precision changed
+    for (const std::string& path : bundled_examples()) {
+        SCOPED_TRACE(path);
+        const SolveProblem problem = parse_solve_file(path);
+        const Solution solution = solve(problem);
+        std::ostringstream text, six;
+        write_text(problem, solution, six);
+        {
+            const notation::StudentNumbers student;
+            write_text(problem, solution, text);
+        }
+        shorter += text.str() != six.str();
+        const Reading r = check_report(text.str(), problem.dimension, false, 4);
+        EXPECT_GE(r.checked, 8);
+        EXPECT_TRUE(r.wrong.empty()) << joined(r.wrong);
+    }
+    EXPECT_GE(shorter, 3);
+}
+
+// Noise of an exact event is 0 for students; a small value that is the whole vector is not.
+TEST(WorkedText, StudentNumbersDropFloatingPointNoiseOnly) {
+    const notation::StudentNumbers student;
+    EXPECT_EQ(notation::vec(Vec3(0, -5.55112e-17, 0), 2).txt, "(0, 0)");
+    EXPECT_EQ(notation::vec(Vec3(0.477912, 1.35083e-11, 0), 2).txt, "(0.4779, 0)");
+    EXPECT_EQ(notation::vec(Vec3(2e-3, -1.5e-3, 0), 2).txt, "(0.002, -0.0015)");
+    EXPECT_EQ(notation::num(-0.800003).txt, "-0.8");
+    EXPECT_EQ(notation::num(1.23456e-4).tex, "0.0001235");
 }
 
 // The carts of lessons/solve/carts-1d.toml against the closed form of a 1D impact:
