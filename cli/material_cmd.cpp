@@ -261,6 +261,7 @@ std::string questions_html(const Lesson& L, const std::vector<LessonAnswer>& ans
 }
 
 std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
+    const notation::StudentNumbers student;  // every number on it: 4 figures, no noise
     const Lesson& L = b.lesson;
     const RenderReport& r = b.report;
     const int d = L.scene.dimension;

@@ -394,6 +394,7 @@ double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun&
 // lesson.md: the lesson's text, its questions with the answers, its variants side by side and
 // its penalty study (with penalty.svg, penalty-overlap.svg and penalty.csv).
 void write_lesson(const std::string& dir, const Loaded& in, const Ran& ran, const Analysis& a) {
+    const notation::StudentNumbers student;  // 4 figures, no floating-point noise
     std::ostringstream md;
     write_lesson_markdown(*in.lesson, ran.answers, md);
     md << variants_markdown(in.scene, a.variants);
