@@ -19,6 +19,9 @@ const char* mark_name(Mark kind) {
     case Mark::label: return "label";
     case Mark::point: return "point";
     case Mark::point_velocity: return "point_velocity";
+    case Mark::table_cell: return "table_cell";
+    case Mark::formula_line: return "formula_line";
+    case Mark::plot_value: return "plot_value";
     }
     return "label";
 }

@@ -32,6 +32,13 @@ enum class Mark {
     label,      // text; `of` is the item it names or gives the value of
     point,      // a point of `body` a lesson marks (a handle): `from` where it is, `text` its name
     point_velocity,  // that point's velocity v + ω × (p − x) (m/s), from the point
+    // The overlays (frames with the table, formula and plots on; not in figure panels):
+    table_cell,    // a cell of the data table: `text`, `box`, `of` its column (0 the name, then
+                   // m, v, ω in 2D and 3D, p, E_k), `body` its row's (-1: header, totals),
+                   // `value` its quantity at full precision (empty: header, name)
+    formula_line,  // a line of the formula box: `text`, `box`, `of` its line from the top
+    plot_value,    // a plot's series at the frame's time: `text` its label, `value` the value
+                   // drawn, `anchor` the dot (pixels), `box` the plot
 };
 const char* mark_name(Mark kind);
 

@@ -653,6 +653,10 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             }
             break;
         }
+        case Mark::table_cell:
+        case Mark::formula_line:
+        case Mark::plot_value:
+            break;  // the overlays draw their own
         }
     }
     if (clipped) dl->PopClipRect();

@@ -31,28 +31,36 @@ void draw_panel(ImDrawList* dl, const Style& style, ImVec2 at, ImVec2 size) {
 
 }  // namespace
 
-std::vector<std::string> DataTable::cells(std::size_t i, const FrameState& f) const {
+std::vector<DataTable::Cell> DataTable::cells(std::size_t i, const FrameState& f) const {
     const int d = scene_.dimension;
     const bool total = i >= scene_.bodies.size();
-    std::vector<std::string> out;
+    std::vector<Cell> out;
     const auto dec = [this](std::size_t c) { return columns_[c].decimals; };
+    const auto number = [&](double x) { return Cell{format_fixed(x, dec(out.size())), {x}}; };
+    const auto vector = [&](const Vec3& v, int dims) {
+        return Cell{vec_text(v, dims, dec(out.size())), components(v, dims)};
+    };
     if (total) {
         double m = 0;
         for (std::size_t r : rows_) m += body_mass(scene_, r);
         const FrameTotals sums = frame_totals(scene_, f);
-        out = {"total", format_fixed(m, dec(1)), ""};
-        if (d > 1) out.push_back("");
-        out.push_back(vec_text(sums.momentum, d, dec(out.size())));
-        out.push_back(format_fixed(sums.kinetic, dec(out.size())));
+        out.push_back({"total", {}});
+        out.push_back(number(m));
+        out.push_back({"", {}});
+        if (d > 1) out.push_back({"", {}});
+        out.push_back(vector(sums.momentum, d));
+        out.push_back(number(sums.kinetic));
         return out;
     }
     const BodyState& s = f.bodies[i];
     const double m = body_mass(scene_, i);
-    out = {scene_.bodies[i].name, format_fixed(m, dec(1)), vec_text(s.v, d, dec(2))};
-    if (d == 2) out.push_back(format_fixed(s.w.z(), dec(3)));
-    if (d == 3) out.push_back(vec_text(s.w, 3, dec(3)));
-    out.push_back(vec_text(m * s.v, d, dec(out.size())));
-    out.push_back(format_fixed(kinetic_energy(scene_, i, s), dec(out.size())));
+    out.push_back({scene_.bodies[i].name, {}});
+    out.push_back(number(m));
+    out.push_back(vector(s.v, d));
+    if (d == 2) out.push_back(number(s.w.z()));
+    if (d == 3) out.push_back(vector(s.w, 3));
+    out.push_back(vector(m * s.v, d));
+    out.push_back(number(kinetic_energy(scene_, i, s)));
     return out;
 }
 
@@ -94,9 +102,9 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
         std::vector<std::size_t> all = rows_;
         all.push_back(scene_.bodies.size());
         for (std::size_t r : all) {
-            const std::vector<std::string> row = cells(r, f);
+            const std::vector<Cell> row = cells(r, f);
             for (std::size_t c = 0; c < row.size(); ++c)
-                columns_[c].width = std::max(columns_[c].width, rich_text_size(fonts, font, row[c]).x);
+                columns_[c].width = std::max(columns_[c].width, rich_text_size(fonts, font, row[c].text).x);
         }
     };
     // Every sample would be exact; a few hundred spread over the run are plenty.
@@ -114,54 +122,77 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
     size_ = rows_.empty() ? ImVec2(0, 0) : ImVec2(std::ceil(w), std::ceil(h));
 }
 
-void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const FrameState& f) const {
-    if (rows_.empty()) return;
+Annotations DataTable::annotate(const FontSet& fonts, ImVec2 at, const FrameState& f) const {
+    Annotations out;
+    if (rows_.empty()) return out;
     const Palette& c = style_.colours;
     ImFont* font = fonts.table;
-    draw_panel(dl, style_, at, size_);
     const float col_gap = style_.px(16.0f);
     const float text_dy = std::round(0.5f * (row_height_ - font->FontSize));
     const float x_first = at.x + pad_ + swatch_ + style_.px(6.0f);
-    float y = at.y + pad_;
-
     // One row: the first column left-aligned, numbers right-aligned.
-    const auto row = [&](const std::vector<std::string>& cells, Colour colour, float y0) {
+    const auto row = [&](const std::vector<Cell>& cells, int body, Colour colour, float y0) {
         float x = x_first;
         for (std::size_t k = 0; k < columns_.size() && k < cells.size(); ++k) {
-            const float tw = rich_text_size(fonts, font, cells[k]).x;
-            const float tx = k == 0 ? x : x + columns_[k].width - tw;
-            draw_rich_text(dl, fonts, font, ImVec2(std::round(tx), y0 + text_dy), colour, cells[k]);
+            const float tw = rich_text_size(fonts, font, cells[k].text).x;
+            const float tx = std::round(k == 0 ? x : x + columns_[k].width - tw);
+            Annotation a;
+            a.kind = Mark::table_cell;
+            a.body = body;
+            a.of = static_cast<int>(k);
+            a.text = cells[k].text;
+            a.value = cells[k].value;
+            a.box = ImVec4(tx, y0 + text_dy, tx + tw, y0 + text_dy + font->FontSize);
+            a.font_px = font->FontSize;
+            a.colour = colour;
+            if (!a.text.empty()) out.push_back(std::move(a));
             x += columns_[k].width + col_gap;
         }
     };
-    const std::vector<std::vector<std::string>> rows = text(f);
-    row(rows.front(), c.muted, y);
+    float y = at.y + pad_;
+    std::vector<Cell> header;
+    for (const Column& col : columns_) header.push_back({col.header, {}});
+    row(header, -1, c.muted, y);
     y += row_height_;
+    for (std::size_t i : rows_) {
+        row(cells(i, f), static_cast<int>(i), c.ink, y);
+        y += row_height_;
+    }
+    row(cells(scene_.bodies.size(), f), -1, c.ink, y + style_.px(4.0f));
+    return out;
+}
+
+void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const FrameState& f) const {
+    if (rows_.empty()) return;
+    const Palette& c = style_.colours;
+    draw_panel(dl, style_, at, size_);
+    float y = at.y + pad_ + row_height_;
     dl->AddLine(ImVec2(at.x + pad_, y), ImVec2(at.x + size_.x - pad_, y), c.panel_border, style_.lw(1.0f));
-    int order = 0;
-    for (std::size_t i = 0; i < scene_.bodies.size(); ++i) {
-        if (scene_.bodies[i].is_static()) continue;
-        ++order;
+    for (std::size_t order = 0; order < rows_.size(); ++order) {
         const float sy = y + 0.5f * (row_height_ - swatch_);
         dl->AddRectFilled(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_),
-                          c.fills[(order - 1) % Palette::kFills], style_.lw(2.0f));
+                          c.fills[order % Palette::kFills], style_.lw(2.0f));
         dl->AddRect(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_), c.ink,
                     style_.px(2.0f), 0, style_.lw(1.0f));
-        row(rows[static_cast<std::size_t>(order)], c.ink, y);
         y += row_height_;
     }
     y += style_.px(4.0f);
     dl->AddLine(ImVec2(at.x + pad_, y - style_.lw(2.0f)), ImVec2(at.x + size_.x - pad_, y - style_.lw(2.0f)),
                 c.panel_border, style_.lw(1.0f));
-    row(rows.back(), c.ink, y);
+    for (const Annotation& a : annotate(fonts, at, f))
+        draw_rich_text(dl, fonts, fonts.table, ImVec2(a.box.x, a.box.y), a.colour, a.text);
 }
 
 std::vector<std::vector<std::string>> DataTable::text(const FrameState& f) const {
     std::vector<std::vector<std::string>> rows(1);
     for (const Column& col : columns_) rows[0].push_back(col.header);
-    for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
-        if (!scene_.bodies[i].is_static()) rows.push_back(cells(i, f));
-    rows.push_back(cells(scene_.bodies.size(), f));
+    const auto texts = [](const std::vector<Cell>& cells) {
+        std::vector<std::string> out;
+        for (const Cell& c : cells) out.push_back(c.text);
+        return out;
+    };
+    for (std::size_t i : rows_) rows.push_back(texts(cells(i, f)));
+    rows.push_back(texts(cells(scene_.bodies.size(), f)));
     return rows;
 }
 
@@ -254,22 +285,43 @@ void FormulaBox::prepare(const FontSet& fonts, FormulaText text, float max_width
     size_ = ImVec2(std::ceil(std::min(width_of(), max_width)), std::ceil(h));
 }
 
-void FormulaBox::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at) const {
-    if (text_.empty()) return;
+Annotations FormulaBox::annotate(const FontSet& fonts, ImVec2 at) const {
+    Annotations out;
+    if (text_.empty()) return out;
     const Palette& c = style_.colours;
     const float pad = style_.px(10.0f);
-    draw_panel(dl, style_, at, size_);
+    const auto line = [&](ImFont* font, const std::string& text, Colour colour, float y) {
+        Annotation a;
+        a.kind = Mark::formula_line;
+        a.of = static_cast<int>(out.size());
+        a.text = text;
+        const ImVec2 size = rich_text_size(fonts, font, text);
+        a.box = ImVec4(at.x + pad, y, at.x + pad + size.x, y + font->FontSize);
+        a.font_px = font->FontSize;
+        a.colour = colour;
+        a.small = font == fonts.small;
+        out.push_back(std::move(a));
+    };
     float y = at.y + pad;
-    draw_rich_text(dl, fonts, fonts.bold, ImVec2(at.x + pad, y), c.ink, text_.heading);
+    line(fonts.bold, text_.heading, c.ink, y);
     y += fonts.bold->FontSize * 1.4f;
     for (std::size_t k = 0; k < text_.lines.size(); ++k) {
         // The last line is the result: in the impulse's colour.
-        const Colour colour = k + 1 == text_.lines.size() ? c.impulse : c.ink;
-        draw_rich_text(dl, fonts, fonts.table, ImVec2(at.x + pad, y), colour, text_.lines[k]);
+        line(fonts.table, text_.lines[k], k + 1 == text_.lines.size() ? c.impulse : c.ink, y);
         y += fonts.table->FontSize * 1.45f;
     }
-    if (!text_.note.empty())
-        draw_rich_text(dl, fonts, fonts.small, ImVec2(at.x + pad, y + style_.px(2.0f)), c.muted, text_.note);
+    if (!text_.note.empty()) line(fonts.small, text_.note, c.muted, y + style_.px(2.0f));
+    return out;
+}
+
+void FormulaBox::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at) const {
+    if (text_.empty()) return;
+    draw_panel(dl, style_, at, size_);
+    const Annotations lines = annotate(fonts, at);
+    for (std::size_t k = 0; k < lines.size(); ++k) {
+        ImFont* font = k == 0 ? fonts.bold : lines[k].small ? fonts.small : fonts.table;
+        draw_rich_text(dl, fonts, font, ImVec2(lines[k].box.x, lines[k].box.y), lines[k].colour, lines[k].text);
+    }
 }
 
 // ---- Plot ----
@@ -320,10 +372,8 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
     }
     // The plotting area; the value range at its left edge.
     const std::string hi_text = format_number(hi_, 3), lo_text = format_number(lo_, 3);
-    const float label_w = std::max(rich_text_size(fonts, fonts.small, hi_text).x,
-                                   rich_text_size(fonts, fonts.small, lo_text).x);
-    const ImVec2 p0(at.x + pad + label_w + style_.px(6.0f), y0 + fonts.small->FontSize * 1.5f);
-    const ImVec2 p1(at.x + size_.x - pad, at.y + size_.y - pad);
+    const ImVec4 r = area(fonts, at);
+    const ImVec2 p0(r.x, r.y), p1(r.z, r.w);
     if (p1.x - p0.x < 10 || p1.y - p0.y < 10) return;
     draw_rich_text(dl, fonts, fonts.small, ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, hi_text).x, p0.y - 0.5f * fonts.small->FontSize), c.muted, hi_text);
     draw_rich_text(dl, fonts, fonts.small, ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, lo_text).x, p1.y - 0.5f * fonts.small->FontSize), c.muted, lo_text);
@@ -348,7 +398,28 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
             dl->AddPolyline(all.data(), static_cast<int>(all.size()), with_alpha(s.colour, 0.25f), 0, style_.lw(1.5f));
         if (past.size() >= 2)
             dl->AddPolyline(past.data(), static_cast<int>(past.size()), s.colour, 0, style_.lw(2.0f));
-        // The current value, interpolated between samples.
+    }
+    for (const Annotation& a : annotate(fonts, at, t)) dl->AddCircleFilled(a.anchor, style_.px(3.5f), a.colour);
+}
+
+ImVec4 Plot::area(const FontSet& fonts, ImVec2 at) const {
+    const float pad = style_.px(8.0f);
+    const float y0 = at.y + pad * 0.6f;
+    const float label_w = std::max(rich_text_size(fonts, fonts.small, format_number(hi_, 3)).x,
+                                   rich_text_size(fonts, fonts.small, format_number(lo_, 3)).x);
+    return ImVec4(at.x + pad + label_w + style_.px(6.0f), y0 + fonts.small->FontSize * 1.5f, at.x + size_.x - pad,
+                  at.y + size_.y - pad);
+}
+
+Annotations Plot::annotate(const FontSet& fonts, ImVec2 at, double t) const {
+    Annotations out;
+    if (series_.empty() || times_.empty()) return out;
+    const ImVec4 r = area(fonts, at);
+    if (r.z - r.x < 10 || r.w - r.y < 10) return out;
+    const double t0 = times_.front(), t1 = std::max(times_.back(), t0 + 1e-12);
+    const std::size_t n = times_.size();
+    for (const Series& s : series_) {
+        // The value at t, interpolated between samples.
         const auto it = std::upper_bound(times_.begin(), times_.end(), t);
         const std::size_t k = it == times_.begin() ? 0 : static_cast<std::size_t>(it - times_.begin()) - 1;
         double v = s.values[k];
@@ -356,8 +427,17 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
             const double u = std::clamp((t - times_[k]) / (times_[k + 1] - times_[k]), 0.0, 1.0);
             v = s.values[k] + u * (s.values[k + 1] - s.values[k]);
         }
-        dl->AddCircleFilled(ImVec2(X(std::clamp(t, t0, t1)), Y(v)), style_.px(3.5f), s.colour);
+        Annotation a;
+        a.kind = Mark::plot_value;
+        a.text = s.label;
+        a.value = {v};
+        a.colour = s.colour;
+        a.anchor = ImVec2(r.x + static_cast<float>((std::clamp(t, t0, t1) - t0) / (t1 - t0)) * (r.z - r.x),
+                          r.w - static_cast<float>((v - lo_) / (hi_ - lo_)) * (r.w - r.y));
+        a.box = ImVec4(at.x, at.y, at.x + size_.x, at.y + size_.y);
+        out.push_back(std::move(a));
     }
+    return out;
 }
 
 // ---- Time line ----

@@ -7,6 +7,8 @@
 // keep their widths and decimals from frame to frame.
 #pragma once
 
+#include "render/annotation.h"
+
 #include <string>
 #include <vector>
 
@@ -24,7 +26,10 @@ public:
     DataTable(const Scene& scene, const Style& style) : scene_(scene), style_(style) {}
     void prepare(const FontSet& fonts, const std::vector<FrameState>& samples);
     ImVec2 size() const { return size_; }
+    // Draws the panel, the swatches and rules, and the cells annotate() lists.
     void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, const FrameState& frame) const;
+    // Its cells as Mark::table_cell items where draw() writes them (after prepare).
+    Annotations annotate(const FontSet& fonts, ImVec2 top_left, const FrameState& frame) const;
     // What draw() writes, cell by cell (after prepare): the header row, a row per moving body
     // (name, m, v, ω in 2D and 3D, p, E_k) and the totals (m, p, E_k).
     std::vector<std::vector<std::string>> text(const FrameState& frame) const;
@@ -35,8 +40,12 @@ private:
         int decimals = 2;
         float width = 0;
     };
+    struct Cell {
+        std::string text;
+        std::vector<double> value;  // the quantity (empty: a name)
+    };
     // The cells of one row (moving body i, or the totals when i is the body count).
-    std::vector<std::string> cells(std::size_t i, const FrameState& frame) const;
+    std::vector<Cell> cells(std::size_t i, const FrameState& frame) const;
 
     const Scene& scene_;
     Style style_;
@@ -86,7 +95,11 @@ public:
     // Lines wider than max_width are dropped from the top (the last line, the result, stays).
     void prepare(const FontSet& fonts, FormulaText text, float max_width);
     ImVec2 size() const { return size_; }
+    // Draws the panel and the lines annotate() lists.
     void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left) const;
+    // The heading, the lines and the note as Mark::formula_line items, top to bottom, where
+    // draw() writes them (`small`: the note's font).
+    Annotations annotate(const FontSet& fonts, ImVec2 top_left) const;
 
 private:
     Style style_;
@@ -108,9 +121,14 @@ public:
                  std::vector<Series> series, ImVec2 size);
     ImVec2 size() const { return size_; }
     bool empty() const { return series_.empty(); }
+    // Draws the axes, the series, and a dot where annotate() puts each series' value.
     void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, double t) const;
+    // Each series at time t as a Mark::plot_value item (after prepare).
+    Annotations annotate(const FontSet& fonts, ImVec2 top_left, double t) const;
 
 private:
+    // The plotting area (pixels: x0, y0, x1, y1) of the plot drawn at top_left.
+    ImVec4 area(const FontSet& fonts, ImVec2 top_left) const;
     Style style_;
     std::string title_;
     std::vector<double> times_;

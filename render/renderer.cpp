@@ -300,6 +300,16 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
     if (!settings_.formula.empty()) formula_->draw(dl, fonts, formula_at_);
     if (settings_.timeline) timeline_->draw(dl, fonts, timeline_at_, frame.t);
     imgui_->end();
+    // The overlays' items after the view's (each overlay drew what it lists).
+    const auto append = [&](Annotations items) {
+        for (Annotation& a : items) annotations_.push_back(std::move(a));
+    };
+    if (settings_.table) append(table_->annotate(fonts, table_at_, frame));
+    if (!energy_plot_->empty()) {
+        append(energy_plot_->annotate(fonts, energy_at_, frame.t));
+        append(momentum_plot_->annotate(fonts, momentum_at_, frame.t));
+    }
+    if (!settings_.formula.empty()) append(formula_->annotate(fonts, formula_at_));
 }
 
 void Renderer::render(const FrameState& frame, const Decor& decor, std::uint8_t* rgba) {

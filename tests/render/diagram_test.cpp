@@ -518,6 +518,104 @@ w = -1.0
     EXPECT_NEAR(et[0], e_total, 0.005);
 }
 
+// The overlays are in the frame's list too, and the list is what they drew: every table cell
+// carries its quantity (m, v, ω, p = m v, E_k = ½ m v² + ½ I ω², the totals) and prints it to
+// the decimals shown, in a box holding ink; the formula's lines are the text asked for, the
+// last in the impulse's red; each plot's dot is in its series' colour where the list puts it.
+TEST_F(RenderTest, TheOverlaysListWhatTheyDraw) {
+    const Scene scene = parse_scene_text(R"([scene]
+dimension = 2
+duration = 1.0
+[[body]]
+name = "disc"
+shape = "disc"
+radius = 0.5
+mass = 2.0
+position = [-1.0, 0.0]
+v = [1.5, -0.5]
+w = 2.0
+[[body]]
+name = "box"
+shape = "rectangle"
+size = [0.6, 0.4]
+mass = 3.0
+position = [1.0, 0.0]
+v = [-1.0, 0.25]
+w = -1.0
+)", "overlays.toml");
+    RenderSettings s = small(960, 540);
+    s.table = true;
+    s.plots = true;
+    s.formula.heading = "Collision of disc and box";
+    s.formula.lines = {"j = 1 + 2 = 3 N s", "P = j n = (3, 0) N s"};
+    Renderer r(*context_, scene, s);
+    std::vector<Body2> bodies;
+    for (const SceneBody& b : scene.bodies) bodies.push_back(b.body2);
+    const FrameState f0 = frame_state(scene, 0.0, bodies);
+    for (Body2& b : bodies) b.position += 0.5 * b.v;
+    const FrameState f1 = frame_state(scene, 0.5, bodies);
+    r.prepare({f0, f1}, {});
+    const Image im = r.render(f1, Decor{});
+    const Palette palette;
+    const auto ink_in = [&](const ImVec4& box, Colour colour) {
+        int n = 0;
+        for (int y = static_cast<int>(box.y); y < static_cast<int>(std::ceil(box.w)); ++y)
+            for (int x = static_cast<int>(box.x); x < static_cast<int>(std::ceil(box.z)); ++x)
+                n += x >= 0 && y >= 0 && x < im.width && y < im.height && test::near_colour(im.pixel(x, y), colour, 60);
+        return n;
+    };
+    const double m[2] = {2.0, 3.0}, w[2] = {2.0, -1.0};
+    const Vec2 v[2] = {Vec2(1.5, -0.5), Vec2(-1.0, 0.25)};
+    const double I[2] = {0.5 * 2.0 * 0.25, 3.0 * (0.36 + 0.16) / 12.0};
+    const double E[2] = {0.5 * m[0] * v[0].squaredNorm() + 0.5 * I[0] * w[0] * w[0],
+                         0.5 * m[1] * v[1].squaredNorm() + 0.5 * I[1] * w[1] * w[1]};
+    const Vec2 p_total = m[0] * v[0] + m[1] * v[1];
+    int cells = 0, lines = 0, dots = 0;
+    for (const Annotation& a : r.annotations()) {
+        if (a.kind == Mark::table_cell) {
+            ++cells;
+            EXPECT_GT(ink_in(a.box, a.body >= 0 ? palette.ink : a.value.empty() ? palette.muted : palette.ink), 5)
+                << a.text;
+            if (a.value.empty()) continue;
+            // What the cell stands for, by row and column: name, m, v, ω, p, E_k.
+            std::vector<double> want;
+            const int i = a.body;
+            switch (a.of) {
+            case 1: want = {i >= 0 ? m[i] : m[0] + m[1]}; break;
+            case 2: want = {v[i].x(), v[i].y()}; break;
+            case 3: want = {w[i]}; break;
+            case 4: want = i >= 0 ? std::vector<double>{m[i] * v[i].x(), m[i] * v[i].y()}
+                                  : std::vector<double>{p_total.x(), p_total.y()}; break;
+            case 5: want = {i >= 0 ? E[i] : E[0] + E[1]}; break;
+            default: ADD_FAILURE() << "column " << a.of;
+            }
+            ASSERT_EQ(a.value.size(), want.size()) << a.text;
+            const std::vector<double> shown = cell_numbers(a.text);
+            ASSERT_EQ(shown.size(), want.size()) << a.text;
+            for (std::size_t k = 0; k < want.size(); ++k) {
+                EXPECT_NEAR(a.value[k], want[k], 1e-12) << a.text;
+                EXPECT_NEAR(shown[k], want[k], 0.005) << a.text;  // two decimals at least
+            }
+        } else if (a.kind == Mark::formula_line) {
+            const std::vector<std::string> want{s.formula.heading, s.formula.lines[0], s.formula.lines[1]};
+            ASSERT_LT(lines, 3);
+            EXPECT_EQ(a.text, want[static_cast<std::size_t>(lines)]);
+            EXPECT_GT(ink_in(a.box, lines == 2 ? palette.impulse : palette.ink), 5) << a.text;
+            ++lines;
+        } else if (a.kind == Mark::plot_value) {
+            ++dots;
+            const int x = static_cast<int>(std::lround(a.anchor.x)), y = static_cast<int>(std::lround(a.anchor.y));
+            EXPECT_TRUE(test::near_colour(im.pixel(x, y), a.colour, 40)) << a.text;
+            if (a.text.find("kinetic") != std::string::npos) {
+                EXPECT_NEAR(a.value[0], E[0] + E[1], 1e-9);
+            }
+        }
+    }
+    EXPECT_EQ(cells, 6 + 2 * 6 + 4);  // the header, two bodies, the totals (no v, no ω)
+    EXPECT_EQ(lines, 3);
+    EXPECT_GE(dots, 3);  // kinetic energy, p_x, p_y
+}
+
 // The time line's marker: solid velocity-blue pixels in the bottom strip; their centre.
 double time_marker_x(const Image& im) {
     const Palette palette;
