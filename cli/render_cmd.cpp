@@ -374,6 +374,8 @@ double write_pictures(const RenderRequest& rq, const Loaded& in, const SceneRun&
     const render::RenderSettings settings =
         frame_settings(rq.frame, in.scene, in.view, a.worked ? &a.worked->formula : nullptr);
     render::Renderer renderer(*context, in.scene, settings);
+    PlotTotals plot = plot_totals(in.scene, run);
+    renderer.set_plot_totals(std::move(plot.t), std::move(plot.totals));
     renderer.prepare(run.frames, run.impacts);
     const double seconds = write_frames(renderer, run, rq, trail_seconds(in.scene), in.view, err);
     if (a.moments) {
@@ -474,20 +476,9 @@ RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, 
         r.t.push_back(f.t);
         r.totals.push_back(render::frame_totals(r.scene, f));
     }
-    // A sample at a collision's very instant is left out of the plot (which side it shows
-    // depends on the world's order of work); the instant's own two points take its place.
-    const std::vector<InstantTotals> exact = instant_totals(r.scene, ran.run);
-    std::size_t next = 0;
-    for (std::size_t k = 0; k < r.t.size(); ++k) {
-        while (next < exact.size() && exact[next].t <= r.t[k]) {
-            r.plot_t.insert(r.plot_t.end(), {exact[next].t, exact[next].t});
-            r.plot_totals.insert(r.plot_totals.end(), {exact[next].before, exact[next].after});
-            ++next;
-        }
-        if (!r.plot_t.empty() && r.plot_t.back() == r.t[k]) continue;
-        r.plot_t.push_back(r.t[k]);
-        r.plot_totals.push_back(r.totals[k]);
-    }
+    PlotTotals plot = plot_totals(r.scene, ran.run);
+    r.plot_t = std::move(plot.t);
+    r.plot_totals = std::move(plot.totals);
     r.frames = static_cast<long>(in.times.size());
     r.width = rq.frame.width;
     r.height = rq.frame.height;

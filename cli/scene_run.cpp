@@ -339,6 +339,23 @@ std::vector<InstantTotals> instant_totals(const Scene& scene, const SceneRun& ru
     return out;
 }
 
+PlotTotals plot_totals(const Scene& scene, const SceneRun& run) {
+    const std::vector<InstantTotals> exact = instant_totals(scene, run);
+    PlotTotals out;
+    std::size_t next = 0;
+    for (const FrameState& f : run.frames) {
+        while (next < exact.size() && exact[next].t <= f.t) {
+            out.t.insert(out.t.end(), {exact[next].t, exact[next].t});
+            out.totals.insert(out.totals.end(), {exact[next].before, exact[next].after});
+            ++next;
+        }
+        if (!out.t.empty() && out.t.back() == f.t) continue;
+        out.t.push_back(f.t);
+        out.totals.push_back(render::frame_totals(scene, f));
+    }
+    return out;
+}
+
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run) {
     return visit_record(run, [&](const auto& rec) -> std::optional<Moments> {
         if (rec.events.empty()) return std::nullopt;

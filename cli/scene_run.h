@@ -77,4 +77,14 @@ struct InstantTotals {
 };
 std::vector<InstantTotals> instant_totals(const Scene& scene, const SceneRun& run);
 
+// The run's totals for plots: every sample's, and at each recorded collision instant the two
+// of instant_totals (a sample at that very instant left out: which side it shows depends on
+// the world's order of work), so that a plot steps at the instant. The site's plots and the
+// frames' use these.
+struct PlotTotals {
+    std::vector<double> t;  // s, not decreasing (an instant twice)
+    std::vector<render::FrameTotals> totals;
+};
+PlotTotals plot_totals(const Scene& scene, const SceneRun& run);
+
 }  // namespace collide

@@ -389,10 +389,15 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
     const std::size_t stride = std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1.0f, p1.x - p0.x)));
     for (const Series& s : series_) {
         std::vector<ImVec2> past, all;
+        // (A point on the one before it, as at an instant that leaves the value alone, would
+        // draw a spike: ImGui's polyline has no direction for a segment of no length.)
+        const auto add = [](std::vector<ImVec2>& line, ImVec2 q) {
+            if (line.empty() || std::abs(line.back().x - q.x) + std::abs(line.back().y - q.y) > 0.01f) line.push_back(q);
+        };
         for (std::size_t k = 0; k < n; k += stride) {
             const ImVec2 q(X(times_[k]), Y(s.values[k]));
-            all.push_back(q);
-            if (times_[k] <= t) past.push_back(q);
+            add(all, q);
+            if (times_[k] <= t) add(past, q);
         }
         if (all.size() >= 2)
             dl->AddPolyline(all.data(), static_cast<int>(all.size()), with_alpha(s.colour, 0.25f), 0, style_.lw(1.5f));

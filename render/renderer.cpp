@@ -129,11 +129,15 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
         }
         const float y = H - m - strip - (strip > 0 ? gap * 0.5f : 0.0f) - row_h;
         if (plot_w > 0) {
-            std::vector<double> t;
-            std::vector<FrameTotals> sums;
-            for (const FrameState& f : samples) {
-                t.push_back(f.t);
-                sums.push_back(frame_totals(scene_, f));
+            std::vector<double> t = plot_t_;
+            std::vector<FrameTotals> sums = plot_totals_;
+            if (t.empty() || t.size() != sums.size()) {
+                t.clear();
+                sums.clear();
+                for (const FrameState& f : samples) {
+                    t.push_back(f.t);
+                    sums.push_back(frame_totals(scene_, f));
+                }
             }
             const TotalsColumns col = totals_columns(sums);
             std::vector<Plot::Series> energy = {{"E_{k}", c.velocity, col.kinetic}};

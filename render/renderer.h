@@ -68,6 +68,12 @@ public:
     // Frames the view over the run (`samples`: states spread over it) and sets the arrow
     // scales (impulses from `impacts`).
     void prepare(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts);
+    // The plots' points (times not decreasing; an instant twice: just before and just after
+    // it), instead of the samples' totals; call before prepare().
+    void set_plot_totals(std::vector<double> t, std::vector<FrameTotals> totals) {
+        plot_t_ = std::move(t);
+        plot_totals_ = std::move(totals);
+    }
 
     // The 3D view's camera (collide gui's orbit and zoom); call prepare() again after it.
     void set_camera(const CameraRequest& camera);
@@ -108,6 +114,8 @@ private:
     ImVec2 formula_at_{0, 0}, energy_at_{0, 0}, momentum_at_{0, 0}, timeline_at_{0, 0};
     ImVec4 view_rect_{0, 0, 0, 0};
     Annotations annotations_;
+    std::vector<double> plot_t_;
+    std::vector<FrameTotals> plot_totals_;
 };
 
 // One figure of panels side by side with a caption under each (e.g. before / at collision /

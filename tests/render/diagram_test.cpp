@@ -616,6 +616,33 @@ w = -1.0
     EXPECT_GE(dots, 3);  // kinetic energy, p_x, p_y
 }
 
+// Given the totals just before and just after a collision, the plots step at its instant:
+// a frame a little before it shows the value before, not one interpolated toward the after.
+TEST_F(RenderTest, PlotsStepAtTheCollisionInstant) {
+    const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
+    RenderSettings s = small(960, 540);
+    s.plots = true;
+    Renderer r(*context_, scene, s);
+    const auto totals = [](double kinetic) {
+        FrameTotals t;
+        t.kinetic = kinetic;
+        return t;
+    };
+    r.set_plot_totals({0.0, 0.5, 0.5, 1.0}, {totals(2.0), totals(2.0), totals(1.0), totals(1.0)});
+    std::vector<Body2> bodies{scene.bodies[0].body2, scene.bodies[1].body2};
+    const FrameState f0 = frame_state(scene, 0.0, bodies), f1 = frame_state(scene, 1.0, bodies);
+    r.prepare({f0, f1}, {});
+    const auto kinetic_at = [&](double t) {
+        r.render(frame_state(scene, t, bodies), bare());
+        for (const Annotation& a : r.annotations())
+            if (a.kind == Mark::plot_value && a.text == "E_{k}") return a.value.at(0);
+        ADD_FAILURE() << "no kinetic energy dot";
+        return 0.0;
+    };
+    EXPECT_DOUBLE_EQ(kinetic_at(0.45), 2.0);
+    EXPECT_DOUBLE_EQ(kinetic_at(0.55), 1.0);
+}
+
 // The time line's marker: solid velocity-blue pixels in the bottom strip; their centre.
 double time_marker_x(const Image& im) {
     const Palette palette;
