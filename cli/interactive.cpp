@@ -182,8 +182,11 @@ private:
         std::size_t events;  // how many events had happened by then
     };
 
-    void print(const Event& e) {
-        out_ << (json_ ? event_json(scene_, e) : event_text(scene_, e)) << "\n";
+    // Events of whole instants, each marked when its instant gained energy (energy_gains).
+    void print(const std::vector<Event>& events) {
+        const std::vector<bool> gains = energy_gains(scene_, events);
+        for (std::size_t k = 0; k < events.size(); ++k)
+            out_ << (json_ ? event_json(scene_, events[k], gains[k]) : event_text(scene_, events[k], gains[k])) << "\n";
     }
 
     // past_ holds the output steps 0 .. k up to now; now_ is the k-th, or a later state (after
@@ -204,7 +207,7 @@ private:
             passed.push_back({w, events_.size() + fresh.size()});
         }
         commit(w, passed, fresh, true);
-        for (const Event& e : fresh) print(e);
+        print(fresh);
         print(now_);
         if (!json_ && k() == last) out_ << "(the end of the scene)\n";
     }
@@ -256,15 +259,16 @@ private:
         if (json_) {
             out_ << "{\"before\":" << state_json(scene_, before.time(), before.bodies())
                  << ",\"at\":[";
+            const std::vector<bool> gains = energy_gains(scene_, hit);
             for (std::size_t e = 0; e < hit.size(); ++e)
-                out_ << (e ? "," : "") << event_json(scene_, hit[e]);
+                out_ << (e ? "," : "") << event_json(scene_, hit[e], gains[e]);
             out_ << "],\"after\":" << state_json(scene_, at.time(), at.bodies()) << "}\n";
             return;
         }
         out_ << "before:\n";
         print(before);
         out_ << "at:\n";
-        for (const Event& e : hit) print(e);
+        print(hit);
         out_ << "after:\n";
         print(now_);
     }
@@ -304,7 +308,7 @@ private:
 
     void list_events() {
         if (events_.empty() && !json_) out_ << "no collisions so far\n";
-        for (const Event& e : events_) print(e);
+        print(events_);
     }
 
     void help() {

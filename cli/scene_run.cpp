@@ -313,9 +313,10 @@ DataFiles data_files(const Scene& scene, const SceneRun& run) {
             if (k > 0) out.json_frames += ",\n";
             out.json_frames += state_json(scene, rec.times[k], rec.states[k]);
         }
+        const std::vector<bool> gains = energy_gains(scene, rec.events);
         for (std::size_t k = 0; k < rec.events.size(); ++k) {
             if (k > 0) out.json_events += ",\n";
-            out.json_events += event_json(scene, rec.events[k]);
+            out.json_events += event_json(scene, rec.events[k], gains[k]);
             out.events_csv += events_csv_row(scene, rec.events[k]);
         }
     });

@@ -10,12 +10,36 @@
 
 #include <nlohmann/json.hpp>
 
+#include "teach/event_problem.h"
 #include "teach/notation.h"
 #include "engine/diagnostics.h"
 
 namespace collide {
 
 namespace {
+
+// The end of an event's text line when its instant gained energy (energy_gains).
+std::string gain_warning(bool energy_gain) {
+    return energy_gain ? "  [kinetic energy gained, which no real impact can do: Kane's paradox of a one-step "
+                         "friction model with Newton's restitution]"
+                       : "";
+}
+
+// energy_gains: the events grouped by instant (equal times, consecutive).
+template <class Event>
+std::vector<bool> gains_of(const Scene& s, const std::vector<Event>& events) {
+    std::vector<bool> out(events.size(), false);
+    for (std::size_t first = 0; first < events.size();) {
+        std::size_t end = first;
+        std::vector<CollisionInstant> instant;
+        while (end < events.size() && events[end].t == events[first].t) instant.push_back(collision_instant(events[end++]));
+        const InstantEnergy e = instant_kinetic_energy(s, instant);
+        if (gains_energy(e.before, e.after)) std::fill(out.begin() + static_cast<long>(first), out.begin() + static_cast<long>(end), true);
+        first = end;
+    }
+    return out;
+}
+
 
 using nlohmann::ordered_json;
 
@@ -115,7 +139,7 @@ ordered_json velocity_json(const typename Event<D>::Velocity& u) {
 }
 
 template <int D>
-std::string event_json_of(const Scene& s, const Event<D>& e) {
+std::string event_json_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     const std::string& a = s.bodies[e.a].name;
     const std::string& b = s.bodies[e.b].name;
     ordered_json j;
@@ -127,11 +151,12 @@ std::string event_json_of(const Scene& s, const Event<D>& e) {
     j["impulse"] = arr(e.impulse);
     j["before"] = {{a, velocity_json<D>(e.before_a)}, {b, velocity_json<D>(e.before_b)}};
     j["after"] = {{a, velocity_json<D>(e.after_a)}, {b, velocity_json<D>(e.after_b)}};
+    j["energy_gain"] = energy_gain;
     return j.dump();
 }
 
 template <int D>
-std::string event_text_of(const Scene& s, const Event<D>& e) {
+std::string event_text_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     const std::string& a = s.bodies[e.a].name;
     const std::string& b = s.bodies[e.b].name;
     const auto change = [](const std::string& name, const typename Event<D>::Velocity& before,
@@ -141,7 +166,7 @@ std::string event_text_of(const Scene& s, const Event<D>& e) {
     };
     return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at " + txt(e.point) + " m, normal " +
            txt(e.normal) + ", impulse on " + b + " " + txt(e.impulse) + " N s; " +
-           change(a, e.before_a, e.after_a) + "; " + change(b, e.before_b, e.after_b);
+           change(a, e.before_a, e.after_a) + "; " + change(b, e.before_b, e.after_b) + gain_warning(energy_gain);
 }
 
 // ---- The table ----
@@ -285,8 +310,9 @@ void write_run(const Scene& s, const StepOptions& options, std::ostream& out) {
         events.clear();
         world.advance_to(t, &events);
         if (options.events) {
-            for (const auto& e : events)
-                out << (options.json ? event_json(s, e) : event_text(s, e)) << "\n";
+            const std::vector<bool> gains = energy_gains(s, events);
+            for (std::size_t k = 0; k < events.size(); ++k)
+                out << (options.json ? event_json(s, events[k], gains[k]) : event_text(s, events[k], gains[k])) << "\n";
         } else if (options.json) {
             out << state_json(s, t, world.bodies()) << "\n";
         } else if constexpr (D == 1) {
@@ -329,7 +355,7 @@ std::string state_text(const Scene& s, double t, const std::vector<Body3>& b, st
     return state_text_of(s, t, b, only);
 }
 
-std::string event_json(const Scene& s, const Event1& e) {
+std::string event_json(const Scene& s, const Event1& e, bool energy_gain) {
     const std::string& a = s.bodies[e.a].name;
     const std::string& b = s.bodies[e.b].name;
     ordered_json j;
@@ -341,21 +367,26 @@ std::string event_json(const Scene& s, const Event1& e) {
     j["impulse"] = e.impulse;
     j["before"] = {{a, {{"v", e.va_before}}}, {b, {{"v", e.vb_before}}}};
     j["after"] = {{a, {{"v", e.va_after}}}, {b, {{"v", e.vb_after}}}};
+    j["energy_gain"] = energy_gain;
     return j.dump();
 }
-std::string event_json(const Scene& s, const Event2& e) { return event_json_of<2>(s, e); }
-std::string event_json(const Scene& s, const Event3& e) { return event_json_of<3>(s, e); }
+std::string event_json(const Scene& s, const Event2& e, bool gain) { return event_json_of<2>(s, e, gain); }
+std::string event_json(const Scene& s, const Event3& e, bool gain) { return event_json_of<3>(s, e, gain); }
 
-std::string event_text(const Scene& s, const Event1& e) {
+std::string event_text(const Scene& s, const Event1& e, bool energy_gain) {
     const std::string& a = s.bodies[e.a].name;
     const std::string& b = s.bodies[e.b].name;
     return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at x = " + txt(e.point) +
            " m, impulse on " + b + " " + txt(e.impulse) + " N s; " + a + " v " + txt(e.va_before) +
            " -> " + txt(e.va_after) + " m/s, " + b + " v " + txt(e.vb_before) + " -> " +
-           txt(e.vb_after) + " m/s";
+           txt(e.vb_after) + " m/s" + gain_warning(energy_gain);
 }
-std::string event_text(const Scene& s, const Event2& e) { return event_text_of<2>(s, e); }
-std::string event_text(const Scene& s, const Event3& e) { return event_text_of<3>(s, e); }
+std::string event_text(const Scene& s, const Event2& e, bool gain) { return event_text_of<2>(s, e, gain); }
+std::string event_text(const Scene& s, const Event3& e, bool gain) { return event_text_of<3>(s, e, gain); }
+
+std::vector<bool> energy_gains(const Scene& s, const std::vector<Event1>& events) { return gains_of(s, events); }
+std::vector<bool> energy_gains(const Scene& s, const std::vector<Event2>& events) { return gains_of(s, events); }
+std::vector<bool> energy_gains(const Scene& s, const std::vector<Event3>& events) { return gains_of(s, events); }
 
 void write_steps(const Scene& s, const StepOptions& options, std::ostream& out) {
     if (s.dimension == 1) write_run<1>(s, options, out);

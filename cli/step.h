@@ -31,12 +31,21 @@ std::string state_json(const Scene& s, double t, const std::vector<Body2>& bodie
                        std::size_t only = kAllBodies);
 std::string state_json(const Scene& s, double t, const std::vector<Body3>& bodies,
                        std::size_t only = kAllBodies);
-std::string event_json(const Scene& s, const Event1& e);
-std::string event_json(const Scene& s, const Event2& e);
-std::string event_json(const Scene& s, const Event3& e);
-std::string event_text(const Scene& s, const Event1& e);  // one line, no newline
-std::string event_text(const Scene& s, const Event2& e);
-std::string event_text(const Scene& s, const Event3& e);
+// `energy_gain`: the event's instant left its bodies with more kinetic energy than before
+// (energy_gains): JSON "energy_gain": true, the text line ends with a warning.
+std::string event_json(const Scene& s, const Event1& e, bool energy_gain);
+std::string event_json(const Scene& s, const Event2& e, bool energy_gain);
+std::string event_json(const Scene& s, const Event3& e, bool energy_gain);
+std::string event_text(const Scene& s, const Event1& e, bool energy_gain);  // one line, no newline
+std::string event_text(const Scene& s, const Event2& e, bool energy_gain);
+std::string event_text(const Scene& s, const Event3& e, bool energy_gain);
+// For each event, whether its instant (the events of its time, in order: `events` holds whole
+// instants) left their bodies with more kinetic energy than before (engine/diagnostics.h
+// gains_energy, on teach/event_problem.h instant_kinetic_energy): no passive impact can;
+// a one-step friction model with Newton's restitution can (Kane's paradox).
+std::vector<bool> energy_gains(const Scene& s, const std::vector<Event1>& events);
+std::vector<bool> energy_gains(const Scene& s, const std::vector<Event2>& events);
+std::vector<bool> energy_gains(const Scene& s, const std::vector<Event3>& events);
 // A state as lines for a reader: the time, one line per body, the totals (all bodies only).
 std::string state_text(const Scene& s, double t, const std::vector<Body1>& bodies,
                        std::size_t only = kAllBodies);

@@ -1,5 +1,7 @@
 #include "engine/diagnostics.h"
 
+#include <cmath>
+
 namespace collide {
 
 Totals1 totals(const std::vector<Body1>& bodies) {
@@ -34,6 +36,8 @@ Totals3 totals(const std::vector<Body3>& bodies, const Vec3& about) {
     }
     return t;
 }
+
+bool gains_energy(double before, double after) { return after - before > 1e-9 * std::abs(before); }
 
 double potential_energy(const Body1& b, const Vec3& g) {
     return b.is_static ? 0.0 : -b.mass * g.x() * b.position;

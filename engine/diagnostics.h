@@ -33,6 +33,13 @@ Totals2 totals(const std::vector<Body2>& bodies, const Vec2& about = Vec2::Zero(
 // off-diagonal inertia terms included.
 Totals3 totals(const std::vector<Body3>& bodies, const Vec3& about = Vec3::Zero());
 
+// Whether an impact left its bodies with more kinetic energy than they had: `after` exceeds
+// `before` by more than 1e-9 of it (the round-off of an elastic impact is about 1e-16 of it).
+// No passive impact can do that. The one-step Coulomb model and the page's matrix method, with
+// Newton's restitution, can when slip stops or reverses during the impact (Kane's paradox);
+// `collide solve` and `collide step --events` say so whenever it happens.
+bool gains_energy(double before, double after);
+
 // Potential energy in uniform gravity g (1D: g.x along the line; 2D: g.x, g.y), zero at the
 // origin: U = -m g . x. Static bodies have none.
 double potential_energy(const Body1& b, const Vec3& g);

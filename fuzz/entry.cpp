@@ -61,7 +61,8 @@ void run(const Scene& scene) {
         // What `collide step --json` prints of it (formatting reads every field).
         (void)state_json(scene, times[k], world.bodies());
     }
-    for (const auto& e : events) (void)event_json(scene, e);
+    const std::vector<bool> gains = energy_gains(scene, events);
+    for (std::size_t k = 0; k < events.size(); ++k) (void)event_json(scene, events[k], gains[k]);
 }
 
 }  // namespace

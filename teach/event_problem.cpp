@@ -1,6 +1,8 @@
 #include "teach/event_problem.h"
 
 #include <cstdio>
+#include <map>
+#include <utility>
 
 #include "engine/diagnostics.h"
 
@@ -108,32 +110,56 @@ CollisionInstant with_roles(const CollisionInstant& c, std::size_t a, std::size_
     return out;
 }
 
-double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after) {
-    // The collision problem's bodies carry the scene's mass and inertia and the instant's
-    // pose; only their velocities change.
-    const SolveProblem p = collision_problem(scene, c);
-    Body3 a = p.a.b3, b = p.b.b3;
-    if (after) {
-        a.v = c.va_after;
-        a.w = c.wa_after;
-        b.v = c.vb_after;
-        b.w = c.wb_after;
-    }
+namespace {
+
+// One body's kinetic energy with the scene's mass and inertia, at the pose and velocities of
+// `s` (static bodies: 0).
+double body_kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s) {
+    const SceneBody& sb = scene.bodies[i];
     if (scene.dimension == 1) {
-        Body1 a1 = p.a.b1, b1 = p.b.b1;
-        a1.v = a.v.x();
-        b1.v = b.v.x();
-        return totals(std::vector<Body1>{a1, b1}).kinetic_energy;
+        Body1 b = sb.body1;
+        b.v = s.v.x();
+        return totals(std::vector<Body1>{b}).kinetic_energy;
     }
     if (scene.dimension == 2) {
-        Body2 a2 = p.a.b2, b2 = p.b.b2;
-        a2.v = a.v.head<2>();
-        a2.w = a.w.z();
-        b2.v = b.v.head<2>();
-        b2.w = b.w.z();
-        return totals(std::vector<Body2>{a2, b2}).kinetic_energy;
+        Body2 b = sb.body2;
+        b.angle = s.angle;
+        b.v = s.v.head<2>();
+        b.w = s.w.z();
+        return totals(std::vector<Body2>{b}).kinetic_energy;
     }
-    return totals(std::vector<Body3>{a, b}).kinetic_energy;
+    Body3 b = sb.body3;
+    b.orientation = s.q;
+    b.v = s.v;
+    b.w = s.w;
+    return totals(std::vector<Body3>{b}).kinetic_energy;
+}
+
+}  // namespace
+
+InstantEnergy instant_kinetic_energy(const Scene& scene, const std::vector<CollisionInstant>& instant) {
+    std::map<std::size_t, std::pair<BodyState, BodyState>> bodies;  // before the first, after the last
+    for (const CollisionInstant& c : instant) {
+        const auto meet = [&](std::size_t i, const BodyState& before, const Vec3& v, const Vec3& w) {
+            auto it = bodies.find(i);
+            if (it == bodies.end()) it = bodies.emplace(i, std::make_pair(before, before)).first;
+            it->second.second.v = v;
+            it->second.second.w = w;
+        };
+        meet(c.a, c.before_a, c.va_after, c.wa_after);
+        meet(c.b, c.before_b, c.vb_after, c.wb_after);
+    }
+    InstantEnergy out;
+    for (const auto& [i, states] : bodies) {
+        out.before += body_kinetic_energy(scene, i, states.first);
+        out.after += body_kinetic_energy(scene, i, states.second);
+    }
+    return out;
+}
+
+double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after) {
+    const InstantEnergy e = instant_kinetic_energy(scene, {c});
+    return after ? e.after : e.before;
 }
 
 SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c) {

@@ -32,6 +32,15 @@ struct CollisionInstant {
 // after the impulse, by the engine's formula (engine/diagnostics.h).
 double pair_kinetic_energy(const Scene& scene, const CollisionInstant& c, bool after);
 
+// The kinetic energy (J) of the bodies of one instant's collisions (`instant`: the events of
+// one time, in the order they were resolved) just before the first and just after the last:
+// each body with its velocities before its first collision and after its last. (One pair of a
+// simultaneous group may gain what another loses; the instant as a whole may not.)
+struct InstantEnergy {
+    double before = 0.0, after = 0.0;
+};
+InstantEnergy instant_kinetic_energy(const Scene& scene, const std::vector<CollisionInstant>& instant);
+
 // A collision event as an instant: indices, point, normal, impulse, velocities and the
 // bodies' poses, all from the event.
 CollisionInstant collision_instant(const Event1& e);

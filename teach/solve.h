@@ -67,4 +67,8 @@ void write_text(const SolveProblem& problem, const Solution& s, std::ostream& ou
 void write_markdown(const SolveProblem& problem, const Solution& s, std::ostream& out);
 void write_json(const SolveProblem& problem, const Solution& s, std::ostream& out);
 
+// The line the worked example adds when a model left the pair with more kinetic energy than
+// it had (engine/diagnostics.h gains_energy): it names Kane's paradox and what avoids it.
+std::string energy_gain_note(Model model);
+
 }  // namespace collide

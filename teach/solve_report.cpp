@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "engine/diagnostics.h"
 #include "teach/notation.h"
 #include "teach/solve.h"
 
@@ -458,6 +459,7 @@ private:
             std::snprintf(percent, sizeof percent, "%.3g", 100.0 * dke / s.ke_before);
             notes.push_back("Kinetic energy changed by " + std::string(dke == 0.0 ? "0" : percent) + " %.");
         }
+        if (gains_energy(s.ke_before, s.ke_after)) notes.push_back(energy_gain_note(P.model));
         notes.push_back(d >= 2 ? "Kinetic energy counts 1/2 m v·v + 1/2 ω·I ω (the full inertia tensor); "
                                  "angular momentum is Σ (I ω + m (x − o) × v), all about one fixed point."
                                : "Kinetic energy is Σ 1/2 m v².");
@@ -476,6 +478,21 @@ private:
         step("Checks", lines, notes);
     }
 };
+
+}  // namespace
+
+std::string energy_gain_note(Model model) {
+    const std::string name = model_name(model);
+    if (model == Model::page_listing)
+        return "Energy gained: the page's listing, as written, leaves the pair with more kinetic energy than it "
+               "had, which no real impact can do (its J acts with the wrong sign: see the errata list).";
+    return "Energy gained: the " + name + " model left the pair with more kinetic energy than it had, which no "
+           "real impact can do. This is Kane's paradox: a friction law applied in one step, with Newton's "
+           "restitution, creates energy when the slip stops or reverses during the impact. Integrating the "
+           "impact over the normal impulse (Routh's method) with Stronge's energetic restitution never does.";
+}
+
+namespace {
 
 std::string headline(const SolveProblem& P) {
     std::string h = "Collision response: " + std::to_string(P.dimension) + "D, model " +
@@ -550,6 +567,7 @@ void write_json(const SolveProblem& P, const Solution& s, std::ostream& out) {
     j["normal_impulse"] = s.P.dot(s.n);
     j["sliding"] = s.sliding;
     j["separating"] = s.separating;
+    j["energy_gain"] = gains_energy(s.ke_before, s.ke_after);
     j["a"] = body(s.va, s.wa);
     j["b"] = body(s.vb, s.wb);
     j["relative_normal_velocity"] = {{"before", s.un}, {"after", s.un_after}};
