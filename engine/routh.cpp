@@ -60,6 +60,7 @@ struct Impact {
     double e = 0.0, mu = 0.0;
     RestitutionLaw law = RestitutionLaw::newton;
     double un0 = 0.0;
+    V u0 = V::Zero();                // u_c before the impact
     V u = V::Zero(), P = V::Zero();  // u_c now, P_c so far (P[0] = P_n)
     double W = 0.0;                  // work of the normal impulse so far, integral u_n dP_n
     double Pc = 0.0, Wc = 0.0;       // P_n and W at the end of compression
@@ -130,6 +131,7 @@ struct Impact {
                 return false;
             }
             advance(d, Kd, h_end);
+            dP_stop -= h_end;
             if (!compressing) return false;
             end_compression();
         }
@@ -218,9 +220,8 @@ struct Impact {
 
     // Delta E = integral of u . dP along the path, with u = u0 + K P:
     //   = u0 . P + P^T K P / 2, the same for every path since K is symmetric (u . dP is then
-    //   the exact differential of that expression). u0 = u - K P.
+    //   the exact differential of that expression).
     double energy_change() const {
-        const V u0 = u - K * P;
         return u0.dot(P) + 0.5 * P.dot(K * P);
     }
 
@@ -360,6 +361,7 @@ Impact<D> integrate(const Eigen::Matrix<double, D, D>& R, const Eigen::Matrix<do
     s.e = e;
     s.mu = mu;
     s.law = law;
+    s.u0 = s.u;
     s.un0 = s.u[0];
     s.detail = detail;
     if (detail) *detail = RouthDetail();
