@@ -1,0 +1,450 @@
+// Routh's impact integration (engine routh()): each 2D phase sequence against its closed form,
+// Kane's rod, the properties of every result (energy, angular momentum about the contact point,
+// friction cone), the frictionless limit, and planar 3D against 2D.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "engine/mass.h"
+#include "engine/routh.h"
+#include "tests/engine/random_bodies.h"
+
+namespace {
+
+using namespace collide;
+using collide_test::kPi;
+using Kind = RouthPhase::Kind;
+
+constexpr RestitutionLaw kLaws[] = {RestitutionLaw::newton, RestitutionLaw::poisson,
+                                    RestitutionLaw::stronge};
+// Closed forms and the program evaluate the same few products in a different order: a few
+// ulps of the O(1) values.
+constexpr double kAtol = 1e-13;
+constexpr double kRtol = 1e-12;
+
+ImpactBody2 ground2() { return ImpactBody2(); }  // static: inv_m = inv_I = 0, at rest
+
+double kinetic(const ImpactBody2& b, const Vec2& v, double w) {
+    return b.is_static() ? 0.0 : 0.5 * v.squaredNorm() / b.inv_m + 0.5 * b.I * w * w;
+}
+double kinetic(const ImpactBody3& b, const Vec3& v, const Vec3& w) {
+    return b.is_static() ? 0.0 : 0.5 * v.squaredNorm() / b.inv_m + 0.5 * w.dot(b.I * w);
+}
+// Angular momentum of one body about the contact point p: I w + m (x - p) x v, x - p = -r.
+double moment_about_contact(const ImpactBody2& b, const Vec2& v, double w) {
+    return b.I * w + cross(-b.r, v) / b.inv_m;
+}
+Vec3 moment_about_contact(const ImpactBody3& b, const Vec3& v, const Vec3& w) {
+    return b.I * w + (-b.r).cross(v) / b.inv_m;
+}
+
+// ---- 1. The 2D phase sequences ----
+//
+// A thin rod (m, L, I = m L^2/12) at angle th above the horizontal touches the static ground
+// (A, n = +y) with its lower end on the left: rb = (L/2)(-c, -s), c = cos th, s = sin th,
+// perp(rb) = (L/2)(s, -c), and K = (1/m) E + perp(rb) perp(rb)^T / I gives
+//   K_xx = (1 + 3 s^2)/m,  K_xn = -3 s c/m,  K_nn = (1 + 3 c^2)/m.
+// While the foot slips with sign sg = sign(u_x), dP = dP_n (-mu sg, 1), so
+//   a1 = du_n/dP_n = K_nn - mu sg K_xn,  b1 = du_x/dP_n = K_xn - mu sg K_xx   (both constant).
+// Slip stops at P_s = -u_x0/b1 if sg b1 < 0. Then it sticks if |K_xn| <= mu K_xx
+// (lambda = -K_xn/K_xx, a2 = K_nn - K_xn^2/K_xx = 4/(m (1 + 3 s^2))) or reverses
+// (lambda = mu sg, a2 = K_nn + mu sg K_xn, b2 = K_xn + mu sg K_xx).
+struct Rod {
+    double m, L, th;
+    ImpactBody2 body(const Vec2& v, double w) const {
+        ImpactBody2 b;
+        b.inv_m = 1.0 / m;
+        b.I = rod_inertia_2d(m, L);
+        b.inv_I = 1.0 / b.I;
+        b.r = 0.5 * L * Vec2(-std::cos(th), -std::sin(th));
+        b.v = v;
+        b.w = w;
+        return b;
+    }
+    double Kxx() const { return (1 + 3 * std::pow(std::sin(th), 2)) / m; }
+    double Kxn() const { return -3 * std::sin(th) * std::cos(th) / m; }
+    double Knn() const { return (1 + 3 * std::pow(std::cos(th), 2)) / m; }
+};
+
+// Two straight stretches with slopes a1 (up to P_s) and a2 after, slip stopping during
+// compression (P_s < -un0/a1). u_n(P_s) = uns = un0 + a1 P_s < 0, then
+//   P_c = P_s - uns/a2,
+//   W_c = un0 P_s + a1 P_s^2/2 - uns^2/(2 a2)        (integral of the piecewise linear u_n),
+//   newton:  P_f = P_c + e (-un0)/a2                 (u_n' = -e un0 on the second stretch),
+//   poisson: P_f = (1 + e) P_c,
+//   stronge: a2 (P_f - P_c)^2/2 = -e^2 W_c  ->  P_f = P_c + e sqrt(-2 W_c/a2).
+double final_impulse(RestitutionLaw law, double e, double un0, double a1, double a2, double Ps) {
+    const double uns = un0 + a1 * Ps, Pc = Ps - uns / a2;
+    const double Wc = un0 * Ps + 0.5 * a1 * Ps * Ps - uns * uns / (2 * a2);
+    switch (law) {
+        case RestitutionLaw::newton: return Pc + e * -un0 / a2;
+        case RestitutionLaw::poisson: return (1 + e) * Pc;
+        case RestitutionLaw::stronge: return Pc + e * std::sqrt(-2 * Wc / a2);
+    }
+    return 0.0;
+}
+
+// Slide throughout: a disc (m, R, I = m R^2/2) thrown along the ground, no spin. rb = (0, -R),
+// K = diag(1/m + R^2/I, 1/m) = diag(3/m, 1/m): K_xn = 0, so u_n = un0 + P_n/m is one straight
+// line and all three laws end at P_f = (1 + e) m vn (newton: u_n' = e vn; poisson: (1 + e) P_c with P_c = m vn;
+// stronge: W_r = (P_f - P_c)^2/(2m) = e^2 m vn^2/2 = -e^2 W_c). The slip
+// u_x = vt - 3 mu P_n/m stays positive when vt > 3 mu (1 + e) vn: one slip phase,
+// P = (-mu, 1)(1 + e) m vn.
+TEST(Routh, SlideThroughoutClosedForm2D) {
+    const double m = 2.0, R = 0.3, vt = 3.0, vn = 2.0, e = 0.5, mu = 0.1;
+    ImpactBody2 disc;
+    disc.inv_m = 1 / m;
+    disc.I = disc_inertia_2d(m, R);
+    disc.inv_I = 1 / disc.I;
+    disc.r = Vec2(0, -R);
+    disc.v = Vec2(vt, -vn);
+    ASSERT_GT(vt, 3 * mu * (1 + e) * vn);
+    for (RestitutionLaw law : kLaws) {
+        RouthDetail d;
+        const Response2 r = routh(ground2(), disc, Vec2(0, 1), e, mu, law, &d);
+        const double j = (1 + e) * m * vn;
+        EXPECT_NEAR_ABS_REL(r.P, Vec2(-mu * j, j), kAtol, kRtol) << restitution_law_name(law);
+        ASSERT_EQ(d.phases.size(), 1u);
+        EXPECT_EQ(d.phases[0].kind, Kind::slip);
+        EXPECT_NEAR_ABS_REL(d.phases[0].normal_impulse_to, j, kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(d.compression_impulse, m * vn, kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(d.compression_work, -0.5 * m * vn * vn, kAtol, kRtol);
+        EXPECT_TRUE(r.sliding);
+        // The same as the one-step model, which is exact when slip never stops.
+        EXPECT_NEAR_ABS_REL(r.P, coulomb(ground2(), disc, Vec2(0, 1), e, mu).P, kAtol, kRtol);
+    }
+}
+
+// Slide, then stick, then reverse: the rod at 50 degrees (|K_xn|/K_xx = 3 s c/(1 + 3 s^2) =
+// 0.535) thrown with its foot slipping forwards (u_x0 > 0, sg = +1). mu = 0.6 > 0.535 sticks,
+// mu = 0.5 reverses. The cases are chosen so that slip stops during compression (asserted).
+void check_two_phases(double mu, Kind second) {
+    const Rod rod{1.0, 1.0, 50.0 * kPi / 180};
+    const ImpactBody2 b = rod.body(Vec2(0.3, -2.0), 1.0);
+    const Vec2 u0 = point_velocity(b);
+    const double un0 = u0.y(), ux0 = u0.x(), e = 0.8;
+    ASSERT_GT(ux0, 0.0);
+    const double a1 = rod.Knn() - mu * rod.Kxn(), b1 = rod.Kxn() - mu * rod.Kxx();
+    const double Ps = -ux0 / b1;
+    ASSERT_GT(Ps, 0.0);
+    ASSERT_LT(Ps, -un0 / a1);  // slip stops while compressing
+    const bool sticks = std::abs(rod.Kxn()) <= mu * rod.Kxx();
+    ASSERT_EQ(sticks, second == Kind::stick);
+    const double lambda = sticks ? -rod.Kxn() / rod.Kxx() : mu;
+    const double a2 = rod.Knn() + lambda * rod.Kxn(), b2 = rod.Kxn() + lambda * rod.Kxx();
+    if (sticks) {
+        EXPECT_NEAR_ABS_REL(a2, 4 / (rod.m * rod.Kxx() * rod.m), kAtol, kRtol);
+    }
+    for (RestitutionLaw law : kLaws) {
+        SCOPED_TRACE(restitution_law_name(law));
+        const double Pf = final_impulse(law, e, un0, a1, a2, Ps);
+        RouthDetail d;
+        const Response2 r = routh(ground2(), b, Vec2(0, 1), e, mu, law, &d);
+        ASSERT_EQ(d.phases.size(), 2u);
+        EXPECT_EQ(d.phases[0].kind, Kind::slip);
+        EXPECT_EQ(d.phases[1].kind, second);
+        EXPECT_NEAR_ABS_REL(d.phases[0].normal_impulse_to, Ps, kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(d.phases[1].normal_impulse_from, Ps, kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(d.final_normal_impulse, Pf, kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(r.P, Vec2(-mu * Ps + lambda * (Pf - Ps), Pf), kAtol, kRtol);
+        // Contact velocity after: u_x = b2 (P_f - P_s) (0 when sticking), u_n = un0 + K P.
+        const Vec2 u1 = point_velocity(ImpactBody2{b.inv_m, b.inv_I, b.I, b.r, r.vb, r.wb});
+        EXPECT_NEAR_ABS_REL(u1.x(), b2 * (Pf - Ps), kAtol, kRtol);
+        if (law == RestitutionLaw::newton) {
+            EXPECT_NEAR_ABS_REL(u1.y(), -e * un0, kAtol, kRtol);
+        }
+        if (law == RestitutionLaw::stronge) {
+            EXPECT_NEAR_ABS_REL(d.restitution_work, -e * e * d.compression_work, kAtol, kRtol);
+        }
+        // Delta E both ways: the integral of u . dP against the kinetic energies.
+        EXPECT_NEAR_ABS_REL(d.energy_change, kinetic(b, r.vb, r.wb) - kinetic(b, b.v, b.w), kAtol,
+                            kRtol);
+    }
+}
+TEST(Routh, SlideThenStickClosedForm2D) { check_two_phases(0.6, Kind::stick); }
+TEST(Routh, SlideThenReverseClosedForm2D) { check_two_phases(0.5, Kind::reverse); }
+
+// Stick from the start: the rod falls straight down, no spin, so u_x0 = 0; |K_xn| <= mu K_xx.
+// One straight stretch with lambda = 3 s c/(1 + 3 s^2), a = 4/(m (1 + 3 s^2)): all laws give
+// P_n = (1 + e) m v0 (1 + 3 s^2)/4, P = (1 + e) m v0 (3 s c, 1 + 3 s^2)/4 (the sticking
+// impulse of the one-step model), and the foot leaves at (0, e v0).
+TEST(Routh, StickFromStartClosedForm2D) {
+    const Rod rod{1.5, 1.2, kPi / 4};
+    const double v0 = 2.0, e = 0.3, mu = 1.0, s = std::sin(rod.th), c = std::cos(rod.th);
+    const ImpactBody2 b = rod.body(Vec2(0, -v0), 0.0);
+    for (RestitutionLaw law : kLaws) {
+        RouthDetail d;
+        const Response2 r = routh(ground2(), b, Vec2(0, 1), e, mu, law, &d);
+        ASSERT_EQ(d.phases.size(), 1u);
+        EXPECT_EQ(d.phases[0].kind, Kind::stick);
+        EXPECT_NEAR_ABS_REL(r.P, Vec2((1 + e) * rod.m * v0 * Vec2(3 * s * c, 1 + 3 * s * s) / 4),
+                            kAtol, kRtol);
+        EXPECT_FALSE(r.sliding);
+        const Vec2 u1 = point_velocity(ImpactBody2{b.inv_m, b.inv_I, b.I, b.r, r.vb, r.wb});
+        EXPECT_NEAR_ABS_REL(u1, Vec2(0, e * v0), kAtol, kRtol);
+    }
+}
+
+// ---- 2. Kane's rod ----
+// The reading of the reference that reproduces all four given figures: the rod at 50 degrees
+// above the horizontal, its lower end on the LEFT of the centre (rb = (L/2)(-cos 50, -sin 50)),
+// omega = +6 rad/s counter-clockwise (it swings the foot down and forwards: u = (2.098,
+// -2.928) m/s). The other readings (40 degrees, the right end, omega = -6) give other numbers
+// or no impact. The foot slips forwards, stops during compression, and reverses
+// (|K_xn|/K_xx = 0.535 > mu). Figures to 1e-4 J: the digits given.
+TEST(Routh, KanesRodReference) {
+    const Rod rod{1.0, 1.0, 50.0 * kPi / 180};
+    const ImpactBody2 b = rod.body(Vec2(-0.2, -1.0), 6.0);
+    const double e = 0.9, mu = 0.5;
+    const double E0 = kinetic(b, b.v, b.w);
+    const Response2 c = coulomb(ground2(), b, Vec2(0, 1), e, mu);
+    EXPECT_NEAR(kinetic(b, c.vb, c.wb) - E0, 0.474, 1e-3);  // the one-step model: about +23%
+    EXPECT_NEAR((kinetic(b, c.vb, c.wb) - E0) / E0, 0.23, 0.01);
+    const double expected[] = {0.2754, -1.0606, -0.7527};
+    for (int i = 0; i < 3; ++i) {
+        RouthDetail d;
+        const Response2 r = routh(ground2(), b, Vec2(0, 1), e, mu, kLaws[i], &d);
+        EXPECT_NEAR(d.energy_change, expected[i], 1e-4) << restitution_law_name(kLaws[i]);
+        EXPECT_NEAR(kinetic(b, r.vb, r.wb) - E0, expected[i], 1e-4);
+        ASSERT_EQ(d.phases.size(), 2u);
+        EXPECT_EQ(d.phases[1].kind, Kind::reverse);
+    }
+}
+
+// ---- 3. Random rough 2D impacts ----
+struct Pair2 {
+    ImpactBody2 a, b;
+    Vec2 n;
+};
+Pair2 random_pair2(collide_test::Random& rng) {
+    const Body2 A = rng.body2(), B = rng.body2();
+    const Vec2 p = rng.vec2(-1, 1);
+    Pair2 s{at_contact(A, p), at_contact(B, p), rng.unit2()};
+    if (relative_velocity(s.a, s.b).dot(s.n) > 0.0) s.n = -s.n;
+    return s;
+}
+
+// For every law: P_n >= 0 and |P_t| <= mu P_n (each stretch has |dP_t| <= mu dP_n); each body's
+// angular momentum about the contact point is unchanged (the impulse acts at that point:
+// I dw + m (-r) x dv = r x P - r x P = 0); the bodies do not approach afterwards; Delta E from
+// the integral equals the kinetic energies' difference. Stronge never gains energy (W_r =
+// -e^2 W_c and the friction work is dissipative); neither does Poisson in 2D. Newton can:
+// the number of gains is recorded, not asserted. Tolerances: 1e-12 of the energy and momentum
+// scales (sums of O(1) terms computed in different orders).
+TEST(Routh, RandomRough2D) {
+    for (RestitutionLaw law : kLaws) {
+        SCOPED_TRACE(restitution_law_name(law));
+        collide_test::Random rng(601);
+        int approaching = 0, gains = 0;
+        for (int i = 0; i < 10000; ++i) {
+            const Pair2 s = random_pair2(rng);
+            const double e = rng.uniform(0, 1), mu = rng.uniform(0, 2);
+            const Vec2 u = relative_velocity(s.a, s.b);
+            if (!(u.dot(s.n) < 0.0)) continue;
+            ++approaching;
+            RouthDetail d;
+            const Response2 r = routh(s.a, s.b, s.n, e, mu, law, &d);
+            const double E0 = kinetic(s.a, s.a.v, s.a.w) + kinetic(s.b, s.b.v, s.b.w);
+            const double dE = kinetic(s.a, r.va, r.wa) + kinetic(s.b, r.vb, r.wb) - E0;
+            EXPECT_NEAR(d.energy_change, dE, 1e-12 * E0);
+            if (law != RestitutionLaw::newton) {
+                EXPECT_LE(dE, 1e-12 * E0);
+            }
+            if (dE > 1e-12 * E0) ++gains;
+            const double Pn = r.P.dot(s.n), Pt = cross(s.n, r.P);
+            EXPECT_GE(Pn, 0.0);
+            EXPECT_LE(std::abs(Pt), mu * Pn + 1e-12 * r.P.norm());
+            for (const ImpactBody2* body : {&s.a, &s.b}) {
+                const bool is_a = body == &s.a;
+                const double L0 = moment_about_contact(*body, body->v, body->w);
+                const double L1 = moment_about_contact(*body, is_a ? r.va : r.vb,
+                                                       is_a ? r.wa : r.wb);
+                const double scale = body->I * std::abs(body->w) +
+                                     body->r.norm() * body->v.norm() / body->inv_m +
+                                     body->r.norm() * r.P.norm();
+                EXPECT_NEAR(L1, L0, 1e-12 * scale);
+            }
+            ImpactBody2 a1 = s.a, b1 = s.b;
+            a1.v = r.va, a1.w = r.wa, b1.v = r.vb, b1.w = r.wb;
+            EXPECT_GE(relative_velocity(a1, b1).dot(s.n), -1e-12 * u.norm());
+        }
+        EXPECT_GT(approaching, 9000);  // n is flipped to approach: nearly every draw counts
+        RecordProperty(std::string(restitution_law_name(law)) + "_energy_gains", gains);
+        if (law == RestitutionLaw::newton) {
+            EXPECT_GT(gains, 0);  // Kane's paradox is not rare
+        } else {
+            EXPECT_EQ(gains, 0);
+        }
+    }
+}
+
+// ---- 4. The frictionless limit and decoupled contacts ----
+// mu = 0: dP = dP_n n on every stretch, u_n = un0 + K_nn P_n is one straight line, so
+// P_c = -un0/K_nn and all three laws give P_f = (1 + e) P_c (newton by definition, poisson by
+// definition, stronge since a straight u_n makes W_r/W_c = -(P_f - P_c)^2/P_c^2): frictionless().
+TEST(Routh, MuZeroIsFrictionlessForEveryLaw) {
+    collide_test::Random rng(602);
+    for (int i = 0; i < 1000; ++i) {
+        const Pair2 s = random_pair2(rng);
+        const double e = rng.uniform(0, 1);
+        const Response2 f = frictionless(s.a, s.b, s.n, e);
+        for (RestitutionLaw law : kLaws) {
+            const Response2 r = routh(s.a, s.b, s.n, e, 0.0, law);
+            EXPECT_NEAR_ABS_REL(r.P, f.P, kAtol, kRtol);
+            EXPECT_NEAR_ABS_REL(r.vb, f.vb, kAtol, kRtol);
+            EXPECT_NEAR(r.wa, f.wa, kAtol + kRtol * std::abs(f.wa));
+        }
+        const Body3 A = rng.body3(), B = rng.body3();
+        const Vec3 p = rng.vec3(-1, 1);
+        const ImpactBody3 a = at_contact(A, p), b = at_contact(B, p);
+        Vec3 n = rng.unit3();
+        if (relative_velocity(a, b).dot(n) > 0.0) n = -n;
+        const Response3 f3 = frictionless(a, b, n, e);
+        for (RestitutionLaw law : kLaws) {
+            const Response3 r = routh(a, b, n, e, 0.0, law);
+            EXPECT_NEAR_ABS_REL(r.P, f3.P, kAtol, kRtol);
+            EXPECT_NEAR_ABS_REL(r.wb, f3.wb, kAtol, kRtol);
+        }
+    }
+}
+
+// With friction but K_nt = 0 (a disc hit through its centre: rb = -R n, so perp(rb) is along t)
+// u_n = un0 + K_nn P_n stays one straight line whatever the slip does (a = K_nn - mu s K_nt =
+// K_nn on every stretch), so again the three laws end at the same P_n = (1 + e)(-un0)/K_nn.
+// With spin the slip may stop and stick or reverse; the laws still agree.
+TEST(Routh, LawsAgreeWithoutNormalTangentialCoupling) {
+    collide_test::Random rng(603);
+    for (int i = 0; i < 1000; ++i) {
+        const double m = rng.mass(), R = rng.uniform(0.1, 1.0), e = rng.uniform(0, 1),
+                     mu = rng.uniform(0, 1);
+        ImpactBody2 disc;
+        disc.inv_m = 1 / m;
+        disc.I = disc_inertia_2d(m, R);
+        disc.inv_I = 1 / disc.I;
+        disc.r = Vec2(0, -R);
+        disc.v = Vec2(rng.uniform(-2, 2), rng.uniform(-2, -0.1));
+        disc.w = rng.uniform(-10, 10);
+        const Response2 n = routh(ground2(), disc, Vec2(0, 1), e, mu, RestitutionLaw::newton);
+        EXPECT_NEAR(n.P.y(), (1 + e) * m * -disc.v.y(), 1e-12 * m * 2);
+        for (RestitutionLaw law : {RestitutionLaw::poisson, RestitutionLaw::stronge}) {
+            // The laws reach P_f by different sums over up to two stretches (stronge through a
+            // square root of works): agreement to 1e-11 relative, not to the last ulps.
+            const Response2 r = routh(ground2(), disc, Vec2(0, 1), e, mu, law);
+            EXPECT_NEAR_ABS_REL(r.P, n.P, kAtol, 1e-11);
+        }
+    }
+}
+
+// ---- 5. 3D ----
+// Planar strike: bodies whose inertia has z as a principal axis, contact point, velocities and
+// normal in the xy plane, spins about z. K is then block-diagonal (xy | z), u_z = 0 stays 0
+// and the 3D integration of the turning slip must give the exact 2D answer: to 1e-9 relative,
+// the accuracy routh.cpp claims for its integrator.
+TEST(Routh, PlanarStrike3DIs2D) {
+    collide_test::Random rng(604);
+    int compared = 0;
+    for (int i = 0; i < 300; ++i) {
+        const Body2 A2 = rng.body2(), B2 = rng.body2();
+        const Vec2 p = rng.vec2(-1, 1);
+        Vec2 n = rng.unit2();
+        const ImpactBody2 a2 = at_contact(A2, p), b2 = at_contact(B2, p);
+        if (relative_velocity(a2, b2).dot(n) > 0.0) n = -n;
+        auto lift_body = [&rng](const ImpactBody2& b) {
+            ImpactBody3 o;
+            o.inv_m = b.inv_m;
+            const double Ixy = b.I * rng.uniform(0.3, 0.7);  // in-plane moments: any
+            const double angle = rng.uniform(0, 2 * kPi);
+            const Mat3 Rz = lift_angle(angle).toRotationMatrix();
+            o.I = Rz * Vec3(Ixy, b.I - Ixy, b.I).asDiagonal() * Rz.transpose();
+            o.inv_I = o.I.inverse();
+            o.r = lift(b.r);
+            o.v = lift(b.v);
+            o.w = lift_spin(b.w);
+            return o;
+        };
+        const ImpactBody3 a3 = lift_body(a2), b3 = lift_body(b2);
+        const double e = rng.uniform(0, 1), mu = rng.uniform(0, 1.5);
+        for (RestitutionLaw law : kLaws) {
+            RouthDetail d2, d3;
+            const Response2 r2 = routh(a2, b2, n, e, mu, law, &d2);
+            const Response3 r3 = routh(a3, b3, lift(n), e, mu, law, &d3);
+            if (r2.separating) continue;
+            ++compared;
+            EXPECT_FALSE(d3.jammed);
+            EXPECT_NEAR_ABS_REL(r3.P, lift(r2.P), 1e-12, 1e-9);
+            EXPECT_NEAR_ABS_REL(r3.wb, lift_spin(r2.wb), 1e-12, 1e-9);
+            EXPECT_NEAR(d3.energy_change, d2.energy_change,
+                        1e-9 * (std::abs(d2.energy_change) + d2.final_normal_impulse *
+                                                                 relative_velocity(a2, b2).norm()));
+            ASSERT_EQ(d3.phases.size(), d2.phases.size());
+            for (std::size_t k = 0; k < d2.phases.size(); ++k)
+                EXPECT_EQ(d3.phases[k].kind, d2.phases[k].kind);
+        }
+    }
+    EXPECT_GT(compared, 800);
+}
+
+// Random 3D impacts: the same properties as in 2D. Stronge never gains energy beyond the
+// integration's error (1e-9 of the energy scale, the integrator's stated accuracy).
+TEST(Routh, RandomRough3D) {
+    collide_test::Random rng(605);
+    int approaching = 0, stopped = 0;
+    for (int i = 0; i < 300; ++i) {
+        const Body3 A = rng.body3(), B = rng.body3();
+        const Vec3 p = rng.vec3(-1, 1);
+        const ImpactBody3 a = at_contact(A, p), b = at_contact(B, p);
+        Vec3 n = rng.unit3();
+        const Vec3 u = relative_velocity(a, b);
+        if (u.dot(n) > 0.0) n = -n;
+        if (!(u.dot(n) < 0.0)) continue;
+        ++approaching;
+        const double e = rng.uniform(0, 1), mu = rng.uniform(0, 1.5);
+        const double E0 = kinetic(a, a.v, a.w) + kinetic(b, b.v, b.w);
+        for (RestitutionLaw law : kLaws) {
+            SCOPED_TRACE(restitution_law_name(law));
+            RouthDetail d;
+            const Response3 r = routh(a, b, n, e, mu, law, &d);
+            EXPECT_FALSE(d.jammed);
+            if (d.phases.size() > 1) ++stopped;
+            const double dE = kinetic(a, r.va, r.wa) + kinetic(b, r.vb, r.wb) - E0;
+            EXPECT_NEAR(d.energy_change, dE, 1e-12 * E0);
+            if (law == RestitutionLaw::stronge) {
+                EXPECT_LE(dE, 1e-9 * E0);
+                EXPECT_NEAR(d.restitution_work, -e * e * d.compression_work,
+                            1e-9 * std::abs(d.compression_work));
+            }
+            const double Pn = r.P.dot(n);
+            EXPECT_GE(Pn, 0.0);
+            EXPECT_LE((r.P - Pn * n).norm(), mu * Pn * (1 + 1e-9) + 1e-12);
+            const double pscale = r.P.norm() * 2.0;
+            EXPECT_NEAR_SCALED(moment_about_contact(a, r.va, r.wa), moment_about_contact(a, a.v, a.w),
+                               0.0, 1e-12, (a.I * a.w).norm() + a.v.norm() / a.inv_m * 2 + pscale);
+            EXPECT_NEAR_SCALED(moment_about_contact(b, r.vb, r.wb), moment_about_contact(b, b.v, b.w),
+                               0.0, 1e-12, (b.I * b.w).norm() + b.v.norm() / b.inv_m * 2 + pscale);
+            ImpactBody3 a1 = a, b1 = b;
+            a1.v = r.va, a1.w = r.wa, b1.v = r.vb, b1.w = r.wb;
+            const double un1 = relative_velocity(a1, b1).dot(n);
+            EXPECT_GE(un1, -1e-9 * u.norm());
+            if (law == RestitutionLaw::newton) {
+                EXPECT_NEAR(un1, -e * u.dot(n), 1e-9 * u.norm());
+            }
+        }
+    }
+    EXPECT_GT(approaching, 290);
+    EXPECT_GT(stopped, 30);  // slip stops in a fair share: the stop event is exercised
+}
+
+TEST(Routh, LawNames) {
+    for (RestitutionLaw law : kLaws) {
+        RestitutionLaw parsed = RestitutionLaw::newton;
+        ASSERT_TRUE(parse_restitution_law(restitution_law_name(law), &parsed));
+        EXPECT_EQ(parsed, law);
+    }
+    RestitutionLaw untouched = RestitutionLaw::poisson;
+    EXPECT_FALSE(parse_restitution_law("Newton", &untouched));
+    EXPECT_EQ(untouched, RestitutionLaw::poisson);
+    EXPECT_STREQ(restitution_law_name(RestitutionLaw::stronge), "stronge");
+    EXPECT_STREQ(routh_phase_name(Kind::reverse), "reverse");
+}
+
+}  // namespace
