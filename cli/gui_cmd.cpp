@@ -78,7 +78,7 @@ const ImWchar kUiGlyphs[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2070, 0x209F, 0x2
 
 const char* kSpeeds[] = {"1 (real time)", "0.5", "0.25", "0.1", "0.05"};
 const double kSpeedValues[] = {1.0, 0.5, 0.25, 0.1, 0.05};
-const char* kModels[] = {"frictionless", "coulomb", "matrix", "stick", "page-listing"};
+const char* kModels[] = {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"};  // Model order
 const char* kPolicies[] = {"sequential", "simultaneous"};
 
 std::string fixed(double x, int decimals) {

@@ -249,7 +249,7 @@ std::vector<GuiAction> parse_gui_script_text(const std::string& text, const std:
                 Model m;
                 if (a.args[0] == "model" && !parse_model(a.args[1], &m))
                     throw InputError(name, {line_no, 1}, "set model",
-                                     "expected frictionless, coulomb, matrix, stick or page-listing, got '" + a.args[1] + "'");
+                                     "expected frictionless, coulomb, matrix, stick, page-listing or routh, got '" + a.args[1] + "'");
                 if (a.args[0] == "policy" && a.args[1] != "sequential" && a.args[1] != "simultaneous")
                     throw InputError(name, {line_no, 1}, "set policy",
                                      "expected sequential or simultaneous, got '" + a.args[1] + "'");

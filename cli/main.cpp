@@ -67,8 +67,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     solve->add_option("--model", model,
                       "use this response model instead of the file's: frictionless, coulomb, "
-                      "matrix, stick or page-listing")
-        ->check(CLI::IsMember({"frictionless", "coulomb", "matrix", "stick", "page-listing"}));
+                      "matrix, stick, page-listing or routh (Stronge's law unless the file names one)")
+        ->check(CLI::IsMember({"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"}));
     solve->footer(
         "Example: collide solve lessons/solve/rod-on-ground.toml --format markdown\n"
         "File format: see README.md, section 'collide solve'.");

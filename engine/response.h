@@ -19,10 +19,12 @@
 
 namespace collide {
 
-enum class Model { frictionless, coulomb, matrix, stick, page_listing };
+// routh: the impact integrated over the normal impulse with Coulomb friction (engine/routh.h),
+// ended by a restitution law.
+enum class Model { frictionless, coulomb, matrix, stick, page_listing, routh };
 
 const char* model_name(Model m);
-// "frictionless" | "coulomb" | "matrix" | "stick" | "page-listing"; false if unknown.
+// "frictionless" | "coulomb" | "matrix" | "stick" | "page-listing" | "routh"; false if unknown.
 bool parse_model(const std::string& name, Model* out);
 
 struct Response1 {

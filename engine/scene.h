@@ -8,6 +8,7 @@
 
 #include "engine/body.h"
 #include "engine/response.h"
+#include "engine/routh.h"
 #include "engine/shape2d.h"
 #include "engine/shape3d.h"
 
@@ -39,6 +40,8 @@ struct Scene {
     double duration = 1.0;        // s
     double output_dt = 0.01;      // s between printed / rendered states
     Model model = Model::frictionless;
+    // How a routh impact ends (engine/routh.h); the other models use Newton's law.
+    RestitutionLaw restitution_law = RestitutionLaw::stronge;
     Policy policy = Policy::sequential;
     double restitution = 1.0;     // for bodies that set none
     double friction = 0.0;

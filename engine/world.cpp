@@ -589,7 +589,8 @@ double World<D>::rest_speed(std::size_t i, std::size_t j) const {
 template <int D>
 double World<D>::friction_limit(std::size_t a, std::size_t b) const {
     switch (scene_.model) {
-        case Model::coulomb: return scene_.pair_friction(a, b);
+        case Model::coulomb:
+        case Model::routh: return scene_.pair_friction(a, b);
         case Model::matrix:
         case Model::stick: return -1.0;
         default: return 0.0;
@@ -849,6 +850,9 @@ bool World<D>::resolve_point(Contact* c, int k) {
         case Model::matrix: r = matrix(ia, ib, n, e); break;
         case Model::stick: r = stick(ia, ib, n); break;
         case Model::page_listing: r = listing_response(ia, ib, n, e); break;
+        case Model::routh:
+            r = routh(ia, ib, n, e, scene_.pair_friction(c->a, c->b), scene_.restitution_law);
+            break;
         default: break;
     }
     if (r.separating) return false;

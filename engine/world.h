@@ -30,7 +30,10 @@
 //                 of Box2D's block solver; the cradle gives (-v/3, 2v/3, 2v/3)). Friction:
 //                 coulomb clamps each point's
 //                 tangential impulse to mu P_n; matrix and stick hold the tangential velocity at
-//                 -e ut- and 0. A group of a single point uses the model's own formula.
+//                 -e ut- and 0. A group of a single point uses the model's own formula. routh
+//                 (engine/routh.h) integrates one point's impact: a group of several points is
+//                 solved as coulomb's (Newton's e on each point, tangential impulses in the
+//                 cone), and the sequential policy answers each point with routh itself.
 //
 // Resting contact. A touching contact with |un| <= v_rest is resting. Its bodies form an island
 // whose contact forces for the rest of the substep (at most kRestStep) are found like the

@@ -372,7 +372,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
             const std::string key = "variant[" + std::to_string(i + 1) + "]";
             if (!t) root.fail("variant", key + " is not a table; write [[variant]]");
             const TableReader v(*t, name, key);
-            v.allow_only({"label", "restitution", "friction", "model", "policy"});
+            v.allow_only({"label", "restitution", "friction", "model", "restitution_law", "policy"});
             LessonVariant V{v.string("label", "the variant's label").value_or(""), L.scene};
             if (V.label.empty()) v.fail("label", "missing key 'label' (shown under its panels)");
             if (v.has("restitution")) {
@@ -388,8 +388,16 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
                 for (SceneBody& b : V.scene.bodies) b.friction.reset();
             }
             if (v.has("model"))
-                parse_model(read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing"}, "model", ""),
+                parse_model(read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"},
+                                        "model", ""),
                             &V.scene.model);
+            if (v.has("restitution_law")) {
+                if (V.scene.model != Model::routh)
+                    v.fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
+                parse_restitution_law(
+                    read_choice(v, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law", ""),
+                    &V.scene.restitution_law);
+            }
             if (v.has("policy"))
                 V.scene.policy = read_choice(v, "policy", {"sequential", "simultaneous"}, "policy", "") == "sequential"
                                      ? Policy::sequential

@@ -252,8 +252,8 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
     root.allow_only(top);
     auto sc = root.table("scene");
     if (!sc) root.fail("", "missing table [scene]");
-    sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "policy",
-                    "restitution", "friction"});
+    sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "restitution_law",
+                    "policy", "restitution", "friction"});
     Scene s;
     s.title = sc->string("title", "a title").value_or("");
     s.dimension = read_dimension(*sc);
@@ -262,9 +262,16 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
     if (sc->has("output_dt")) s.output_dt = read_positive(*sc, "output_dt", "the output interval in s");
     if (s.duration / s.output_dt > kMaxOutputSteps)
         sc->fail("output_dt", "duration / output_dt gives more than 10^6 output steps");
-    parse_model(read_choice(*sc, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing"},
+    parse_model(read_choice(*sc, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"},
                             "model", "frictionless"),
                 &s.model);
+    if (sc->has("restitution_law")) {
+        if (s.model != Model::routh)
+            sc->fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
+        parse_restitution_law(read_choice(*sc, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law",
+                                          "stronge"),
+                              &s.restitution_law);
+    }
     s.policy = read_choice(*sc, "policy", {"sequential", "simultaneous"}, "policy", "sequential") ==
                        "sequential"
                    ? Policy::sequential

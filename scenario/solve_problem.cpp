@@ -197,8 +197,8 @@ SolveProblem parse_solve_text(const std::string& text, const std::string& name) 
     if (root.has("scene") || root.has("body"))
         root.fail("", "this is a scenario file ([scene], [[body]]): run it with 'collide step'; "
                       "collision files give dimension, normal, [a] and [b] at the top");
-    root.allow_only({"title", "dimension", "model", "restitution", "friction", "normal", "point",
-                     "about", "a", "b"});
+    root.allow_only({"title", "dimension", "model", "restitution_law", "restitution", "friction", "normal",
+                     "point", "about", "a", "b"});
     SolveProblem P;
     P.file = name;
     P.title = root.string("title", "a title").value_or("");
@@ -206,9 +206,16 @@ SolveProblem parse_solve_text(const std::string& text, const std::string& name) 
     const int d = P.dimension;
 
     const std::string model = read_choice(
-        root, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing"}, "model",
+        root, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"}, "model",
         "frictionless");
     parse_model(model, &P.model);
+    if (root.has("restitution_law")) {
+        if (P.model != Model::routh)
+            root.fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
+        parse_restitution_law(
+            read_choice(root, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law", "stronge"),
+            &P.restitution_law);
+    }
     P.restitution = root.required_number("restitution", "the coefficient of restitution e in [0, 1]");
     if (P.restitution < 0 || P.restitution > 1)
         root.fail("restitution", "e must lie in [0, 1] (0: perfectly inelastic, 1: elastic)");

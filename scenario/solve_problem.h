@@ -5,6 +5,7 @@
 
 #include "engine/body.h"
 #include "engine/response.h"
+#include "engine/routh.h"
 
 namespace collide {
 
@@ -22,6 +23,7 @@ struct SolveProblem {
     std::string title;  // optional, shown as the heading of the worked example
     int dimension = 3;
     Model model = Model::frictionless;
+    RestitutionLaw restitution_law = RestitutionLaw::stronge;  // model routh only
     double restitution = 0.0;  // e
     double friction = 0.0;     // mu
     // Unit normal from A into B. 1D: +1 or -1 in x. 2D: z = 0.

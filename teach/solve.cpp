@@ -82,6 +82,7 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
         case Model::matrix: r = matrix(a, b, n, e); break;
         case Model::stick: r = stick(a, b, n); break;
         case Model::page_listing: break;  // filled from s->listing by solve()
+        case Model::routh: r = routh(a, b, n, e, mu, P.restitution_law, &s->routh); break;
     }
     if (P.model != Model::page_listing) {
         s->separating = r.separating;
@@ -149,7 +150,7 @@ Solution solve(const SolveProblem& P) {
         s.listing.J = Vec3(L.J, 0, 0);
         s.listing.vaf = Vec3(L.vaf, 0, 0);
         s.listing.vbf = Vec3(L.vbf, 0, 0);
-        // coulomb and matrix have no tangent on a line: they are the frictionless formula.
+        // coulomb, matrix and routh have no tangent on a line: they are the frictionless formula.
         const Response1 r = P.model == Model::stick ? stick(a, b, n) : frictionless(a, b, n, e);
         if (P.model != Model::page_listing) {
             s.separating = r.separating;

@@ -29,6 +29,7 @@ struct Solution {
     Vec3 P_stick = Vec3::Zero();                        // coulomb: sticking impulse
     Vec3 slip = Vec3::Zero();                           // coulomb: sliding direction t
     double slide_denominator = 0.0;                     // n . K (n - mu t)
+    RouthDetail routh;                                  // routh: its phases, impulses and works
     // stick: the combined body (centre relative to the contact point).
     double M = 0.0;
     Vec3 xc = Vec3::Zero(), da = Vec3::Zero(), db = Vec3::Zero();

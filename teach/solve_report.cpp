@@ -56,6 +56,7 @@ public:
                 case Model::matrix: matrix_steps(); break;
                 case Model::stick: stick_steps(); break;
                 case Model::page_listing: listing_steps(); break;
+                case Model::routh: routh_steps(); break;
             }
             for (std::size_t k = first_model_step; k < steps.size(); ++k) steps[k].response = true;
             if (P.model != Model::page_listing && P.model != Model::stick) final_velocities();
@@ -115,7 +116,7 @@ private:
         if (d >= 2) lines.push_back(f("p = ") + V(P.point) + unit("m") + f(",  n = ") + V(s.n));
         else lines.push_back(f("n = ") + num(s.n.x()));
         F coeffs = f("e = ") + num(P.restitution);
-        if (P.model == Model::coulomb) coeffs = coeffs + f(",  μ = ") + num(P.friction);
+        if (P.model == Model::coulomb || P.model == Model::routh) coeffs = coeffs + f(",  μ = ") + num(P.friction);
         lines.push_back(coeffs);
         if (d == 3) notes.push_back("Inertia tensors are in world axes, about each centre of mass.");
         if (d >= 2) notes.push_back("p is the contact point; n the unit normal from A into B.");
@@ -232,6 +233,55 @@ private:
                   num(s.slide_denominator) + f(" = ") + num(j) + unit("N·s"),
               f("P = ") + V(s.P) + unit("N·s")},
              {"Friction μ j opposes the initial slip; μ = 0 gives the frictionless impulse."});
+    }
+
+    // Routh's method (engine/routh.h): the impact followed over the normal impulse P_n, phase by
+    // phase, then ended by the restitution law; the energy balance splits into the works of the
+    // normal impulse in compression and restitution and the work of friction.
+    void routh_steps() {
+        collision_matrix_step();
+        const RouthDetail& r = s.routh;
+        std::vector<F> lines = {f("du/dP_n = K (n − μ s)") + words("  while slipping (s: the unit slip direction)"),
+                                f("du/dP_n = K (n + λ)") + words("  while sticking (λ keeps u_t = 0, |λ| ≤ μ)")};
+        int k = 0;
+        for (const RouthPhase& ph : r.phases)
+            lines.push_back(words("phase " + std::to_string(++k) + ": " + routh_phase_name(ph.kind) + ", P_n from ") +
+                            num(ph.normal_impulse_from) + words(" to ") + num(ph.normal_impulse_to) + unit("N·s"));
+        step("Impact integrated over the normal impulse (Routh's method)", lines,
+             {"Between changes of slip, u changes linearly with P_n" +
+                  std::string(d == 3 ? " (in 3D the slip direction turns while slipping: integrated to 1e-9)" : "") +
+                  ". Slip stops where u_t = 0; then the contact sticks if friction can hold it, otherwise it "
+                  "slips again (reverse).",
+              "Compression ends where u_n = 0; the law below ends restitution."});
+        const double e = P.restitution, Pc = r.compression_impulse, Pf = r.final_normal_impulse;
+        std::vector<F> law = {f("P_c = ") + num(Pc) + unit("N·s") + f(",  W_c = ") + num(r.compression_work) + unit("J")};
+        std::string note;
+        switch (P.restitution_law) {
+            case RestitutionLaw::newton:
+                law.push_back(f("u_n′ = −e u_n = −") + num(e) + f(" × ") + paren(s.un) + f(" = ") +
+                              num(-e * s.un) + unit("m/s"));
+                note = "Newton's law ends the impact when the normal velocity has been reversed and scaled by e. "
+                       "With friction it can create energy (Kane's paradox).";
+                break;
+            case RestitutionLaw::poisson:
+                law.push_back(f("P_n = (1 + e) P_c = (1 + ") + num(e) + f(") × ") + num(Pc) + f(" = ") + num(Pf) +
+                              unit("N·s"));
+                note = "Poisson's law: the normal impulse of restitution is e times that of compression.";
+                break;
+            case RestitutionLaw::stronge:
+                law.push_back(f("W_r = −e e W_c = −") + num(e) + f(" × ") + num(e) + f(" × ") +
+                              paren(r.compression_work) + f(" = ") + num(r.restitution_work) + unit("J"));
+                note = "Stronge's energetic law: the normal impulse gives back e² of the work it absorbed in "
+                       "compression. It never creates energy.";
+                break;
+        }
+        law.push_back(f("P_n = ") + num(Pf) + unit("N·s") + f(",  P = ") + V(s.P) + unit("N·s"));
+        step(std::string("Restitution law: ") + restitution_law_name(P.restitution_law), law, {note});
+        const double Wt = r.energy_change - r.compression_work - r.restitution_work;
+        step("Energy balance  ΔE = W_c + W_r + W_t",
+             {f("ΔE = W_c + W_r + W_t = ") + num(r.compression_work) + f(" + ") + num(r.restitution_work) + f(" + ") +
+              paren(Wt) + f(" = ") + num(r.energy_change) + unit("J")},
+             {"W_t is the work of friction (never positive). ΔE is the change of kinetic energy."});
     }
 
     void matrix_steps() {
@@ -431,6 +481,13 @@ private:
                 lines.push_back(f("−e u_n = ") + num(-P.restitution * s.un) + unit("m/s") +
                                 words("  (what a correct answer gives)"));
                 break;
+            case Model::routh:
+                if (d >= 2)
+                    lines.push_back(f("u_t′ = u′ − u_n′ n = ") + V(s.u_after - s.un_after * s.n) + unit("m/s"));
+                notes.push_back(std::string(s.sliding ? "Still slipping at the end." : "The slip has stopped.") +
+                                " The normal velocity after follows from the law, not from −e u_n (except "
+                                "with Newton's).");
+                break;
         }
         step("Restitution check", lines, notes);
     }
@@ -486,10 +543,15 @@ std::string energy_gain_note(Model model) {
     if (model == Model::page_listing)
         return "Energy gained: the page's listing, as written, leaves the pair with more kinetic energy than it "
                "had, which no real impact can do (its J acts with the wrong sign: see the errata list).";
+    if (model == Model::routh)
+        return "Energy gained: Newton's restitution law left the pair with more kinetic energy than it had, which "
+               "no real impact can do. This is Kane's paradox, and integrating the impact does not cure it: "
+               "Newton's law asks for a normal velocity after the impact that friction may have made costly. "
+               "restitution_law = \"stronge\" (the default) never creates energy.";
     return "Energy gained: the " + name + " model left the pair with more kinetic energy than it had, which no "
            "real impact can do. This is Kane's paradox: a friction law applied in one step, with Newton's "
-           "restitution, creates energy when the slip stops or reverses during the impact. Integrating the "
-           "impact over the normal impulse (Routh's method) with Stronge's energetic restitution never does.";
+           "restitution, creates energy when the slip stops or reverses during the impact. model = \"routh\" "
+           "(the impact integrated over the normal impulse) with Stronge's energetic restitution never does.";
 }
 
 namespace {
@@ -497,7 +559,8 @@ namespace {
 std::string headline(const SolveProblem& P) {
     std::string h = "Collision response: " + std::to_string(P.dimension) + "D, model " +
                     model_name(P.model) + ", e = " + num_text(P.restitution);
-    if (P.model == Model::coulomb) h += ", μ = " + num_text(P.friction);
+    if (P.model == Model::coulomb || P.model == Model::routh) h += ", μ = " + num_text(P.friction);
+    if (P.model == Model::routh) h += std::string(", restitution law ") + restitution_law_name(P.restitution_law);
     return h;
 }
 
@@ -568,6 +631,17 @@ void write_json(const SolveProblem& P, const Solution& s, std::ostream& out) {
     j["sliding"] = s.sliding;
     j["separating"] = s.separating;
     j["energy_gain"] = gains_energy(s.ke_before, s.ke_after);
+    if (P.model == Model::routh) {
+        j["restitution_law"] = restitution_law_name(P.restitution_law);
+        ordered_json phases = ordered_json::array();
+        for (const RouthPhase& ph : s.routh.phases)
+            phases.push_back({{"kind", routh_phase_name(ph.kind)},
+                              {"normal_impulse_from", ph.normal_impulse_from},
+                              {"normal_impulse_to", ph.normal_impulse_to}});
+        j["phases"] = phases;
+        j["compression_impulse"] = s.routh.compression_impulse;
+        j["work"] = {{"compression", s.routh.compression_work}, {"restitution", s.routh.restitution_work}};
+    }
     j["a"] = body(s.va, s.wa);
     j["b"] = body(s.vb, s.wb);
     j["relative_normal_velocity"] = {{"before", s.un}, {"after", s.un_after}};

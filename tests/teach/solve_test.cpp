@@ -226,6 +226,36 @@ static = true
     }
 }
 
+// model = "routh": the JSON keeps its schema and adds the law and the phases, which tile the
+// normal impulse from 0 to the normal impulse applied; Kane's rod slips, then slips back once
+// its slip has stopped during compression (engine/routh tests check the phases' closed forms).
+TEST(SolveJson, RouthAddsItsLawAndPhases) {
+    const SolveProblem P = parse_solve_file(example("kane-rod.toml"));
+    std::ostringstream out;
+    write_json(P, solve(P), out);
+    const auto j = nlohmann::json::parse(out.str());
+    EXPECT_EQ(j["model"], "routh");
+    EXPECT_EQ(j["restitution_law"], "stronge");
+    ASSERT_EQ(j["phases"].size(), 2u);
+    EXPECT_EQ(j["phases"][0]["kind"], "slip");
+    EXPECT_EQ(j["phases"][1]["kind"], "reverse");
+    double at = 0.0;
+    for (const auto& ph : j["phases"]) {
+        EXPECT_DOUBLE_EQ(ph["normal_impulse_from"].get<double>(), at);
+        at = ph["normal_impulse_to"].get<double>();
+        EXPECT_GT(at, ph["normal_impulse_from"].get<double>());
+    }
+    EXPECT_NEAR(at, j["normal_impulse"].get<double>(), 1e-12);
+    // The slip stopped during compression: before P_c.
+    EXPECT_LT(j["phases"][0]["normal_impulse_to"].get<double>(), j["compression_impulse"].get<double>());
+    // Stronge: the restitution work is e^2 times minus the compression work, and no energy gain.
+    EXPECT_NEAR(j["work"]["restitution"].get<double>(), -0.81 * j["work"]["compression"].get<double>(), 1e-12);
+    EXPECT_FALSE(j["energy_gain"].get<bool>());
+    // The impulse stays in the friction cone: |P_t| <= mu P_n (here the ground's normal is -y).
+    const double Pn = j["normal_impulse"].get<double>(), Pt = std::abs(j["impulse"][0].get<double>());
+    EXPECT_LE(Pt, 0.5 * Pn + 1e-12);
+}
+
 TEST(SolveJson, OneDimensionalValuesAreNumbers) {
     const SolveProblem P = parse_solve_file(example("carts-1d.toml"));
     std::ostringstream out;
