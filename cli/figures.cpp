@@ -81,6 +81,7 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     if (!three_d) {
         render::DiagramView probe(scene, render::Style::for_height(height));
         probe.frame_only(panel.frame_bodies);
+        probe.frame_points(points_of(view));
         probe.fit(three, moments.states[1].impacts, ImVec4(0, 0, 1000, 1000));
         const Vec2 size = probe.box_hi() - probe.box_lo();
         if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
@@ -93,6 +94,7 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     const double width = out.stacked ? kColumnWidth - 2 * gap : (kWideFigureWidth - 4 * gap) / 3;
     panel.width = static_cast<int>(std::lround(scale * width));
     panel.height = static_cast<int>(std::lround(scale * width / aspect));
+    panel.points = points_of(view);
     render::Renderer panels_renderer(context, scene, panel);
     panels_renderer.prepare(three, moments.states[1].impacts);
     out.points = points_of(view);

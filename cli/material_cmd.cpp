@@ -391,7 +391,7 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
             o << "<tr><td>" << math(v.label) << " (" << escape(L.scene.bodies[c.a].name) << " on "
               << escape(L.scene.bodies[c.b].name) << ")</td><td>" << escape(vec(c.impulse, d)) << "</td><td>"
               << escape(vec(c.va_after, d)) << "</td><td>" << escape(vec(c.vb_after, d)) << "</td><td>"
-              << escape(n(v.ke_before - v.ke_after)) << "</td></tr>\n";
+              << escape(energy_lost_text(v.ke_before, v.ke_after)) << "</td></tr>\n";
         }
         o << "</table>\n";
     }

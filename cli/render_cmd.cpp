@@ -31,6 +31,7 @@
 #include "scenario/scene_file.h"
 #include "teach/event_problem.h"
 #include "teach/answers.h"
+#include "engine/diagnostics.h"
 #include "teach/lesson_penalty.h"
 #include "teach/notation.h"
 #include "teach/solve.h"
@@ -40,6 +41,11 @@ namespace collide {
 namespace fs = std::filesystem;
 using render::FrameState;
 using render::ImpactMark;
+
+std::string energy_lost_text(double before, double after) {
+    if (gains_energy(before, after)) return notation::num_text(after - before) + " gained (Kane's paradox)";
+    return notation::num_text(before - after);
+}
 
 namespace {
 
@@ -173,7 +179,7 @@ std::string variants_markdown(const Scene& scene, const std::vector<RenderReport
         const CollisionInstant& c = *v.first;
         md << "| " << v.label << " (" << scene.bodies[c.a].name << " on " << scene.bodies[c.b].name
            << ") | " << V(c.impulse) << " | " << V(c.va_after) << " | " << V(c.vb_after) << " | "
-           << notation::num_text(v.ke_before - v.ke_after) << " |\n";
+           << energy_lost_text(v.ke_before, v.ke_after) << " |\n";
     }
     return md.str();
 }

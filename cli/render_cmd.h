@@ -97,6 +97,10 @@ struct Interrupted : std::runtime_error {
 // Throws InputError (bad input: nothing written), Interrupted, or std::runtime_error.
 RenderReport render_scenario(const RenderRequest& request, std::ostream& err);
 
+// A variant's "kinetic energy lost" cell: the loss, or the gain marked as such (no passive
+// impact gains energy: engine/diagnostics.h gains_energy).
+std::string energy_lost_text(double before, double after);
+
 // Runs the command: reads the options (parse_render_request), renders, prints the summary.
 // Returns the exit code: 0 done, 130 interrupted (SIGINT / SIGTERM: the
 // files written are complete), 2 bad input (one "collide: error: ..."

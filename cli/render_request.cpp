@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "cli/figures.h"
 #include "scenario/input_error.h"
 #include "teach/notation.h"
 
@@ -148,6 +149,7 @@ render::RenderSettings frame_settings(const FrameSpec& frame, const Scene& scene
     settings.time_decimals = std::clamp(static_cast<int>(std::ceil(std::log10(std::max(1.0, frame.fps)))), 1, 4);
     if (formula) settings.formula = *formula;
     settings.camera = {view.camera_azimuth, view.camera_elevation, view.camera_target, view.camera_distance};
+    settings.points = points_of(view);
     return settings;
 }
 

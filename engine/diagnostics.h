@@ -35,8 +35,9 @@ Totals3 totals(const std::vector<Body3>& bodies, const Vec3& about = Vec3::Zero(
 
 // Whether an impact left its bodies with more kinetic energy than they had: `after` exceeds
 // `before` by more than 1e-9 of it (the round-off of an elastic impact is about 1e-16 of it).
-// No passive impact can do that. The one-step Coulomb model and the page's matrix method, with
-// Newton's restitution, can when slip stops or reverses during the impact (Kane's paradox);
+// No passive impact can do that. The one-step Coulomb model, or Routh's with Newton's law, can
+// when slip stops or reverses during the impact (Kane's paradox; the matrix method cannot:
+// its change is -(1 - e^2)/2 u.K^-1 u), and so can the page's listing as written;
 // `collide solve` and `collide step --events` say so whenever it happens.
 bool gains_energy(double before, double after);
 

@@ -363,10 +363,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         if (m.body >= n || !decor.in_focus(m.body)) continue;  // a figure about another pair
         if (m.velocity && !decor.velocities) continue;  // a point shown for its velocity
         const BodyState& s = frame.bodies[m.body];
-        const double ca = std::cos(s.angle), sa = std::sin(s.angle);
-        const Vec3 r = dim == 1 ? Vec3(m.at.x(), 0, 0)
-                                : Vec3(ca * m.at.x() - sa * m.at.y(), sa * m.at.x() + ca * m.at.y(), 0);
-        const Vec3 p = s.x + r;
+        const Vec3 p = point_position(m, s, dim);
         Annotation a;
         a.kind = Mark::point;
         a.body = static_cast<int>(m.body);
@@ -378,7 +375,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         a.box = ImVec4(at.x - style_.px(5), at.y - style_.px(5), at.x + style_.px(5), at.y + style_.px(5));
         const int k = add(std::move(a));
         const bool moving = m.velocity && decor.velocities;
-        const Vec3 vp = dim == 1 ? Vec3(s.v.x(), 0, 0) : Vec3(s.v + s.w.cross(r));
+        const Vec3 vp = point_velocity(m, s, dim);
         const ImVec2 tip = to_screen(p + k_velocity_ * vp);
         if (moving && vp.norm() > 1e-3 * fastest) {
             const int kv = arrow_item(Mark::point_velocity, static_cast<int>(m.body), p, p + k_velocity_ * vp,

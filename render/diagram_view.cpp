@@ -151,6 +151,10 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
             max_speed = std::max(max_speed, xy(f.bodies[i].v).norm());
             max_spin_ = std::max(max_spin_, std::abs(f.bodies[i].w.z()));
         }
+    for (const FrameState& f : samples)
+        for (const PointMark& m : points_)
+            if (m.velocity && m.body < f.bodies.size() && counts(m.body))
+                max_speed = std::max(max_speed, xy(point_velocity(m, f.bodies[m.body], scene_.dimension)).norm());
     if (some && lo.x() < inf && !samples.empty()) {
         const Vec2 d = Vec2::Constant(0.5 * (hi - lo).maxCoeff());
         const Vec2 near_lo = lo - d, near_hi = hi + d;
@@ -241,6 +245,14 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
                 hi = hi.cwiseMax(c + Vec2(r, r));
             }
         }
+    for (const FrameState& f : samples)
+        for (const PointMark& m : points_) {
+            if (!m.velocity || m.body >= f.bodies.size() || !framed(m.body)) continue;
+            const BodyState& s = f.bodies[m.body];
+            const Vec2 tip = xy(point_position(m, s, scene_.dimension) + k_velocity_ * point_velocity(m, s, scene_.dimension));
+            lo = lo.cwiseMin(tip);
+            hi = hi.cwiseMax(tip);
+        }
     for (const ImpactMark& im : impacts) {
         if (!framed(im.a) && !framed(im.b)) continue;
         const Vec2 p = xy(im.point), P = xy(im.impulse) * k_impulse_;
@@ -256,6 +268,18 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
     centre_ = 0.5 * (lo + hi);
     box_lo_ = lo;
     box_hi_ = hi;
+}
+
+Vec3 DiagramView::point_position(const PointMark& m, const BodyState& s, int dimension) {
+    if (dimension == 1) return s.x + Vec3(m.at.x(), 0, 0);
+    const double ca = std::cos(s.angle), sa = std::sin(s.angle);
+    return s.x + Vec3(ca * m.at.x() - sa * m.at.y(), sa * m.at.x() + ca * m.at.y(), 0);
+}
+
+// v_p = v + ω × r, r from the centre to the point (1D: the body's v).
+Vec3 DiagramView::point_velocity(const PointMark& m, const BodyState& s, int dimension) {
+    if (dimension == 1) return Vec3(s.v.x(), 0, 0);
+    return s.v + s.w.cross(point_position(m, s, dimension) - s.x);
 }
 
 ImVec2 DiagramView::to_screen(const Vec3& world) const {

@@ -73,6 +73,12 @@ public:
     // only near the moving ones, so that a long wall does not shrink the pair that hits it;
     // the rest of the scene is drawn where it falls in the view, and cut at its edge.
     void frame_only(std::vector<std::size_t> bodies) { frame_only_ = std::move(bodies); }
+    // Marked points whose velocities the frames draw (Decor::points): fit() counts their
+    // speeds in the arrow scale and frames their arrows' tips too.
+    void frame_points(std::vector<PointMark> points) { points_ = std::move(points); }
+    // Where a marked point is and how fast it moves in the state `s` of its body.
+    static Vec3 point_position(const PointMark& m, const BodyState& s, int dimension);
+    static Vec3 point_velocity(const PointMark& m, const BodyState& s, int dimension);
 
     // What draw() draws of `frame`, in drawing order, the labels placed by `labels` (which
     // holds what the other overlays took; null: no labels).
@@ -123,6 +129,7 @@ private:
     Vec2 centre_ = Vec2::Zero();  // world point at the viewport's centre
     bool directions_room_ = false;
     std::vector<std::size_t> frame_only_;
+    std::vector<PointMark> points_;
     bool framed(std::size_t i) const {
         return frame_only_.empty() || std::find(frame_only_.begin(), frame_only_.end(), i) != frame_only_.end();
     }

@@ -36,6 +36,7 @@ Renderer::Renderer(GlContext& context, const Scene& scene, const RenderSettings&
     diagram_ = std::make_unique<DiagramView>(scene_, style_);
     diagram_->reserve_directions(settings_.directions);
     diagram_->frame_only(settings_.frame_bodies);
+    diagram_->frame_points(settings_.points);
     if (settings_.view == ViewKind::perspective) {
         view3d_ = std::make_unique<Scene3dView>(gl, scene_, style_);
         view3d_->set_camera(settings_.camera);

@@ -48,6 +48,9 @@ struct RenderSettings {
     // When not empty, the 2D view frames these bodies only (scene indices): a figure about one
     // pair of a busy scene is drawn at that pair's size (DiagramView::frame_only).
     std::vector<std::size_t> frame_bodies;
+    // Marked points whose velocity arrows the frames draw: counted in the framing and the
+    // arrow scale (DiagramView::frame_points).
+    std::vector<PointMark> points;
     int time_decimals = 3;           // "t = 0.350 s"
     // Font sizes: by default for the frame height; figure panels use the frame's.
     int font_height = 0;             // 0: height
