@@ -97,10 +97,12 @@ WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
     WorkedExample w;
     w.problem = collision_problem(scene, c);
     w.solution = solve(w.problem);
-    char heading[160];
+    std::string model = model_name(w.problem.model);
+    if (w.problem.model == Model::routh) model += std::string(", ") + restitution_law_name(w.problem.restitution_law) + "'s law";
+    char heading[200];
     std::snprintf(heading, sizeof heading, "Collision of %s and %s  (%s, e = %s)",
-                  scene.bodies[c.a].name.c_str(), scene.bodies[c.b].name.c_str(),
-                  model_name(w.problem.model), notation::num_text(w.problem.restitution).c_str());
+                  scene.bodies[c.a].name.c_str(), scene.bodies[c.b].name.c_str(), model.c_str(),
+                  notation::num_text(w.problem.restitution).c_str());
     w.formula.heading = heading;
     // The last two steps of the response model: a step's title carries its formula after two
     // spaces ("Impulse  j = ..."), its lines the numbers.

@@ -170,6 +170,7 @@ SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c) {
     p.title = scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + " at t = " + when + " s";
     p.dimension = scene.dimension;
     p.model = scene.model;
+    p.restitution_law = scene.restitution_law;
     p.restitution = scene.pair_restitution(c.a, c.b);
     p.friction = scene.pair_friction(c.a, c.b);
     p.normal = c.normal;  // 1D: +x, or -x when b is the left block

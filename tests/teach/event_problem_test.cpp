@@ -233,5 +233,41 @@ TEST(EventProblem, ThreeDimensionalSlidingHitIsTheOneStepCoulombModel) {
     EXPECT_NEAR((s.P - e.impulse).norm(), 0.0, 1e-9 * e.impulse.norm());
 }
 
+// A routh scene's worked example uses the scene's restitution law: with Newton's law the rod of
+// Kane's paradox gains energy in the world and in its worked example alike (Stronge's would not).
+TEST(EventProblem, RouthKeepsTheScenesRestitutionLaw) {
+    const Scene scene = parse_scene_text(R"([scene]
+dimension = 2
+duration = 0.1
+model = "routh"
+restitution_law = "newton"
+restitution = 0.9
+friction = 0.5
+[[body]]
+name = "ground"
+shape = "plane"
+normal = [0.0, 1.0]
+offset = 0.0
+[[body]]
+name = "rod"
+shape = "rectangle"
+size = [1.0, 1e-6]
+mass = 1.0
+angle = 0.8726646259971648
+position = [0.32139342182104813, 0.38302254295429383]
+v = [-0.2, -1.0]
+w = 6.0
+)", "kane.toml");
+    Event2 e;
+    const CollisionInstant c = first_instant<World<2>>(scene, &e);
+    const SolveProblem p = collision_problem(scene, c);
+    EXPECT_EQ(p.restitution_law, RestitutionLaw::newton);
+    const Solution s = solve(p);
+    EXPECT_NEAR((s.P.head<2>() - e.impulse).norm(), 0.0, 1e-9 * e.impulse.norm());
+    EXPECT_GT(s.ke_after, s.ke_before);  // Newton's law gains here (Kane's paradox)
+    // u_n' = -e u_n: Newton's law itself.
+    EXPECT_NEAR(s.un_after, -0.9 * s.un, 1e-9);
+}
+
 }  // namespace
 }  // namespace collide
