@@ -282,6 +282,7 @@ const std::map<std::string, QuantityInfo>& quantity_table() {
     static const std::map<std::string, QuantityInfo> table = {
         {"impulse", {"N s", true, false}},
         {"impulse_normal", {"N s", true, false}},
+        {"slip_stop_impulse", {"N s", true, false}},
         {"velocity_before", {"m/s", true, true}},
         {"velocity_after", {"m/s", true, true}},
         {"spin_before", {"rad/s", true, true, true}},

@@ -151,6 +151,8 @@ const std::map<std::string, QuantityInfo>& quantity_table();
 // and a body: "impulse" (event: P on b), "impulse_normal" (event: j = P . n),
 // "velocity_before" / "velocity_after" and "spin_before" / "spin_after" (event, body),
 // "kinetic_energy_before" / "kinetic_energy_after" / "energy_lost" (event: the two bodies),
+// "slip_stop_impulse" (event, model routh: the normal impulse P_n at which the contact
+// point's slip stops, engine/routh.h; an error when it never stops),
 // "time" (event), "collisions" (the count over the run), "last_collision_time",
 // "final_velocity" / "final_spin" (body, at the end of the run), "final_kinetic_energy";
 // "point_velocity_before" / "point_velocity_after" (event, body: vp = v + w x (p - x) of the

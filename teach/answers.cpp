@@ -16,6 +16,7 @@
 #include "teach/event_problem.h"
 #include "teach/lesson_penalty.h"
 #include "teach/notation.h"
+#include "teach/solve.h"
 
 namespace collide {
 
@@ -160,6 +161,18 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
             else if (q.quantity == "energy_lost")
                 a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
             else if (q.quantity == "time") a.value = c.t;
+            else if (q.quantity == "slip_stop_impulse") {
+                // The event's own problem solved again (the world applied this same impact):
+                // the end of the first slip phase when another phase follows it.
+                if (scene.model != Model::routh)
+                    throw InputError(L.file, {}, where + ".quantity", "'slip_stop_impulse' needs model = \"routh\"");
+                const Solution s = solve(collision_problem(scene, c));
+                const std::vector<RouthPhase>& ph = s.routh.phases;
+                if (ph.size() < 2 || ph[0].kind != RouthPhase::Kind::slip)
+                    throw InputError(L.file, {}, where + ".quantity",
+                                     "the slip does not stop during collision " + std::to_string(q.event));
+                a.value = ph[0].normal_impulse_to;
+            }
             else if (q.quantity == "point_velocity_before" || q.quantity == "point_velocity_after") {
                 const bool after = q.quantity == "point_velocity_after";
                 const CollisionInstant::Side& s = is_a ? c.before_a : c.before_b;

@@ -380,6 +380,46 @@ TEST(LessonAnswers, Friction) {
     EXPECT_NEAR(ans(L, a, "point_velocity_after", "puck 2", 2).vector.x(), 0.0, 1e-12);  // no slip after sticking
 }
 
+TEST(LessonAnswers, KanesParadox) {
+    // Routh's method by hand for the rod's end on the ground (n = +y from the ground into the
+    // rod, static ground), written here in world components: u0 = v + w x r, K = E/m +
+    // perp(r) perp(r)^T / I; while the end slides with sign s along x, dP = (-mu s, 1) dP_n and
+    // du = K dP. Phase 1 slides right until u_x = 0 (P1); sticking would need |K_xy / K_xx| <= mu,
+    // else it slides back (s = sign K_xy). Compression ends at u_y = 0; Stronge's law ends the
+    // impact when the work of the normal impulse in restitution, 1/2 a2 h^2, is e^2 times minus
+    // that in compression. Then P = P1 d1 + h2 d2 and dE = u0.P + 1/2 P.K P. The rod is 1e-6 m
+    // thick (its corner, not its axis, touches): 1e-5 covers that.
+    const Lesson& L = lesson("kanes-paradox");
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    const SceneBody& rod = body(L, "rod");
+    const double m = rod.body2.mass, I = rod.body2.inertia, e = L.scene.restitution, mu = L.scene.friction;
+    const double T = 0.1;  // the lesson starts the rod 0.1 s before the impact, no gravity
+    const double angle = rod.body2.angle + rod.body2.w * T;
+    EXPECT_NEAR(angle, 50.0 * kPi / 180.0, 1e-12);
+    const Vec2 r = rotate(angle, Vec2(-0.5, 0.0));
+    const Vec2 u0 = rod.body2.v + spin_x(rod.body2.w, r);
+    const Vec2 perp(-r.y(), r.x());
+    const Mat2 K = Mat2::Identity() / m + perp * perp.transpose() / I;
+    ASSERT_GT(u0.x(), 0.0);  // sliding right
+    const Vec2 d1(-mu, 1.0);
+    const double P1 = -u0.x() / (K * d1).x();
+    const Vec2 u1 = u0 + P1 * (K * d1);
+    ASSERT_LT(u1.y(), 0.0);                           // still compressing when the slip stops
+    ASSERT_GT(std::abs(K(0, 1) / K(0, 0)), mu);       // sticking cannot hold: it slides back
+    const Vec2 d2(mu * (K(0, 1) > 0 ? -1.0 : 1.0), 1.0);
+    const double a1 = (K * d1).y(), a2 = (K * d2).y();
+    const double hc = -u1.y() / a2;                   // to the end of compression
+    const double Wc = u0.y() * P1 + 0.5 * a1 * P1 * P1 + u1.y() * hc + 0.5 * a2 * hc * hc;
+    const double hr = std::sqrt(2.0 * e * e * -Wc / a2);  // 1/2 a2 hr^2 = -e^2 Wc
+    const Vec2 P = P1 * d1 + (hc + hr) * d2;
+    const double dE = u0.dot(P) + 0.5 * P.dot(K * P);
+    EXPECT_NEAR(dE, -0.7527, 1e-4);  // the reference
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, -dE, 1e-5);
+    EXPECT_NEAR(ans(L, a, "impulse_normal").value, P.y(), 1e-5);
+    EXPECT_NEAR(ans(L, a, "slip_stop_impulse").value, P1, 1e-5);
+    expect_vec2(ans(L, a, "point_velocity_after", "rod"), u0 + K * P, 1e-5);
+}
+
 TEST(LessonAnswers, MatrixMethod) {
     // The rod lands on its lowest corner without turning: K = E / m + r_perp r_perp^T / I,
     // P = -(1 + e) K^-1 u, and the corner leaves with -e u.
