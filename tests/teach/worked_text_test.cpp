@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "teach/html.h"
 #include "teach/notation.h"
 #include "teach/solve.h"
 
@@ -354,6 +355,32 @@ TEST(WorkedText, StudentNumbersStillFollowStepByStep) {
         EXPECT_TRUE(r.wrong.empty()) << joined(r.wrong);
     }
     EXPECT_GE(shorter, 3);
+}
+
+// The site's worked example (HTML, students' numbers) read the same way: its headings and math
+// lines, tags undone (<sub>pa</sub> back to _pa, entities back to characters), follow step by
+// step at 4 digits.
+TEST(WorkedText, TheSitesHtmlWorkedExampleFollowsStepByStepToo) {
+    for (const std::string& path : bundled_examples()) {
+        SCOPED_TRACE(path);
+        const SolveProblem problem = parse_solve_file(path);
+        const std::string html = html::worked_html(problem, solve(problem), "");
+        std::string text;
+        const std::regex line(R"re(<(h3|div class="math[^"]*")>(.*?)</(h3|div)>)re");
+        for (std::sregex_iterator m(html.begin(), html.end(), line), end; m != end; ++m) {
+            std::string l = (*m)[2];
+            l = std::regex_replace(l, std::regex("<sub>"), "_");
+            l = std::regex_replace(l, std::regex("<sup>"), "^");
+            l = std::regex_replace(l, std::regex("</?[a-z]+>"), "");
+            l = std::regex_replace(l, std::regex("&amp;"), "&");
+            l = std::regex_replace(l, std::regex("&lt;"), "<");
+            l = std::regex_replace(l, std::regex("&gt;"), ">");
+            text += l + "\n";
+        }
+        const Reading r = check_report(text, problem.dimension, false, 4);
+        EXPECT_GE(r.checked, 8) << text;
+        EXPECT_TRUE(r.wrong.empty()) << joined(r.wrong);
+    }
 }
 
 // Noise of an exact event is 0 for students; a small value that is the whole vector is not.
