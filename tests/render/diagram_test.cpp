@@ -445,11 +445,8 @@ std::vector<double> cell_numbers(const std::string& cell) {
     return out;
 }
 
-// The data table against the physics of the frame: v, then p = m v, E_k = m v.v / 2 + I w^2 / 2
-// (a disc: I = m r^2 / 2; a rectangle: m (w^2 + h^2) / 12), and the totals, to the decimals
-// shown.
-TEST_F(RenderTest, TheTablesNumbersAreTheFramesMomentumAndEnergy) {
-    const char* text = R"(
+// A disc and a box, both moving and spinning: the table's and the overlays' tests.
+const char* kDiscAndBox = R"(
 [scene]
 dimension = 2
 duration = 1.0
@@ -470,7 +467,12 @@ position = [1.0, 0.0]
 v = [-1.0, 0.25]
 w = -1.0
 )";
-    const Scene scene = parse_scene_text(text, "table.toml");
+
+// The data table against the physics of the frame: v, then p = m v, E_k = m v.v / 2 + I w^2 / 2
+// (a disc: I = m r^2 / 2; a rectangle: m (w^2 + h^2) / 12), and the totals, to the decimals
+// shown.
+TEST_F(RenderTest, TheTablesNumbersAreTheFramesMomentumAndEnergy) {
+    const Scene scene = parse_scene_text(kDiscAndBox, "table.toml");
     ImGuiLayer imgui(context_->gl(), 640, 480, FontSizes::for_height(480));
     DataTable table(scene, Style::for_height(480));
     std::vector<Body2> bodies;
@@ -523,26 +525,7 @@ w = -1.0
 // the decimals shown, in a box holding ink; the formula's lines are the text asked for, the
 // last in the impulse's red; each plot's dot is in its series' colour where the list puts it.
 TEST_F(RenderTest, TheOverlaysListWhatTheyDraw) {
-    const Scene scene = parse_scene_text(R"([scene]
-dimension = 2
-duration = 1.0
-[[body]]
-name = "disc"
-shape = "disc"
-radius = 0.5
-mass = 2.0
-position = [-1.0, 0.0]
-v = [1.5, -0.5]
-w = 2.0
-[[body]]
-name = "box"
-shape = "rectangle"
-size = [0.6, 0.4]
-mass = 3.0
-position = [1.0, 0.0]
-v = [-1.0, 0.25]
-w = -1.0
-)", "overlays.toml");
+    const Scene scene = parse_scene_text(kDiscAndBox, "overlays.toml");
     RenderSettings s = small(960, 540);
     s.table = true;
     s.plots = true;
