@@ -76,6 +76,11 @@ Mat2 collision_matrix(const ImpactBody2& a, const ImpactBody2& b);
 void apply_impulse(const ImpactBody3& a, const ImpactBody3& b, Response3* r);
 void apply_impulse(const ImpactBody2& a, const ImpactBody2& b, Response2* r);
 
+// The answer to a separating or resting contact (un >= 0): no impulse, every velocity as it
+// was, `separating` set. Every model returns it there.
+Response3 unchanged(const ImpactBody3& a, const ImpactBody3& b);
+Response2 unchanged(const ImpactBody2& a, const ImpactBody2& b);
+
 // ---- The models ----
 
 // Frictionless, Newton restitution (the page's general case, with its sign errors corrected):

@@ -28,7 +28,7 @@ void apply_impulse(const ImpactBody2& a, const ImpactBody2& b, Response2* r) {
     r->wb = b.w + b.inv_I * (cross(b.r, r->P) + r->couple);
 }
 
-static Response2 unchanged(const ImpactBody2& a, const ImpactBody2& b) {
+Response2 unchanged(const ImpactBody2& a, const ImpactBody2& b) {
     Response2 r;
     r.separating = true;
     r.va = a.v;

@@ -27,7 +27,7 @@ void apply_impulse(const ImpactBody3& a, const ImpactBody3& b, Response3* r) {
 }
 
 // No impulse: the bodies keep their velocities.
-static Response3 unchanged(const ImpactBody3& a, const ImpactBody3& b) {
+Response3 unchanged(const ImpactBody3& a, const ImpactBody3& b) {
     Response3 r;
     r.separating = true;
     r.va = a.v;

@@ -395,17 +395,6 @@ Impact<D> integrate(const Eigen::Matrix<double, D, D>& R, const Eigen::Matrix<do
     return s;
 }
 
-template <class Response, class Body>
-Response separating(const Body& a, const Body& b) {
-    Response r;
-    r.separating = true;
-    r.va = a.v;
-    r.wa = a.w;
-    r.vb = b.v;
-    r.wb = b.w;
-    return r;
-}
-
 }  // namespace
 
 Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu,
@@ -413,7 +402,7 @@ Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, doubl
     const Vec2 u = relative_velocity(a, b);
     if (!(u.dot(n) < 0.0)) {
         if (detail) *detail = RouthDetail();
-        return separating<Response2>(a, b);
+        return unchanged(a, b);
     }
     Mat2 R;
     R.col(0) = n;
@@ -431,7 +420,7 @@ Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, doubl
     const Vec3 u = relative_velocity(a, b);
     if (!(u.dot(n) < 0.0)) {
         if (detail) *detail = RouthDetail();
-        return separating<Response3>(a, b);
+        return unchanged(a, b);
     }
     Mat3 R;
     R.col(0) = n;
