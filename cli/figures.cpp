@@ -63,8 +63,10 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     const int height = settings.height;
     const bool three_d = settings.view == render::ViewKind::perspective;
     Figure out;
+    out.points = points_of(view);
     // The figure: three panels framed on these moments, without the table.
     render::RenderSettings panel = settings;
+    panel.points = out.points;
     panel.header = false;
     panel.table = false;
     panel.plots = false;
@@ -81,7 +83,7 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     if (!three_d) {
         render::DiagramView probe(scene, render::Style::for_height(height));
         probe.frame_only(panel.frame_bodies);
-        probe.frame_points(points_of(view));
+        probe.frame_points(out.points);
         probe.fit(three, moments.states[1].impacts, ImVec4(0, 0, 1000, 1000));
         const Vec2 size = probe.box_hi() - probe.box_lo();
         if (size.x() > 0 && size.y() > 0) aspect = std::clamp(size.x() / size.y(), 0.8, 3.0);
@@ -94,10 +96,8 @@ Figure collision_figure(render::GlContext& context, const Scene& scene, const Sc
     const double width = out.stacked ? kColumnWidth - 2 * gap : (kWideFigureWidth - 4 * gap) / 3;
     panel.width = static_cast<int>(std::lround(scale * width));
     panel.height = static_cast<int>(std::lround(scale * width / aspect));
-    panel.points = points_of(view);
     render::Renderer panels_renderer(context, scene, panel);
     panels_renderer.prepare(three, moments.states[1].impacts);
-    out.points = points_of(view);
     out.panels = three_panels(panels_renderer, moments, out.points, &out.annotations);
     out.times[0] = moments.before;
     out.times[1] = moments.at;
