@@ -5,13 +5,13 @@
 #include "engine/routh.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
 
 namespace collide {
-
 const char* restitution_law_name(RestitutionLaw law) {
     switch (law) {
         case RestitutionLaw::newton: return "newton";
@@ -65,6 +65,7 @@ struct Impact {
     double W = 0.0;                  // work of the normal impulse so far, integral u_n dP_n
     double Pc = 0.0, Wc = 0.0;       // P_n and W at the end of compression
     bool compressing = true, jammed = false;
+    bool compressed = false;  // compression has ended at least once
     RouthDetail* detail = nullptr;
     Kind kind = Kind::slip;
     double from = 0.0;  // P_n where the current phase began
@@ -85,11 +86,24 @@ struct Impact {
         P += d * h;
     }
 
+    // u_n reaches 0 from below. In 3D the turning slip can make u_n fall again after that
+    // (du_n/dP_n = K_nn - mu K_nt s changes sign with s): the approach resumes, and restitution
+    // with it waits until u_n is back at 0. P_c and W_c are those of the deepest compression,
+    // where W is least (Stronge's maximum compression: W is minus the energy the contact has
+    // absorbed), so an approach that resumes but does not go deeper changes neither.
     void end_compression() {
         compressing = false;
         u[0] = 0.0;  // exactly, rather than to rounding
-        Pc = Pn();
-        Wc = W;
+        if (!compressed || W < Wc) {
+            Pc = Pn();
+            Wc = W;
+        }
+        compressed = true;
+    }
+    // u_n falls back to 0 from above in restitution: the approach resumes.
+    void resume_compression() {
+        compressing = true;
+        u[0] = 0.0;
     }
 
     // Normal impulse still to go in restitution along a straight stretch with du_n/dP_n = a > 0:
@@ -115,13 +129,23 @@ struct Impact {
     }
 
     // Follow the straight stretch d until slip stops (after dP_stop: returns true) or the impact
-    // ends (returns false). Compression ends where u_n = 0: h = -u_n / a, a = (K d)_n.
+    // ends (returns false). Compression ends where u_n = 0: h = -u_n / a, a = (K d)_n; in
+    // restitution with a < 0 the approach resumes where u_n is back at 0: h = u_n / -a.
     bool run_linear(const V& d, double dP_stop) {
         const V Kd = K * d;
         const double a = Kd[0];
         for (;;) {
-            const double h_end = compressing ? (a > 0.0 ? std::max(0.0, -u[0] / a) : kNever)
-                                             : restitution_step(a);
+            double h_end;
+            bool resumes = false;
+            if (compressing) {
+                h_end = a > 0.0 ? std::max(0.0, -u[0] / a) : kNever;
+            } else {
+                h_end = restitution_step(a);
+                if (a < 0.0 && std::max(0.0, u[0] / -a) < h_end) {
+                    h_end = std::max(0.0, u[0] / -a);
+                    resumes = true;
+                }
+            }
             if (dP_stop < h_end) {
                 advance(d, Kd, dP_stop);
                 return true;
@@ -132,8 +156,13 @@ struct Impact {
             }
             advance(d, Kd, h_end);
             dP_stop -= h_end;
-            if (!compressing) return false;
-            end_compression();
+            if (resumes) {
+                resume_compression();
+            } else if (compressing) {
+                end_compression();
+            } else {
+                return false;
+            }
         }
     }
 
@@ -225,126 +254,342 @@ struct Impact {
         return u0.dot(P) + 0.5 * P.dot(K * P);
     }
 
-    // ---- 3D slip: the direction s = u_t/|u_t| turns; integrate y = (u, P, W) over P_n. ----
-    using Y = Eigen::Matrix<double, 2 * D + 1, 1>;
+    // ---- 3D slip: the direction s = u_t/|u_t| turns. ----
+    // With w = u_t (2 components) and q = |w|, the slip obeys dw/dP_n = K_tn - mu K_tt w/q,
+    // whose direction turns ever faster (rate 1/q) as slip stops. Measured in the rescaled
+    // impulse sigma, dP_n = q dsigma, every rate is a polynomial in the state:
+    //   w'   = q K_tn - mu K_tt w     P_n' = q     P_t' = -mu w     u_n' = K_nn q - mu K_nt w
+    // and D = integral of |u_t| dP_n (friction's loss) has D' = q^2 = w.w. The work of the normal
+    // impulse needs no series of its own: with dE = integral of u . dP = energy_change(),
+    //   W = integral of u_n dP_n = dE + mu D   (dE = W + integral of u_t . dP_t, dP_t = -mu s dP_n).
+    // The system is smooth for every sigma (w shrinks at most exponentially, so slip that stops
+    // does so at sigma = infinity), and it is integrated by Taylor series: the coefficients of
+    // each quantity follow from those of lower order (q from q^2 = w.w), so one step of order
+    // kOrder costs a few hundred multiplications and no sine, exponential or division by |w|.
+    static constexpr int kOrder = 20;
+    // Taylor coefficients in sigma, one row per quantity, then W and dE at the step's start.
+    enum Row { kUn, kW1, kW2, kPn, kPt1, kPt2, kLoss, kQ, kRows };
+    struct Series {
+        double c[kRows][kOrder + 1];
+        double W0, dE0;
+        double* operator[](int r) { return c[r]; }
+        const double* operator[](int r) const { return c[r]; }
+    };
+    static constexpr std::array<double, kOrder + 1> kInverse = [] {  // 1 / k
+        std::array<double, kOrder + 1> a{};
+        for (int k = 1; k <= kOrder; ++k) a[k] = 1.0 / k;
+        return a;
+    }();
 
-    Y rate(const Y& y) const {
-        V d = V::Zero();
-        d[0] = 1.0;
-        const V ut_full = y.template head<D>();
-        Eigen::Matrix<double, D - 1, 1> ut = ut_full.template tail<D - 1>();
-        const double len = ut.norm();
-        if (len > 0.0) d.template tail<D - 1>() = -mu * ut / len;
-        Y f;
-        f.template head<D>() = K * d;
-        f.template segment<D>(D) = d;
-        f[2 * D] = y[0];
-        return f;
+    // The Taylor coefficients at the current state, order by order.
+    void taylor(Series& s) const {
+        const double c1 = K(1, 0), c2 = K(2, 0), knn = K(0, 0);
+        const double a11 = K(1, 1), a12 = K(1, 2), a22 = K(2, 2);
+        double* w1 = s[kW1];
+        double* w2 = s[kW2];
+        double* q = s[kQ];
+        s[kUn][0] = u[0], w1[0] = u[1], w2[0] = u[2];
+        s[kPn][0] = P[0], s[kPt1][0] = P[1], s[kPt2][0] = P[2], s[kLoss][0] = 0.0;
+        s.W0 = W, s.dE0 = energy_change();
+        double half_q0 = 0.0;  // 1 / (2 q_0)
+        double s0[2] = {0.0, 0.0};  // w_0 / q_0, the slip direction
+        for (int k = 0; k < kOrder; ++k) {
+            // q^2 = w.w:  2 q_0 q_k = sum_j w_j . w_{k-j} - sum_{j=1}^{k-1} q_j q_{k-j}, each
+            // symmetric sum taken once and doubled. The old terms are summed first, from the
+            // oldest, in two accumulators each, and those with the newest coefficients (w_k,
+            // q_{k-1}) last: only those wait for the previous order.
+            double a0 = 0.0, a1 = 0.0, b0 = 0.0, b1 = 0.0, e0 = 0.0, e1 = 0.0;
+            int j = (k - 1) / 2;  // the largest j with 2 j < k
+            for (; j >= 2; j -= 2) {
+                a0 += w1[j] * w1[k - j];
+                a1 += w1[j - 1] * w1[k - j + 1];
+                b0 += w2[j] * w2[k - j];
+                b1 += w2[j - 1] * w2[k - j + 1];
+                e0 += q[j] * q[k - j];
+                if (j > 2) e1 += q[j - 1] * q[k - j + 1];
+            }
+            if (j == 1) {
+                a1 += w1[1] * w1[k - 1];
+                b1 += w2[1] * w2[k - 1];
+            }
+            if (k > 2) e1 += q[1] * q[k - 1];
+            double mid_w = 0.0, mid_q = 0.0;  // the middle terms (even k), once
+            if (k % 2 == 0) {
+                mid_w = w1[k / 2] * w1[k / 2] + w2[k / 2] * w2[k / 2];
+                if (k > 0) mid_q = q[k / 2] * q[k / 2];
+            }
+            // Everything but the newest term first, so that from w_k to w_{k+1} only
+            //   q_k = old / (2 q_0) + (w_0 / q_0) . w_k,  w_{k+1} = (q_k K_tn - mu K_tt w_k) / (k+1)
+            // remain (a few multiplications deep).
+            const double old_p = k == 0 ? mid_w : 2.0 * ((a0 + a1) + (b0 + b1)) + mid_w;
+            const double inv = kInverse[k + 1];
+            const double m1 = -mu * inv * (a11 * w1[k] + a12 * w2[k]);
+            const double m2 = -mu * inv * (a12 * w1[k] + a22 * w2[k]);
+            double pk;
+            if (k == 0) {
+                pk = old_p;
+                q[0] = std::sqrt(pk);
+                half_q0 = 0.5 / q[0];
+                s0[0] = w1[0] / q[0];
+                s0[1] = w2[0] / q[0];
+            } else {
+                const double old_q = (old_p - (2.0 * (e0 + e1) + mid_q)) * half_q0;
+                q[k] = old_q + (s0[0] * w1[k] + s0[1] * w2[k]);
+                pk = old_p + 2.0 * (w1[0] * w1[k] + w2[0] * w2[k]);
+            }
+            const double qk = q[k];
+            w1[k + 1] = c1 * inv * qk + m1;
+            w2[k + 1] = c2 * inv * qk + m2;
+            s[kPn][k + 1] = qk * inv;
+            s[kPt1][k + 1] = -mu * w1[k] * inv;
+            s[kPt2][k + 1] = -mu * w2[k] * inv;
+            s[kUn][k + 1] = (knn * qk - mu * (c1 * w1[k] + c2 * w2[k])) * inv;
+            s[kLoss][k + 1] = pk * inv;
+        }
+        q[kOrder] = 0.0;  // not needed beyond kOrder - 1
     }
 
-    // The event that ends the current stage, g(y) reaching 0 from below, with its predicted
-    // distance from the rates (u_n' = a, W' = u_n, W'' = a):
+    // The state (u, P, W) at sigma = t of the step: seven polynomials evaluated side by side.
+    void load(const Series& s, double t) {
+        double v[kQ];
+        for (int i = 0; i < kQ; ++i) v[i] = s[i][kOrder];
+        for (int k = kOrder - 1; k >= 0; --k)
+            for (int i = 0; i < kQ; ++i) v[i] = v[i] * t + s[i][k];
+        u << v[kUn], v[kW1], v[kW2];
+        P << v[kPn], v[kPt1], v[kPt2];
+        W = s.W0 + (energy_change() - s.dE0) + mu * v[kLoss];
+    }
+
+    // The event that ends the current stage, g reaching 0 from below:
     //   compression: g = u_n;  newton: g = u_n + e un0;  poisson: g = P_n - (1 + e) P_c;
     //   stronge: g = W - (1 - e^2) W_c.
-    double event_g(const Y& y) const {
-        if (compressing) return y[0];
+    // The first three are polynomials in sigma (returned in g); Stronge's is found on the state
+    // itself (restitution_end()), and this returns null.
+    const double* event_series(const Series& s, double* g) const {
+        if (!compressing && law == RestitutionLaw::stronge) return nullptr;
+        const Row row = compressing || law == RestitutionLaw::newton ? kUn : kPn;
+        std::copy(s[row], s[row] + kOrder + 1, g);
+        if (!compressing) g[0] -= restitution_target();
+        return g;
+    }
+    // The value of the stage's quantity that ends restitution (see event_series()).
+    double restitution_target() const {
         switch (law) {
-            case RestitutionLaw::newton: return y[0] + e * un0;
-            case RestitutionLaw::poisson: return y[D] - (1.0 + e) * Pc;
-            case RestitutionLaw::stronge: return y[2 * D] - (1.0 - e * e) * Wc;
+            case RestitutionLaw::newton: return -e * un0;
+            case RestitutionLaw::poisson: return (1.0 + e) * Pc;
+            case RestitutionLaw::stronge: return (1.0 - e * e) * Wc;
         }
         return 0.0;
     }
-    double event_h(double a) const {
-        if (compressing) return a > 0.0 ? std::max(0.0, -u[0] / a) : kNever;
-        return restitution_step(a);
+
+    static double horner(const double* x, double t) {
+        double v = x[kOrder];
+        for (int k = kOrder - 1; k >= 0; --k) v = v * t + x[k];
+        return v;
+    }
+    // g(t) and g'(t) of a polynomial, side by side.
+    static double poly(const double* g, double t, double* slope) {
+        double v = g[kOrder], d = 0.0;
+        for (int k = kOrder - 1; k >= 0; --k) {
+            d = d * t + v;
+            v = v * t + g[k];
+        }
+        *slope = d;
+        return v;
     }
 
-    void load(const Y& y) {
-        u = y.template head<D>();
-        P = y.template segment<D>(D);
-        W = y[2 * D];
-    }
-    Y store() const {
-        Y y;
-        y << u, P, W;
-        return y;
+    // The first root in (0, h] of the polynomial g (g(0) < 0), or -1 if g stays negative.
+    // g <= g_0 + sum of its positive terms at h on [0, h]: when that bound is negative there is
+    // no root; otherwise g is sampled at 8 points (evaluated side by side) and the first bracket
+    // refined by Newton's method with bisection as a guard.
+    static double first_root(const double* g, double h) {
+        double bound = g[0], hk = 1.0;
+        for (int k = 1; k <= kOrder; ++k) {
+            hk *= h;
+            if (g[k] > 0.0) bound += g[k] * hk;
+        }
+        if (bound < 0.0) return -1.0;
+        constexpr int kSamples = 8;
+        double v[kSamples];
+        for (int i = 0; i < kSamples; ++i) v[i] = g[kOrder];
+        for (int k = kOrder - 1; k >= 0; --k)
+            for (int i = 0; i < kSamples; ++i) v[i] = v[i] * (h * (i + 1) / kSamples) + g[k];
+        double lo = 0.0, hi = -1.0, slope;
+        for (int i = 0; i < kSamples; ++i) {
+            if (v[i] >= 0.0) {
+                hi = h * (i + 1) / kSamples;
+                break;
+            }
+            lo = h * (i + 1) / kSamples;
+        }
+        if (hi < 0.0) return -1.0;
+        double t = 0.5 * (lo + hi);
+        for (int it = 0; it < 100; ++it) {
+            const double gt = poly(g, t, &slope);
+            if (gt >= 0.0) hi = t; else lo = t;
+            double next = slope > 0.0 ? t - gt / slope : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            const bool done = std::abs(next - t) <= 1e-15 * hi || hi - lo <= 1e-15 * hi;
+            t = next;
+            if (done) break;
+        }
+        return t;
     }
 
-    // Integrate the turning slip (Dormand-Prince 5(4), local error per step <= kTol relative to
-    // the scales |u0|, P_0 = -un0/K_nn and |u0| P_0; the planar test holds the result to 1e-9 of
-    // the exact 2D answer). Slip stop is an event with a kink (|u_t| reaches 0 at a finite rate
-    // r = d|u_t|/dP_n < 0): steps are kept to 0.7 |u_t|/(-r) so that none crosses it, and once
-    // |u_t| < 1e-10 |u0| the last stretch |u_t|/(-r) is taken straight (its error is |u_t| times
-    // the turn of s over it). Stage ends (u_n = 0, the law's end) are landed on by steps of the
-    // predicted length, the last one (< 1e-7 P_0) straight. Returns true when slip stopped.
+    // Stronge's end of restitution within the step, or -1: W - (1 - e^2) W_c, rising while
+    // u_n > 0 (dW/dsigma = u_n q), is checked at the step's end and, if reached, found by
+    // Newton's method on sigma with bisection as a guard.
+    double restitution_end(const Series& s, double h) {
+        const double target = restitution_target();
+        load(s, h);
+        if (W < target) return -1.0;
+        double lo = 0.0, hi = h, t = h;
+        for (int it = 0; it < 100; ++it) {
+            load(s, t);
+            const double gt = W - target, rate = u[0] * horner(s[kQ], t);
+            if (gt >= 0.0) hi = t; else lo = t;
+            double next = rate > 0.0 ? t - gt / rate : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            const bool done = std::abs(next - t) <= 1e-15 * hi || hi - lo <= 1e-15 * hi;
+            t = next;
+            if (done) break;
+        }
+        return t;
+    }
+
+    // Slip close to its stop, along a direction near the ray s* that attracts it, finished in
+    // closed form. With s = (cos th, sin th), s_perp = (-sin th, cos th), f = K_tn - mu K_tt s:
+    //   d ln|w|/dsigma = F(th) = s.f,   d th/dsigma = G(th) = s_perp.f,
+    //   F' = G - mu s.K_tt s_perp,      G' = -F - mu s_perp.K_tt s_perp   (d/dth).
+    // s* has G = 0; Newton's step from th puts it at d = th - th* = G/G'. Slip stops along s* if
+    // F* = F - F' d < 0 and s* attracts (G' < 0). Linearised about s* (a = -F*, g = -G'):
+    //   d(sigma) = d e^(-g sigma),  |w| = r e^(-a sigma) (1 + (F' d/G') (e^(-g sigma) - 1)),
+    // so over sigma = 0..infinity
+    //   dP_n = r (1/a + k (1/(a+g) - 1/a)),      k = F' d / G'
+    //   dP_t = -mu (dP_n s* + s*_perp r d / (a+g))          (w = |w| (s* + d s*_perp))
+    //   dD   = r^2 (1/(2a) + 2k (1/(2a+g) - 1/(2a)))        (D = integral of |w| dP_n)
+    // with errors of order dP_n d^2, and the work W = dE + mu D (dE = integral of u . dP:
+    // energy_change()). Taken only where the turn still to come is small against the curvature
+    // of F and G (|d| (1 + mu tr K_tt / g) <= 0.01), dP_n d^2 is under the impulse tolerance, and
+    // the stage does not end on the way (its quantity, nearly linear there, still < 0). Against
+    // the integration carried on to |u_t| = 1e-10 |u0|, over 6 10^4 random impacts, it differs by
+    // at most 1e-12 of the impulse.
+    bool close_slip(double tol_P) {
+        const Eigen::Vector2d w = u.template tail<2>();
+        const double r = w.norm();
+        const Eigen::Vector2d s = w / r, sp(-s[1], s[0]);
+        const Eigen::Vector2d c = K.template block<2, 1>(1, 0);
+        const Eigen::Matrix2d A = K.template block<2, 2>(1, 1);
+        const Eigen::Vector2d f = c - mu * (A * s);
+        const double F = s.dot(f), G = sp.dot(f);
+        const double Fp = G - mu * s.dot(A * sp), Gp = -F - mu * sp.dot(A * sp);
+        if (!(Gp < 0.0)) return false;
+        const double d = G / Gp, a = -(F - Fp * d), g = -Gp;
+        const double kappa = mu * A.trace();
+        if (!(a > 0.0) || std::abs(d) * (1.0 + kappa / g) > 1e-2) return false;
+        const double k = Fp * d / Gp;
+        const double dPn = r * (1.0 / a + k * (1.0 / (a + g) - 1.0 / a));
+        if (dPn * d * d > tol_P) return false;
+        const Eigen::Vector2d ss = std::cos(d) * s - std::sin(d) * sp, ssp(-ss[1], ss[0]);
+        V dP;
+        dP << dPn, -mu * (dPn * ss + ssp * (r * d / (a + g)));
+        const double dD =
+            r * r * (0.5 / a + 2.0 * k * (1.0 / (2.0 * a + g) - 0.5 / a));
+        const V u1 = u + K * dP;
+        const V P1 = P + dP;
+        const double E0 = energy_change();
+        const V P0 = P;
+        P = P1;
+        const double W1 = W + (energy_change() - E0) + mu * dD;
+        P = P0;
+        const double now = compressing ? u1[0]
+                           : law == RestitutionLaw::poisson ? P1[0]
+                           : law == RestitutionLaw::stronge ? W1
+                                                            : u1[0];
+        if (now >= (compressing ? 0.0 : restitution_target())) return false;
+        u = u1;
+        u.template tail<2>().setZero();
+        P = P1;
+        W = W1;
+        return true;
+    }
+
+    // Integrate the turning slip until it stops (returns true) or the impact ends. Each step's
+    // length h makes the last two terms of every series at most kTol = 1e-11 of its scale (|u0|
+    // for velocities, P_0 = -un0/K_nn for impulses, |u0| P_0 for the work), the terms' decay then
+    // bounding the rest (Jorba and Zou's rule). A stage end inside a step is found on the step's
+    // polynomial (bounded, sampled at 8 points, then Newton's method with bisection as a guard).
+    // Slip near its stop is finished by close_slip(); slip below kStopped |u0| counts as stopped
+    // (straight to the stop if shrinking, its error |u_t| times the turn of s still to come;
+    // otherwise handed to run_no_slip(), as slip that passes that close to 0 and turns away is
+    // the same within |u_t|). Accuracy: the planar test holds the result to 1e-9 of the exact
+    // 2D answer; against the same integration with kTol = 1e-13 and no closed-form finish, over
+    // 3 10^4 random impacts (mu up to 1.5, every law) the impulse differs by at most 3e-10 of it.
     bool run_slip_3d() {
         constexpr double kTol = 1e-11;
-        constexpr int kMaxSteps = 4000;  // beyond: jammed (see routh())
+        constexpr double kStopped = 1e-10;
+        constexpr int kMaxSteps = 500;  // beyond: jammed (see routh())
         const double uscale = u.norm(), Pscale = -un0 / K(0, 0);
-        Y scale;
-        scale.template head<D>().setConstant(uscale);
-        scale.template segment<D>(D).setConstant(Pscale);
-        scale[2 * D] = uscale * Pscale;
-        Y y = store();
-        double h = 0.05 * Pscale;
+        const double tol[3] = {kTol * uscale, kTol * Pscale, kTol * uscale * Pscale};
+        Series s;
+        double g[kOrder + 1];
         for (int step = 0; step < kMaxSteps; ++step) {
-            const Y k1 = rate(y);
-            const Eigen::Matrix<double, D - 1, 1> ut = y.template segment<D - 1>(1);
-            const double len = ut.norm();
-            const double r = len > 0.0 ? ut.dot(k1.template segment<D - 1>(1)) / len : -1.0;
-            const double h_stop = r < 0.0 ? len / -r : kNever;
-            load(y);
-            const double h_event = event_h(k1[0]);
-            if (h_stop <= h_event && len <= 1e-10 * uscale) {
-                y += h_stop * k1;  // straight to the stop
-                load(y);
-                return true;
+            if (close_slip(tol[1])) return true;
+            const double len = u.template tail<2>().norm();
+            if (len <= kStopped * uscale) {
+                const Eigen::Vector2d dir = u.template tail<2>() / len;
+                V d;
+                d << 1.0, -mu * dir;
+                const V Kd = K * d;
+                const double rate = dir.dot(Kd.template tail<2>());  // d|u_t|/dP_n along d
+                return rate < 0.0 ? run_linear(d, len / -rate) : true;
             }
-            if (h_event <= h_stop && h_event <= 1e-7 * Pscale) {
-                y += h_event * k1;  // straight onto the stage's end
-                load(y);
-                if (!compressing) return false;
-                end_compression();
-                y = store();
+            taylor(s);
+            // Step length (Jorba and Zou): the last term of every group at most its tolerance,
+            // h = (tol / |term_N|)^(1/N), then shortened if the term before it is still larger
+            // at h (a last coefficient small by chance).
+            const auto worst = [&](int k) {
+                const auto sq = [&](Row r) { return s[r][k] * s[r][k]; };
+                return std::max({(sq(kW1) + sq(kW2) + sq(kUn)) / (tol[0] * tol[0]),
+                                 (sq(kPn) + sq(kPt1) + sq(kPt2)) / (tol[1] * tol[1]),
+                                 mu * mu * sq(kLoss) / (tol[2] * tol[2])});
+            };
+            const double last = worst(kOrder), before = worst(kOrder - 1);
+            double h = last > 0.0 ? std::pow(last, -0.5 / kOrder) : kNever;
+            if (h < kNever) {
+                double hk = 1.0;  // h^(N-1), squared: against the squared ratio
+                for (int k = 0; k < kOrder - 1; ++k) hk *= h * h;
+                if (before * hk > 1.0) h = std::pow(before, -0.5 / (kOrder - 1));
+            } else if (before > 0.0) {
+                h = std::pow(before, -0.5 / (kOrder - 1));
+            }
+            if (!(h < kNever)) {
+                jammed = true;
+                return false;
+            }
+            const double t = event_series(s, g) ? first_root(g, h) : restitution_end(s, h);
+            if (!compressing) {  // the approach resuming: -u_n reaching 0 from below
+                for (int k = 0; k <= kOrder; ++k) g[k] = -s[kUn][k];
+                const double t_back = first_root(g, h);
+                if (t_back >= 0.0 && (t < 0.0 || t_back < t)) {
+                    load(s, t_back);
+                    resume_compression();
+                    continue;
+                }
+            }
+            if (t < 0.0) {
+                load(s, h);
                 continue;
             }
-            double hh = std::min({h, h_event, 0.7 * h_stop});
-            // Dormand-Prince 5(4) tableau.
-            const Y k2 = rate(y + hh * (1.0 / 5) * k1);
-            const Y k3 = rate(y + hh * (3.0 / 40 * k1 + 9.0 / 40 * k2));
-            const Y k4 = rate(y + hh * (44.0 / 45 * k1 - 56.0 / 15 * k2 + 32.0 / 9 * k3));
-            const Y k5 = rate(y + hh * (19372.0 / 6561 * k1 - 25360.0 / 2187 * k2 +
-                                        64448.0 / 6561 * k3 - 212.0 / 729 * k4));
-            const Y k6 = rate(y + hh * (9017.0 / 3168 * k1 - 355.0 / 33 * k2 +
-                                        46732.0 / 5247 * k3 + 49.0 / 176 * k4 -
-                                        5103.0 / 18656 * k5));
-            const Y y5 = y + hh * (35.0 / 384 * k1 + 500.0 / 1113 * k3 + 125.0 / 192 * k4 -
-                                   2187.0 / 6784 * k5 + 11.0 / 84 * k6);
-            const Y k7 = rate(y5);
-            const Y err = hh * (71.0 / 57600 * k1 - 71.0 / 16695 * k3 + 71.0 / 1920 * k4 -
-                                17253.0 / 339200 * k5 + 22.0 / 525 * k6 - 1.0 / 40 * k7);
-            const double en = (err.cwiseQuotient(scale)).cwiseAbs().maxCoeff() / kTol;
-            const double grow = en > 0.0 ? 0.9 * std::pow(en, -0.2) : 5.0;
-            if (en > 1.0) {
-                h = hh * std::max(0.2, grow);
-                continue;
-            }
-            const Eigen::Matrix<double, D - 1, 1> ut5 = y5.template segment<D - 1>(1);
-            if (ut5.dot(ut) <= 0.0) {  // crossed the stop: shorter step
-                h = 0.5 * hh;
-                continue;
-            }
-            const double g5 = event_g(y5);
-            if (g5 > 0.0) {  // past the stage's end: secant towards it
-                const double g0 = event_g(y);
-                h = hh * std::clamp(-g0 / (g5 - g0), 0.1, 0.9);
-                continue;
-            }
-            y = y5;
-            h = hh * std::min(5.0, grow);
+            load(s, t);
+            if (!compressing) return false;
+            end_compression();
+            // e = 0: restitution has nothing to do.
+            const double now = law == RestitutionLaw::newton    ? u[0]
+                               : law == RestitutionLaw::poisson ? P[0]
+                                                                : W;
+            if (now >= restitution_target()) return false;
         }
-        load(y);
         jammed = true;
         return false;
     }

@@ -8,7 +8,9 @@
 //   stick  (u_t = 0, needing |lambda| <= mu): tangential part lambda, the rate that keeps u_t = 0;
 //   reverse: slip stopped but sticking would need |lambda| > mu: slip restarts, in the
 //            direction the dynamics chooses (2D: the opposite one).
-// Compression ends where u_n = 0 (P_n = P_c); restitution ends by the restitution law:
+// Compression ends where u_n = 0 (P_n = P_c); in 3D the turning slip can make the approach
+// resume (u_n < 0 again), and restitution then waits for u_n = 0 again, P_c and W_c being those
+// of the deepest compression (least W). Restitution ends by the restitution law:
 //   newton:  u_n' = -e un0 (can create energy with friction: Kane's paradox);
 //   poisson: P_n,final = (1 + e) P_c;
 //   stronge: W_r = -e^2 W_c, the works of the normal impulse W = integral of u_n dP_n over
@@ -45,7 +47,7 @@ const char* routh_phase_name(RouthPhase::Kind kind);  // "slip" | "stick" | "rev
 
 struct RouthDetail {
     std::vector<RouthPhase> phases;   // in order; a phase may span compression and restitution
-    double compression_impulse = 0.0;   // P_c, N s: P_n where u_n = 0
+    double compression_impulse = 0.0;   // P_c, N s: P_n where u_n = 0 (at the deepest compression)
     double final_normal_impulse = 0.0;  // P_n at the end, N s
     double compression_work = 0.0;      // J, W_c = integral_0^P_c u_n dP_n (<= 0)
     double restitution_work = 0.0;      // J, W_r = integral_P_c^P_f u_n dP_n (>= 0)
