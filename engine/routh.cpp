@@ -403,12 +403,12 @@ struct Impact {
     // no root; otherwise g is sampled at 8 points (evaluated side by side) and the first bracket
     // refined by Newton's method with bisection as a guard.
     static double first_root(const double* g, double h) {
-        double bound = g[0], hk = 1.0;
-        for (int k = 1; k <= kOrder; ++k) {
-            hk *= h;
-            if (g[k] > 0.0) bound += g[k] * hk;
-        }
-        if (bound < 0.0) return -1.0;
+        // The bound by Horner's rule in h^2, even and odd terms side by side.
+        const double h2 = h * h;
+        double even = 0.0, odd = 0.0;
+        for (int k = kOrder - (kOrder % 2); k >= 2; k -= 2) even = even * h2 + std::max(g[k], 0.0);
+        for (int k = kOrder - 1 + (kOrder % 2); k >= 1; k -= 2) odd = odd * h2 + std::max(g[k], 0.0);
+        if (g[0] + h2 * even + h * odd < 0.0) return -1.0;
         constexpr int kSamples = 8;
         double v[kSamples];
         for (int i = 0; i < kSamples; ++i) v[i] = g[kOrder];
@@ -557,9 +557,9 @@ struct Impact {
             const double last = worst(kOrder), before = worst(kOrder - 1);
             double h = last > 0.0 ? std::pow(last, -0.5 / kOrder) : kNever;
             if (h < kNever) {
-                double hk = 1.0;  // h^(N-1), squared: against the squared ratio
-                for (int k = 0; k < kOrder - 1; ++k) hk *= h * h;
-                if (before * hk > 1.0) h = std::pow(before, -0.5 / (kOrder - 1));
+                // The term before, squared and over its tolerance, at h: before h^(2N-2), and
+                // h^(2N) = 1 / last.
+                if (before > last * h * h) h = std::pow(before, -0.5 / (kOrder - 1));
             } else if (before > 0.0) {
                 h = std::pow(before, -0.5 / (kOrder - 1));
             }
