@@ -12,7 +12,7 @@
 
 #include <Eigen/Eigenvalues>
 
-#include "engine/page.h"
+#include "engine/respond.h"
 #include "engine/rotation.h"
 
 namespace collide {
@@ -146,23 +146,6 @@ void place_on(const Body3& c, const Pose3& rel, Body3* b) {
     b->position = pose_of(c).apply(rel.x);
     b->w = c.w;
     b->v = c.v + spin_cross(c.w, b->position - c.position);
-}
-
-// The page's listing as written (engine/page.h, errata 5-8) as a response: the velocities it
-// computes, and as P the impulse b actually receives, mb (vbf - vbi) (erratum 7: not the
-// opposite of a's). 3D only: the listing is 3D code (the World constructor checks).
-Response3 listing_response(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
-    const page::Listing3 L = page::listing(a, b, n, e);
-    Response3 r;
-    r.va = L.vaf;
-    r.vb = L.vbf;
-    r.wa = L.waf;
-    r.wb = L.wbf;
-    r.P = b.is_static() ? Vec3::Zero() : Vec3((L.vbf - b.v) / b.inv_m);
-    return r;
-}
-Response2 listing_response(const ImpactBody2&, const ImpactBody2&, const Vec2&, double) {
-    throw std::logic_error("the page's listing runs in 3D worlds only");
 }
 
 // Unit tangents spanning the contact plane: 2D one, 3D two.
@@ -844,17 +827,7 @@ bool World<D>::resolve_point(Contact* c, int k) {
     if (round_a) ia.r = ia.r.dot(n) * n;
     if (round_b) ib.r = ib.r.dot(n) * n;
     const double e = scene_.pair_restitution(c->a, c->b);
-    auto r = frictionless(ia, ib, n, e);
-    switch (scene_.model) {
-        case Model::coulomb: r = coulomb(ia, ib, n, e, scene_.pair_friction(c->a, c->b)); break;
-        case Model::matrix: r = matrix(ia, ib, n, e); break;
-        case Model::stick: r = stick(ia, ib, n); break;
-        case Model::page_listing: r = listing_response(ia, ib, n, e); break;
-        case Model::routh:
-            r = routh(ia, ib, n, e, scene_.pair_friction(c->a, c->b), scene_.restitution_law);
-            break;
-        default: break;
-    }
+    const auto r = respond(scene_.model, ia, ib, n, e, scene_.pair_friction(c->a, c->b), scene_.restitution_law);
     if (r.separating) return false;
     if (scene_.model == Model::page_listing)  // one answer per pair: its J may push them together
         passed_.insert(static_cast<std::uint64_t>(c->a) << 32 | c->b);

@@ -5,6 +5,7 @@
 #include <type_traits>
 
 #include "engine/diagnostics.h"
+#include "engine/respond.h"
 
 namespace collide {
 
@@ -75,16 +76,9 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
     }
     s->listing = page::listing(as_3d(a), as_3d(b), embed(n), e);
 
-    decltype(frictionless(a, b, n, e)) r;
-    switch (P.model) {
-        case Model::frictionless: r = frictionless(a, b, n, e); break;
-        case Model::coulomb: r = coulomb(a, b, n, e, mu); break;
-        case Model::matrix: r = matrix(a, b, n, e); break;
-        case Model::stick: r = stick(a, b, n); break;
-        case Model::page_listing: break;  // filled from s->listing by solve()
-        case Model::routh: r = routh(a, b, n, e, mu, P.restitution_law, &s->routh); break;
-    }
+    // The page's listing is filled from s->listing by solve(): its P is the page's J.
     if (P.model != Model::page_listing) {
+        const auto r = respond(P.model, a, b, n, e, mu, P.restitution_law, &s->routh);
         s->separating = r.separating;
         s->sliding = r.sliding;
         if constexpr (!std::is_same_v<decltype(r), Response1>) s->painleve = r.painleve;
