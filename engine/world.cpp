@@ -10,10 +10,9 @@
 #include <unordered_set>
 #include <utility>
 
-#include <Eigen/Eigenvalues>
-
 #include "engine/respond.h"
 #include "engine/rotation.h"
+#include "engine/toi.h"
 
 namespace collide {
 
@@ -33,19 +32,6 @@ constexpr double kPolishGrowth = 1e3;  // largest correction, in units of the pr
 
 // ---- What differs between 2D and 3D, as overloads ----
 
-template <class T> T zero();
-template <> double zero<double>() { return 0.0; }
-template <> Vec2 zero<Vec2>() { return Vec2::Zero(); }
-template <> Vec3 zero<Vec3>() { return Vec3::Zero(); }
-
-double magnitude(double w) { return std::abs(w); }
-double magnitude(const Vec3& w) { return w.norm(); }
-
-Vec2 spin_cross(double w, const Vec2& r) { return cross(w, r); }  // w x r
-Vec3 spin_cross(const Vec3& w, const Vec3& r) { return w.cross(r); }
-double lever(const Vec2& r, const Vec2& P) { return cross(r, P); }  // r x P
-Vec3 lever(const Vec3& r, const Vec3& P) { return r.cross(P); }
-
 const Body2& scene_body(const SceneBody& b, const Body2*) { return b.body2; }
 const Body3& scene_body(const SceneBody& b, const Body3*) { return b.body3; }
 const Shape2& scene_shape(const SceneBody& b, const Shape2*) { return b.shape2; }
@@ -55,9 +41,6 @@ bool is_round(const Shape2& s) { return s.kind == Shape2::Kind::disc; }
 bool is_round(const Shape3& s) { return s.kind == Shape3::Kind::sphere; }
 bool is_plane(const Shape2& s) { return s.kind == Shape2::Kind::half_plane; }
 bool is_plane(const Shape3& s) { return s.kind == Shape3::Kind::half_space; }
-
-Pose2 pose_of(const Body2& b) { return Pose2{b.position, b.angle}; }
-Pose3 pose_of(const Body3& b) { return Pose3{b.position, b.orientation}; }
 
 // The type of the inverse inertia in the world frame, as the dimension needs it.
 template <class Body>
@@ -84,23 +67,6 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
         if (angle > 0.0) b->orientation = (Quat(Eigen::AngleAxisd(angle, phi / angle)) * b->orientation).normalized();
     }
     b->w += alpha * dt;
-}
-
-// Largest spin the body can reach while free (rad/s): 2D w is constant; in 3D the rotational
-// energy E = w.I w/2 is, so |w| <= sqrt(2 E / I_min).
-double spin_bound(const Body2& b, double inv_min_moment) {
-    (void)inv_min_moment;
-    return std::abs(b.w);
-}
-double spin_bound(const Body3& b, double inv_min_moment) {
-    const double twice_energy = b.w.dot(b.inertia_world() * b.w);
-    return std::max(b.w.norm(), std::sqrt(std::max(0.0, twice_energy * inv_min_moment)));
-}
-double inverse_smallest_moment(const Body2& b) { return b.is_static ? 0.0 : 1.0 / b.inertia; }
-double inverse_smallest_moment(const Body3& b) {
-    if (b.is_static) return 0.0;
-    const double least = Eigen::SelfAdjointEigenSolver<Mat3>(b.inertia).eigenvalues().minCoeff();
-    return least > 0.0 ? 1.0 / least : 0.0;
 }
 
 // Stuck bodies (world.h): two bodies as one rigid body, combined_body's parallel-axis sums with
@@ -631,127 +597,34 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
         if (slow && !same_island(a, b)) return t;
     }
     if (closed) {
-        double s = kNever;
-        if (plane_[p]) {
-            // gap(s) = n.x(s) - offset - r: a quadratic in s.
-            const Vec n = shapes_[p].normal;
-            const double bb = n.dot(Q.v), aa = 0.5 * n.dot(track_[q].a);
-            // Touching and parting: the gap returns to zero at the larger root (s = -b/a).
-            s = touching ? (aa < 0.0 && bb > 0.0 ? -bb / aa : kNever)
-                         : first_root(aa, bb, std::max(gap, 0.0));
-        } else {
-            // |d + u s| = rp + rq with d, u the relative position and velocity.
-            const Vec d = Q.position - P.position, u = Q.v - P.v;
-            const double R = shapes_[p].radius + shapes_[q].radius;
-            const double uu = u.squaredNorm(), du = d.dot(u), c = d.squaredNorm() - R * R;
-            if (du < 0.0 && uu > 0.0 && !touching) {
-                const double disc = du * du - uu * c;
-                if (disc >= 0.0) s = std::max(0.0, c / (-du + std::sqrt(disc)));
-            }
-        }
+        const double s = plane_[p] ? plane_contact_time(shapes_[p].normal, Q.v, track_[q].a, gap, touching)
+                                   : round_contact_time(Vec(Q.position - P.position), Vec(Q.v - P.v),
+                                                        shapes_[p].radius + shapes_[q].radius, touching);
         return t + s <= t1 ? t + s : kNever;
     }
-    // Conservative advancement (engine/toi2d.h): copies of both bodies moved forward.
-    Mover ma = mover(a), mb = mover(b);
-    const Body& ca = ma.body;
-    const Body& cb = mb.body;
-    const double horizon = t1 - t;
+    // Conservative advancement (engine/toi.h): copies of both bodies moved forward.
+    Approach<Vec> c;
+    c.t = t;
+    c.horizon = t1 - t;
+    c.touch = kTouch;
+    c.v_rest = v_rest;
+    c.radius_a = radius_[a];
+    c.radius_b = radius_[b];
+    c.touching = touching;
+    c.acc_a = ka.a;
+    c.acc_b = kb.a;
     // How fast a body's surface can turn towards the other: spin times reach; a welded body's
     // centre also circles its compound's, so its velocity changes by up to 2 |w| |d|.
     auto turning = [&](std::size_t k, const Track& tk) {
         if (weld_of_[k] < 0)
-            return round_[k] ? 0.0 : (spin_bound(bodies_[k], inv_min_moment_[k]) + magnitude(tk.alpha) * horizon) * radius_[k];
+            return round_[k] ? 0.0 : (spin_bound(bodies_[k], inv_min_moment_[k]) + magnitude(tk.alpha) * c.horizon) * radius_[k];
         const Weld& w = welds_[weld_of_[k]];
         const auto at = std::find(w.members.begin(), w.members.end(), k) - w.members.begin();
         return spin_bound(w.body, w.inv_min_moment) * (2.0 * w.rel[at].x.norm() + radius_[k]);
     };
-    const double turn_rate = turning(a, ka) + turning(b, kb);
-    // Touching already (resting on a corner, or parting): watch every point of the pair, not
-    // only the nearest, so that a box rocking onto its other corner is caught when it lands.
-    const double wide = 2.0 * std::max(radius_[a], radius_[b]) + kTouch;
-    const double margin = touching ? wide : kTouch;
-    double s = 0.0;
-    // The gap that matters: the nearest point not already resting in contact; `lands` and
-    // `leave` report touching points that approach or lift off.
-    struct Look {
-        double gap = kNever, leave = kNever, separation = 0.0;
-        bool lands = false;
-        Vec normal;
-    };
-    auto look = [&](const Body& pa, const Body& pb, bool start) {
-        Manifold mm = collide(shapes_[a], pose_of(pa), shapes_[b], pose_of(pb), margin);
-        // Box against box, the separating-axis test prefers a face to an edge pair that is
-        // better by less than its tolerance (1e-6 of the size, far above kTouch): then the
-        // separation can be within kTouch while every clipped point of the face is farther.
-        // The points decide, as they do for the contact manifold of resolve(): their depths
-        // (from the wide manifold: same points, a larger margin) are the gap.
-        if (!touching && mm.count == 0 && mm.separation <= kTouch)
-            mm = collide(shapes_[a], pose_of(pa), shapes_[b], pose_of(pb), wide);
-        Look l;
-        l.normal = mm.normal;
-        l.separation = mm.separation;
-        if (mm.count == 0) l.gap = mm.separation;
-        bool near = false;  // a point within kTouch
-        for (int k = 0; k < mm.count; ++k) {
-            const double depth = mm.depths[k];
-            if (depth > kTouch) {
-                l.gap = std::min(l.gap, depth);
-                continue;
-            }
-            near = true;
-            const Vec& p = mm.points[k];
-            const double un = ((pb.v + spin_cross(pb.w, p - pb.position)) -
-                               (pa.v + spin_cross(pa.w, p - pa.position))).dot(mm.normal);
-            // (At s = 0 the contact manifold of predict_pair decided already; this wider one
-            // may pick other points of a face and must not disagree with it.)
-            if (un < -v_rest && !start) l.lands = true;
-            if (un > v_rest) {
-                // Lifts off: look again when it has left the contact band, or, pulled back,
-                // when it is back where it started (a ballistic arc, 2 un / |an| later).
-                const double an = mm.normal.dot(kb.a - ka.a);
-                l.leave = std::min(l.leave, (2.0 * kTouch - depth) / un);
-                if (an < 0.0) l.leave = std::min(l.leave, 2.0 * un / -an);
-            }
-        }
-        if (!touching && (mm.count == 0 ? mm.separation <= kTouch : near)) l.lands = true;
-        return l;
-    };
-    double previous_gap = kNever, previous_s = 0.0;
-    for (int it = 0; it < 20000; ++it) {
-        const Look l = look(ca, cb, s == 0.0);
-        if (l.lands) return t + s;
-        if (!std::isfinite(l.gap) && !std::isfinite(l.leave)) return kNever;  // resting, nothing to come
-        const double rate = std::max(0.0, -l.normal.dot(cb.v - ca.v)) +
-                            std::max(0.0, -l.normal.dot(kb.a - ka.a)) * (horizon - s) + turn_rate;
-        double step = l.leave;
-        if (std::isfinite(l.gap)) {
-            if (!(rate > 0.0) && !std::isfinite(l.leave)) return kNever;
-            if (rate > 0.0) step = std::min(step, l.gap / rate);
-            // The bound on the closing speed can be far above the real one (a slowly turning
-            // corner near the ground, or one hovering just outside the contact band): then try
-            // half the time the gap takes to close at its observed rate (twice the last step if
-            // it does not close), and keep the jump if the gap there is still open.
-            if (s > previous_s) {
-                const double last = s - previous_s;
-                const double closing = l.gap < previous_gap ? l.gap * last / (previous_gap - l.gap) : kNever;
-                const double jump = std::min({0.5 * closing, 2.0 * last, horizon - s});
-                if (jump > step) {
-                    Mover ja = ma, jb = mb;
-                    this->step(&ja, jump);
-                    this->step(&jb, jump);
-                    const Look lj = look(ja.body, jb.body, false);
-                    if (!lj.lands && lj.gap > kTouch) step = jump;
-                }
-            }
-        }
-        if (s + step > horizon) return kNever;
-        previous_gap = l.gap;
-        previous_s = s;
-        this->step(&ma, step);
-        this->step(&mb, step);
-        s += step;
-    }
-    return t + s;  // not converged: look again from there (never a silent miss)
+    c.turn_rate = turning(a, ka) + turning(b, kb);
+    return advance_to_contact(shapes_[a], shapes_[b], mover(a), mover(b),
+                              [this](Mover* m, double dt) { step(m, dt); }, c);
 }
 
 template <int D>

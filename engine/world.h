@@ -1,7 +1,7 @@
 // The 2D and 3D worlds: bodies advanced from impact to impact at the exact instant of contact.
 //
 // One algorithm serves both dimensions (World<2>, World<3>); what differs (vectors, spin, shapes,
-// how a body turns) comes from Space<D> and a few overloads in world.cpp.
+// how a body turns) comes from Space<D> and a few overloads (engine/space.h, world.cpp).
 //
 // Motion between events. A free body moves ballistically, x(t) = x + v t + g t^2/2, and turns
 // torque-free (2D: w constant; 3D: engine/rotation.h, with the gyroscopic term). A body in
@@ -9,10 +9,10 @@
 //
 // Time of impact. For each pair of bodies that may meet (a uniform grid over the bodies' swept
 // bounding boxes: about N log N per second simulated, not N^2), the first instant of contact is
-// found to kTouch (1e-10 m):
+// found to kTouch (1e-10 m; engine/toi.h):
 //   disc/sphere against disc/sphere (same acceleration) or a plane: the smallest root of a
 //     quadratic, in closed form;
-//   any other pair: conservative advancement (engine/toi2d.h explains the bound), which also
+//   any other pair: conservative advancement (engine/toi.h explains the bound), which also
 //     tries longer steps from the gap's observed closing rate and keeps one only when the gap
 //     at its end is still open (a corner turning slowly near the ground would crawl).
 // Each body keeps its own clock; an event moves only the bodies it touches (event-driven
@@ -93,30 +93,9 @@
 
 #include "engine/run_count.h"
 #include "engine/scene.h"
+#include "engine/space.h"
 
 namespace collide {
-
-template <int D> struct Space;
-
-template <> struct Space<2> {
-    using Vec = Vec2;
-    using Spin = double;  // rad/s about +z
-    using Body = Body2;
-    using Shape = Shape2;
-    using Pose = Pose2;
-    using Manifold = Manifold2;
-    static constexpr int kMaxPoints = 2;
-};
-
-template <> struct Space<3> {
-    using Vec = Vec3;
-    using Spin = Vec3;    // rad/s, world frame
-    using Body = Body3;
-    using Shape = Shape3;
-    using Pose = Pose3;
-    using Manifold = Manifold3;
-    static constexpr int kMaxPoints = 4;
-};
 
 // One collision of one pair of bodies at one instant (all its contact points together).
 template <int D>

@@ -1,11 +1,12 @@
 // Time of impact against closed forms: constant closing speed, oblique approach, a fall under
 // gravity, a spinning box landing (root of its analytic lowest-point height), a near miss, and
-// a fast disc against a thin plate (no tunnelling).
+// a fast disc against a thin plate (no tunnelling); the worlds' closed forms for round bodies.
+// (The worlds' conservative advancement is tested through the worlds: tests/engine/world*.)
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "engine/toi2d.h"
+#include "engine/toi.h"
 
 namespace collide {
 namespace {
@@ -99,6 +100,24 @@ TEST(Toi2d, InitialOverlapIsImmediate) {
     ASSERT_TRUE(r.hit);
     EXPECT_EQ(r.t, 0.0);
     EXPECT_NEAR(r.manifold.separation, -0.1, 1e-12);
+}
+
+// The worlds' closed forms. A ball whose lowest point is h above the ground, moving sideways:
+// t = sqrt(2 h / g); one touching it and leaving at 2 m/s is back after 2 v / g.
+TEST(Toi, RoundOnPlane) {
+    const double g = 9.81, h = 1.25;
+    const Vec3 n(0, 1, 0), a(0, -g, 0);
+    EXPECT_NEAR(plane_contact_time(n, Vec3(0.3, 0, 0), a, h, false), std::sqrt(2 * h / g), 1e-12);
+    EXPECT_NEAR(plane_contact_time(n, Vec3(0, 2, 0), a, 0.0, true), 4.0 / g, 1e-12);
+    EXPECT_TRUE(std::isinf(plane_contact_time(Vec2(0, 1), Vec2(0, 1), Vec2::Zero(), h, false)));
+}
+
+// Two discs, radii summing to 1 m, centres 2 m apart closing at 3 m/s: t = 1/3 s; parting or
+// touching: never.
+TEST(Toi, RoundPair) {
+    EXPECT_NEAR(round_contact_time(Vec2(2, 0), Vec2(-3, 0), 1.0, false), 1.0 / 3.0, 1e-12);
+    EXPECT_TRUE(std::isinf(round_contact_time(Vec2(2, 0), Vec2(3, 0), 1.0, false)));
+    EXPECT_TRUE(std::isinf(round_contact_time(Vec3(1, 0, 0), Vec3(-3, 0, 0), 1.0, true)));
 }
 
 }  // namespace
