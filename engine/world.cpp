@@ -149,8 +149,8 @@ World<D>::World(const Scene& scene) : scene_(scene) {
         round_.push_back(is_round(shapes_[i]));
         radius_.push_back(plane_[i] ? 0.0 : bounding_radius(shapes_[i]));
         inv_min_moment_.push_back(inverse_smallest_moment(bodies_[i]));
-        if (plane_[i]) planes_.push_back(i);
     }
+    grid_ = BroadPhase<D>(plane_);
     track_.resize(n);
     weld_of_.assign(n, -1);
     island_.assign(n, 0);
@@ -163,7 +163,6 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     const double g = gravity().norm();
     rest_smooth_ = 0.5 * kZenoTime * g;
     rest_cornered_ = std::max(rest_smooth_, std::sqrt(4.0 * g * kTouch));
-    seen_.assign(n, 0);
     for (std::size_t i = 0; i < n; ++i) set_free(i);
 }
 
@@ -354,7 +353,7 @@ void World<D>::set_body(std::size_t i, const Body& body) {
     heap_.clear();
 }
 
-// ---- Broad phase: a uniform grid over swept boxes ----
+// ---- Broad phase (engine/broad_phase.h): each body's swept box ----
 
 template <int D>
 void World<D>::swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const {
@@ -365,117 +364,31 @@ void World<D>::swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) 
     const Vec acc = welded ? gravity() : track_[i].a;
     const double clock = welded ? w->t : track_[i].t;
     const double s0 = t0 - clock, s1 = t1 - clock;
-    // The centre follows x + v s + a s^2 / 2: the box of both ends and of the turning point.
-    Vec a0 = b.position + b.v * s0 + 0.5 * s0 * s0 * acc;
-    Vec a1 = b.position + b.v * s1 + 0.5 * s1 * s1 * acc;
-    *lo = a0.cwiseMin(a1);
-    *hi = a0.cwiseMax(a1);
-    for (int d = 0; d < D; ++d) {
-        if (acc[d] == 0.0) continue;
-        const double s = -b.v[d] / acc[d];
-        if (s > s0 && s < s1) {
-            const double x = b.position[d] + b.v[d] * s + 0.5 * s * s * acc[d];
-            (*lo)[d] = std::min((*lo)[d], x);
-            (*hi)[d] = std::max((*hi)[d], x);
-        }
-    }
     double margin = radius_[i] + kTouch;
     if (welded) {
         const auto at = std::find(w->members.begin(), w->members.end(), i) - w->members.begin();
         margin = w->reach[at] + kTouch;
     }
-    for (int d = 0; d < D; ++d) {
-        (*lo)[d] -= margin;
-        (*hi)[d] += margin;
-    }
+    BroadPhase<D>::swept_box(b.position, b.v, acc, s0, s1, margin, lo, hi);
 }
 
-template <int D>
-typename World<D>::CellBox World<D>::cell_box(const Vec& lo, const Vec& hi) const {
-    CellBox box;
-    box.hi = {0, 0, 0};  // the unused axes of 2D: one layer
-    for (int d = 0; d < D; ++d) {
-        box.lo[d] = std::clamp(static_cast<int>(std::floor((lo[d] - grid_lo_[d]) / cell_)), 0, dims_[d] - 1);
-        box.hi[d] = std::clamp(static_cast<int>(std::floor((hi[d] - grid_lo_[d]) / cell_)), 0, dims_[d] - 1);
-    }
-    return box;
-}
-
-// Calls f for every cell of `box` outside `skip` (an empty skip: every cell).
-template <int D>
-template <class F>
-void World<D>::for_each_cell(const CellBox& box, const CellBox& skip, F&& f) const {
-    for (int z = box.lo[2]; z <= box.hi[2]; ++z)
-        for (int y = box.lo[1]; y <= box.hi[1]; ++y)
-            for (int x = box.lo[0]; x <= box.hi[0]; ++x) {
-                if (x >= skip.lo[0] && x <= skip.hi[0] && y >= skip.lo[1] && y <= skip.hi[1] &&
-                    z >= skip.lo[2] && z <= skip.hi[2])
-                    continue;
-                f((static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x);
-            }
-}
-
-// A body re-inserted after an event (new velocity, new swept box) is added only to the cells
-// it was not in yet this substep, so cell lists do not grow with the number of events.
 template <int D>
 void World<D>::insert(std::size_t i, double t0, double t1) {
     Vec lo, hi;
     swept_box(i, t0, t1, &lo, &hi);
-    CellBox box = cell_box(lo, hi);
-    CellBox& had = placed_[i];
-    const CellBox skip = had;
-    if (!had.empty())
-        for (int d = 0; d < 3; ++d) {
-            box.lo[d] = std::min(box.lo[d], had.lo[d]);
-            box.hi[d] = std::max(box.hi[d], had.hi[d]);
-        }
-    had = box;
-    for_each_cell(box, skip, [&](std::size_t c) {
-        if (cells_[c].empty()) used_cells_.push_back(c);
-        cells_[c].push_back(static_cast<std::uint32_t>(i));
-    });
+    grid_.insert(i, lo, hi);
 }
 
 template <int D>
 void World<D>::build_grid(double t0, double t1) {
-    for (std::size_t c : used_cells_) cells_[c].clear();
-    used_cells_.clear();
-    // Cell size: the median swept box of the moving bodies, so a typical body meets few cells.
-    Vec lo = Vec::Constant(kNever), hi = Vec::Constant(-kNever);
-    std::vector<double> extents;
-    std::size_t moving = 0;
+    std::vector<std::array<Vec, 2>> moving;  // the moving bodies' swept boxes size the cells
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
         if (bodies_[i].is_static) continue;
         Vec a, b;
         swept_box(i, t0, t1, &a, &b);
-        lo = lo.cwiseMin(a);
-        hi = hi.cwiseMax(b);
-        extents.push_back((b - a).maxCoeff());
-        ++moving;
+        moving.push_back({a, b});
     }
-    if (moving == 0) {
-        lo = Vec::Zero();
-        hi = Vec::Ones();
-        extents.push_back(1.0);
-    }
-    std::nth_element(extents.begin(), extents.begin() + extents.size() / 2, extents.end());
-    cell_ = std::max(extents[extents.size() / 2], 1e-9);
-    const double budget = 4.0 * static_cast<double>(moving) + 64.0;
-    for (;;) {
-        double count = 1.0;
-        for (int d = 0; d < D; ++d) count *= std::floor((hi[d] - lo[d]) / cell_) + 1.0;
-        if (count <= budget) break;
-        cell_ *= 1.5;
-    }
-    grid_lo_ = lo;
-    std::size_t total = 1;
-    dims_ = {1, 1, 1};
-    for (int d = 0; d < D; ++d) {
-        dims_[d] = static_cast<int>(std::floor((hi[d] - lo[d]) / cell_)) + 1;
-        total *= static_cast<std::size_t>(dims_[d]);
-    }
-    if (cells_.size() < total) cells_.resize(total);
-    placed_.assign(bodies_.size(), CellBox{});
+    grid_.build(moving);
     for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!plane_[i]) insert(i, t0, t1);
 }
@@ -483,27 +396,7 @@ void World<D>::build_grid(double t0, double t1) {
 template <int D>
 template <class F>
 void World<D>::for_each_neighbour(std::size_t i, double t, F&& f) {
-    if (++query_ == 0) {
-        std::fill(seen_.begin(), seen_.end(), 0);
-        query_ = 1;
-    }
-    seen_[i] = query_;
-    if (!plane_[i]) {
-        Vec lo, hi;
-        swept_box(i, t, substep_end_, &lo, &hi);
-        std::vector<std::uint32_t>& found = scratch_;  // f never asks for neighbours itself
-        found.clear();
-        for_each_cell(cell_box(lo, hi), CellBox{}, [&](std::size_t c) {
-            for (std::uint32_t j : cells_[c])
-                if (seen_[j] != query_) {
-                    seen_[j] = query_;
-                    found.push_back(j);
-                }
-        });
-        for (std::uint32_t j : found) f(static_cast<std::size_t>(j));
-    }
-    for (std::size_t p : planes_)
-        if (p != i) f(p);
+    grid_.for_each_neighbour(i, [&](Vec* lo, Vec* hi) { swept_box(i, t, substep_end_, lo, hi); }, f);
 }
 
 // ---- Narrow phase ----

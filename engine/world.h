@@ -8,8 +8,8 @@
 // resting contact moves with constant contact forces added (see "Resting contact").
 //
 // Time of impact. For each pair of bodies that may meet (a uniform grid over the bodies' swept
-// bounding boxes: about N log N per second simulated, not N^2), the first instant of contact is
-// found to kTouch (1e-10 m; engine/toi.h):
+// bounding boxes, engine/broad_phase.h: about N log N per second simulated, not N^2), the first
+// instant of contact is found to kTouch (1e-10 m; engine/toi.h):
 //   disc/sphere against disc/sphere (same acceleration) or a plane: the smallest root of a
 //     quadratic, in closed form;
 //   any other pair: conservative advancement (engine/toi.h explains the bound), which also
@@ -91,6 +91,7 @@
 #include <unordered_set>
 #include <vector>
 
+#include "engine/broad_phase.h"
 #include "engine/run_count.h"
 #include "engine/scene.h"
 #include "engine/space.h"
@@ -228,16 +229,11 @@ private:
     void set_free(std::size_t i);         // gravity only
     Vec gravity() const;
 
-    // Broad phase (a uniform grid rebuilt each substep; bodies re-inserted after events).
+    // Broad phase (engine/broad_phase.h: a uniform grid rebuilt each substep; bodies
+    // re-inserted after events).
     void build_grid(double t0, double t1);
     void insert(std::size_t i, double t0, double t1);
     void swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const;
-    struct CellBox {                // grid index ranges, inclusive; empty when lo > hi
-        std::array<int, 3> lo{0, 0, 0}, hi{-1, -1, -1};
-        bool empty() const { return hi[0] < lo[0]; }
-    };
-    CellBox cell_box(const Vec& lo, const Vec& hi) const;
-    template <class F> void for_each_cell(const CellBox& box, const CellBox& skip, F&& f) const;
     template <class F> void for_each_neighbour(std::size_t i, double t, F&& f);
 
     // Narrow phase.
@@ -279,7 +275,6 @@ private:
     std::vector<double> inv_min_moment_;  // 1 / the smallest principal moment (spin bound)
     std::vector<bool> round_;             // disc or sphere: turning does not move the surface
     std::vector<bool> plane_;
-    std::vector<std::size_t> planes_;     // indices of the plane bodies
     std::vector<Track> track_;
     std::vector<std::uint32_t> island_;   // 0: free; else the id of its island solve
     std::vector<char> asleep_;            // 1: its island sleeps (v, w, a, alpha exactly 0)
@@ -300,16 +295,7 @@ private:
     double substep_end_ = 0.0;
     Counters counters_;
 
-    // Grid.
-    Vec grid_lo_;
-    double cell_ = 1.0;
-    std::array<int, 3> dims_{1, 1, 1};
-    std::vector<std::vector<std::uint32_t>> cells_;
-    std::vector<std::size_t> used_cells_;
-    std::vector<CellBox> placed_;  // per body: the cells it is in this substep
-    std::vector<std::uint32_t> seen_;
-    std::vector<std::uint32_t> scratch_;
-    std::uint32_t query_ = 0;
+    BroadPhase<D> grid_;
 
     std::vector<Body> later_;  // solve_island's scratch: an island's bodies a step later
 
