@@ -44,7 +44,7 @@
 // (at most kZenoTime / (1 - e) of them). It is a time tolerance, not a restitution threshold.
 // Shapes with corners (polygons, boxes) also rest when their bounce would not rise above
 // kTouch (v <= sqrt(4 |g| kTouch)). The island's forces are found by projected Gauss-Seidel
-// finished by an exact solve on its active set (solve_points, "active-set polish"), so a
+// finished by an exact solve on its active set (engine/contact_solver.h, "active-set polish"), so a
 // stack in balance gets forces that balance it to round-off.
 //
 // Sleeping islands. An island whose every surface point moves slower than v_sleep =
@@ -92,6 +92,7 @@
 #include <vector>
 
 #include "engine/broad_phase.h"
+#include "engine/contact_solver.h"
 #include "engine/run_count.h"
 #include "engine/scene.h"
 #include "engine/space.h"
@@ -191,19 +192,8 @@ private:
             return t != o.t ? t > o.t : (i != o.i ? i > o.i : j > o.j);
         }
     };
-    struct Contact {                // one touching pair at the current instant (a < b)
-        std::size_t a = 0, b = 0;
-        Manifold m;
-        Vec impulse = Vec::Zero();  // summed over its points, on b
-        double weight = 0.0;        // summed normal impulse
-        Vec moment = Vec::Zero();   // summed normal impulse times point
-    };
-    struct PointGoal {              // what solve_points aims at for one contact point
-        double un = 0.0;            // normal velocity to reach (at least, if push_only)
-        bool push_only = true;
-        double mu = 0.0;            // 0: no friction; < 0: unlimited
-        Vec ut = Vec::Zero();       // tangential velocity to reach
-    };
+    using Contact = collide::Contact<D>;      // one touching pair (engine/contact_solver.h)
+    using PointGoal = collide::PointGoal<D>;  // what the contact solver aims at for one point
 
     struct Weld {                   // bodies stuck together, moving as one rigid body
         std::vector<std::size_t> members;
@@ -262,7 +252,7 @@ private:
     bool resolve_point(Contact* c, int k);
     void resolve_simultaneous(std::vector<Contact>* contacts);
     void solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
-                      std::vector<Body>* state);
+                      std::vector<Body>* state);  // the contact solver, on bodies not welded
     void settle(const std::vector<std::size_t>& reached, double t);
     void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
                       double t);
@@ -296,6 +286,7 @@ private:
     Counters counters_;
 
     BroadPhase<D> grid_;
+    ContactSolver<D> solver_;
 
     std::vector<Body> later_;  // solve_island's scratch: an island's bodies a step later
 
