@@ -54,51 +54,6 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
     b->w += alpha * dt;
 }
 
-// Stuck bodies (world.h): two bodies as one rigid body, combined_body's parallel-axis sums with
-// momentum and angular momentum kept. The compound's frame is the world's at this instant
-// (2D angle 0; 3D orientation identity, so its body-frame inertia is the world one).
-Body2 compound(const Body2& a, const Body2& b) {
-    const Vec2 p = a.position;  // the reference point of the sums (any point will do)
-    const Combined2 c = combined_body(at_contact(a, p), at_contact(b, p));
-    Body2 r;
-    r.mass = c.M;
-    r.inertia = c.I;
-    r.position = p + c.xc;
-    r.v = c.v;
-    r.w = c.w;
-    return r;
-}
-Body3 compound(const Body3& a, const Body3& b) {
-    const Vec3 p = a.position;
-    const Combined3 c = combined_body(at_contact(a, p), at_contact(b, p));
-    Body3 r;
-    r.mass = c.M;
-    r.inertia = c.I;
-    r.position = p + c.xc;
-    r.v = c.v;
-    r.w = c.w;
-    return r;
-}
-// A member's pose in the frame of a compound just formed (compound()).
-Pose2 relative_pose(const Body2& c, const Body2& b) { return Pose2{b.position - c.position, b.angle - c.angle}; }
-Pose3 relative_pose(const Body3& c, const Body3& b) {
-    return Pose3{c.orientation.conjugate() * (b.position - c.position), c.orientation.conjugate() * b.orientation};
-}
-// A member placed on its compound c: x = xc + R d, its own frame turned with c's, and the rigid
-// motion v = vc + wc x (x - xc), w = wc.
-void place_on(const Body2& c, const Pose2& rel, Body2* b) {
-    b->angle = c.angle + rel.angle;
-    b->position = pose_of(c).apply(rel.x);
-    b->w = c.w;
-    b->v = c.v + spin_cross(c.w, b->position - c.position);
-}
-void place_on(const Body3& c, const Pose3& rel, Body3* b) {
-    b->orientation = (c.orientation * rel.q).normalized();
-    b->position = pose_of(c).apply(rel.x);
-    b->w = c.w;
-    b->v = c.v + spin_cross(c.w, b->position - c.position);
-}
-
 }  // namespace
 
 // ---- Construction and motion ----
@@ -218,101 +173,14 @@ void World<D>::step(Mover* m, double dt) const {
     place_on(m->compound, w.rel[at], &m->body);
 }
 
-// ---- Welds (the stick model: "Stuck bodies" in the header) ----
+// ---- The page's listing: pairs let through ----
 
 template <int D>
 bool World<D>::passed(std::size_t i, std::size_t j) const {
     return !passed_.empty() && passed_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j));
 }
 
-template <int D>
-bool World<D>::same_weld(std::size_t i, std::size_t j) const {
-    return weld_of_[i] >= 0 && weld_of_[i] == weld_of_[j];
-}
-
-template <int D>
-void World<D>::weld_to(Weld* w, double t) const {
-    if (t == w->t) return;
-    if (t < w->t) {  // (not expected: clocks only go forward) again from the anchor
-        w->body = w->anchor;
-        w->t = w->anchor_t;
-    }
-    Track free;
-    free.a = gravity();
-    free.alpha = zero<Spin>();
-    move(&w->body, free, t - w->t);
-    w->t = t;
-}
-
-template <int D>
-void World<D>::place(std::size_t i) {
-    const Weld& w = welds_[weld_of_[i]];
-    const auto at = std::find(w.members.begin(), w.members.end(), i) - w.members.begin();
-    place_on(w.body, w.rel[at], &bodies_[i]);
-}
-
-template <int D>
-typename World<D>::Body* World<D>::mobile(std::size_t i) {
-    if (weld_of_[i] < 0) return &bodies_[i];
-    Weld& w = welds_[weld_of_[i]];
-    weld_to(&w, track_[i].t);
-    return &w.body;
-}
-
-template <int D>
-void World<D>::moved(std::size_t i) {
-    if (weld_of_[i] < 0) return;
-    Weld& w = welds_[weld_of_[i]];
-    w.anchor = w.body;
-    w.anchor_t = w.t;
-    for (std::size_t m : w.members) {
-        place(m);
-        track_[m].t = w.t;
-    }
-}
-
-template <int D>
-void World<D>::weld(std::size_t a, std::size_t b, double t) {
-    // Everything already stuck to a or b comes along.
-    std::vector<std::size_t> members;
-    for (std::size_t k : {a, b}) {
-        if (weld_of_[k] < 0) {
-            members.push_back(k);
-            continue;
-        }
-        Weld& old = welds_[weld_of_[k]];
-        members.insert(members.end(), old.members.begin(), old.members.end());
-        for (std::size_t m : old.members) weld_of_[m] = -1;
-        old.members.clear();
-    }
-    for (std::size_t m : members) drift(m, t);
-    Weld w;
-    w.body = bodies_[members[0]];
-    for (std::size_t q = 1; q < members.size(); ++q) w.body = compound(w.body, bodies_[members[q]]);
-    w.t = w.anchor_t = t;
-    w.anchor = w.body;
-    w.inv_min_moment = inverse_smallest_moment(w.body);
-    w.members = members;
-    for (std::size_t m : members) {
-        w.rel.push_back(relative_pose(w.body, bodies_[m]));
-        w.reach.push_back(w.rel.back().x.norm() + radius_[m]);
-        weld_of_[m] = static_cast<int>(welds_.size());
-    }
-    welds_.push_back(std::move(w));
-    for (std::size_t m : members) {
-        place(m);  // the compound's rigid motion (the stick response gave it already, to round-off)
-        track_[m].t = t;
-    }
-    ++counters_.welds;
-}
-
-template <int D>
-void World<D>::unweld(std::size_t i) {
-    if (weld_of_[i] < 0) return;
-    Weld& w = welds_[weld_of_[i]];
-    for (std::size_t m : w.members) weld_of_[m] = -1;
-    w.members.clear();
-}
+// ---- A body set from outside ----
 
 template <int D>
 void World<D>::set_body(std::size_t i, const Body& body) {

@@ -96,6 +96,7 @@
 #include "engine/run_count.h"
 #include "engine/scene.h"
 #include "engine/space.h"
+#include "engine/weld.h"
 
 namespace collide {
 
@@ -194,17 +195,7 @@ private:
     };
     using Contact = collide::Contact<D>;      // one touching pair (engine/contact_solver.h)
     using PointGoal = collide::PointGoal<D>;  // what the contact solver aims at for one point
-
-    struct Weld {                   // bodies stuck together, moving as one rigid body
-        std::vector<std::size_t> members;
-        std::vector<typename Space<D>::Pose> rel;  // each member's pose in the compound's frame
-        std::vector<double> reach;  // each member's |d| + its bounding radius (m)
-        Body body;                  // the compound at time t (its frame: the world's at welding)
-        double t = 0.0;
-        Body anchor;                // the compound when its velocity last changed, at anchor_t
-        double anchor_t = 0.0;
-        double inv_min_moment = 0.0;
-    };
+    using Weld = collide::Weld<D>;            // bodies stuck together (engine/weld.h)
     // A body's motion for conservative advancement: a copy of it and, when welded, of its weld.
     struct Mover {
         std::size_t i = 0;
@@ -230,20 +221,21 @@ private:
     Manifold manifold(std::size_t a, std::size_t b) const;  // both at the same time
     double normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const;
     double rest_speed(std::size_t i, std::size_t j) const;
-    bool same_island(std::size_t i, std::size_t j) const;
-    bool same_weld(std::size_t i, std::size_t j) const;
     bool passed(std::size_t i, std::size_t j) const;  // let through by the page's listing
+    double friction_limit(std::size_t a, std::size_t b) const;
 
-    // Welds.
+    // Prediction (the time of impact: engine/toi.h).
+    double predict_pair(std::size_t i, std::size_t j, double t, double t1);
+    void predict(std::size_t i, double t);
+
+    // Welds (engine/weld.cpp).
+    bool same_weld(std::size_t i, std::size_t j) const;
     void weld(std::size_t a, std::size_t b, double t);
     void unweld(std::size_t i);
     void weld_to(Weld* w, double t) const;  // its compound to time t
     void place(std::size_t i);              // bodies_[i] from its weld's compound
     Body* mobile(std::size_t i);            // what an impulse on body i moves: it or its compound
     void moved(std::size_t i);              // after mobile(i) changed: its members placed again
-    double friction_limit(std::size_t a, std::size_t b) const;
-    double predict_pair(std::size_t i, std::size_t j, double t, double t1);
-    void predict(std::size_t i, double t);
 
     // Contacts at one instant.
     void contacts_of(std::size_t i, double t, std::vector<Contact>* out);
@@ -253,6 +245,9 @@ private:
     void resolve_simultaneous(std::vector<Contact>* contacts);
     void solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
                       std::vector<Body>* state);  // the contact solver, on bodies not welded
+
+    // Islands and sleeping.
+    bool same_island(std::size_t i, std::size_t j) const;
     void settle(const std::vector<std::size_t>& reached, double t);
     void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
                       double t);
