@@ -246,7 +246,7 @@ private:
     void solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
                       std::vector<Body>* state);  // the contact solver, on bodies not welded
 
-    // Islands and sleeping.
+    // Islands and sleeping (engine/islands.cpp).
     bool same_island(std::size_t i, std::size_t j) const;
     void settle(const std::vector<std::size_t>& reached, double t);
     void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,

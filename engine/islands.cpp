@@ -1,0 +1,213 @@
+// Islands and sleeping ("Resting contact" and "Sleeping islands" in engine/world.h): after an
+// instant, the bodies held by resting contacts are grouped into islands (union-find over the
+// contacts), each island's constant contact forces for the rest of the substep are found by
+// the contact solver, and an island that has come to rest falls asleep.
+#include "engine/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+
+namespace collide {
+
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+}  // namespace
+
+template <int D>
+bool World<D>::same_island(std::size_t i, std::size_t j) const {
+    const std::uint32_t a = bodies_[i].is_static ? 0 : island_[i];
+    const std::uint32_t b = bodies_[j].is_static ? 0 : island_[j];
+    if (bodies_[i].is_static) return b != 0;
+    if (bodies_[j].is_static) return a != 0;
+    return a != 0 && a == b;
+}
+
+// After an instant: the bodies reached (and the islands they belonged to) get new motions:
+// those held by resting contacts form islands with constant contact forces, the rest are free.
+template <int D>
+void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
+    std::vector<std::size_t> bodies;
+    const std::uint32_t in = fresh(&mark_, &mark_id_);
+    fresh(&searched_, &search_);
+    // A body brings the other members of the island it was in: their forces change too.
+    std::vector<std::size_t> stack;
+    auto add = [&](std::size_t first) {
+        stack.assign(1, first);
+        while (!stack.empty()) {
+            const std::size_t k = stack.back();
+            stack.pop_back();
+            if (bodies_[k].is_static || mark_[k] == in) continue;
+            mark_[k] = in;
+            parent_[k] = k;
+            bodies.push_back(k);
+            if (island_[k] == 0) continue;
+            auto it = members_.find(island_[k]);
+            if (it == members_.end()) continue;
+            const std::vector<std::size_t> others = std::move(it->second);
+            members_.erase(it);
+            stack.insert(stack.end(), others.rbegin(), others.rend());
+        }
+    };
+    for (std::size_t k : reached) add(k);
+    // Islands: connected through resting contacts (touching, |un| <= v_rest at every point),
+    // found by union-find over parent_.
+    auto root = [&](std::size_t k) {
+        std::size_t r = k;
+        while (parent_[r] != r) r = parent_[r];
+        while (parent_[k] != r) {
+            const std::size_t next = parent_[k];
+            parent_[k] = r;
+            k = next;
+        }
+        return r;
+    };
+    std::vector<Contact> contacts;
+    std::vector<Contact> resting;
+    for (std::size_t q = 0; q < bodies.size(); ++q) {
+        const std::size_t start = contacts.size();
+        contacts_of(bodies[q], t, &contacts);
+        for (std::size_t c = start; c < contacts.size(); ++c) {
+            const Contact& ct = contacts[c];
+            const double v_rest = rest_speed(ct.a, ct.b);
+            bool rests = false;  // some point slow (none approaches: impacts came first)
+            for (int k = 0; k < ct.m.count; ++k)
+                rests = rests || std::abs(normal_speed(ct.a, ct.b, ct.m.points[k], ct.m.normal)) <= v_rest;
+            if (!rests) continue;
+            resting.push_back(ct);
+            for (std::size_t k : {ct.a, ct.b}) add(k);
+            if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent_[root(ct.a)] = root(ct.b);
+        }
+    }
+    // The islands in the order of their roots, each's contacts by pair.
+    std::vector<std::pair<std::size_t, std::size_t>> order;  // (root, index in resting)
+    for (std::size_t c = 0; c < resting.size(); ++c)
+        order.emplace_back(root(bodies_[resting[c].a].is_static ? resting[c].b : resting[c].a), c);
+    std::sort(order.begin(), order.end(), [&](const auto& x, const auto& y) {
+        if (x.first != y.first) return x.first < y.first;
+        const Contact &p = resting[x.second], &q = resting[y.second];
+        return p.a != q.a ? p.a < q.a : p.b < q.b;
+    });
+    for (std::size_t k : bodies) set_free(k);
+    const std::uint32_t member = fresh(&mark_, &mark_id_);
+    std::vector<Contact> island;
+    std::vector<std::size_t> members;
+    for (std::size_t first = 0; first < order.size();) {
+        std::size_t last = first;
+        while (last < order.size() && order[last].first == order[first].first) ++last;
+        island.clear();
+        members.clear();
+        for (std::size_t c = first; c < last; ++c) {
+            island.push_back(resting[order[c].second]);
+            for (std::size_t k : {island.back().a, island.back().b})
+                if (!bodies_[k].is_static && mark_[k] != member) {
+                    mark_[k] = member;
+                    members.push_back(k);
+                }
+        }
+        solve_island(&island, members, t);
+        first = last;
+    }
+    for (std::size_t k : bodies) {
+        insert(k, t, substep_end_);
+        predict(k, t);  // also a new sleeper: its neighbours predicted it still moving
+    }
+}
+
+// Constant contact forces for the rest of the substep (see "Resting contact" in the header):
+// first the normal speeds of the resting points are set to zero (the last, shorter than
+// kZenoTime, bounces merged), then forces F >= 0 keep the normal relative acceleration >= 0.
+template <int D>
+void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
+                            double t) {
+    ++counters_.island_solves;
+    const std::uint32_t id = next_island_++;
+    if (next_island_ == 0) next_island_ = 1;
+    members_[id] = members;
+    for (std::size_t k : members) island_[k] = id;
+    // The slow points' normal speeds to zero; the others (parting) are left alone.
+    std::vector<PointGoal> goals;
+    for (const Contact& c : *contacts) {
+        const double v_rest = rest_speed(c.a, c.b);
+        for (int k = 0; k < c.m.count; ++k) {
+            PointGoal g;
+            g.mu = 0.0;
+            if (std::abs(normal_speed(c.a, c.b, c.m.points[k], c.m.normal)) <= v_rest)
+                g.push_only = false;
+            else
+                g.un = -kNever;
+            goals.push_back(g);
+        }
+    }
+    std::vector<Contact> merged = *contacts;
+    solve_points(&merged, goals, &bodies_);
+    const double h = substep_end_ - t;
+    if (!(h > 0.0)) return;
+    // Velocities a step h later with gravity, then the impulses that keep every point from
+    // approaching; their average over h is the force.
+    // (later_ is indexed like bodies_; only the island's bodies are copied into it.)
+    std::vector<Body>& later = later_;
+    if (later.size() != bodies_.size()) later = bodies_;
+    for (const Contact& c : *contacts)
+        for (std::size_t k : {c.a, c.b}) later[k] = bodies_[k];
+    for (std::size_t k : members) later[k].v += gravity() * h;
+    goals.clear();
+    for (const Contact& c : *contacts) {
+        const double mu = friction_limit(c.a, c.b);
+        // Two round bodies keep their centres ra + rb apart: d^2|d|/dt^2 = 0 asks for the
+        // normal relative acceleration -|ut|^2 / |d| (ut: the centres' relative velocity across
+        // n), the centripetal part of sliding over a curved partner. Constant forces then
+        // follow the curve to third order in the substep instead of drifting into it.
+        double curve = 0.0;
+        if (round_[c.a] && round_[c.b]) {
+            const Vec d = bodies_[c.b].position - bodies_[c.a].position;
+            const Vec u = bodies_[c.b].v - bodies_[c.a].v;
+            const Vec ut = u - u.dot(c.m.normal) * c.m.normal;
+            curve = ut.squaredNorm() / d.norm();
+        }
+        for (int k = 0; k < c.m.count; ++k) {
+            PointGoal g;
+            g.mu = mu;
+            g.un = -curve * h;
+            goals.push_back(g);
+        }
+    }
+    std::vector<Contact> forces = *contacts;
+    solve_points(&forces, goals, &later);
+    for (std::size_t k : members) {
+        track_[k].a = (later[k].v - bodies_[k].v) / h;
+        track_[k].alpha = (later[k].w - bodies_[k].w) / h;
+    }
+    // Sleep (see "Sleeping islands" in the header): every surface point of every member moves
+    // slower than v_sleep = kZenoTime |g| / 2, the speed the world already counts as resting,
+    // and would still after a rest step: |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep.
+    const double v_sleep = 0.5 * kZenoTime * gravity().norm();
+    for (std::size_t k : members) {
+        const Track& tk = track_[k];
+        const double speed = bodies_[k].v.norm() + magnitude(bodies_[k].w) * radius_[k] +
+                             (tk.a.norm() + magnitude(tk.alpha) * radius_[k]) * kRestStep;
+        if (!(speed <= v_sleep)) return;
+    }
+    ++counters_.sleeps;
+    for (std::size_t k : members) {
+        bodies_[k].v = zero<Vec>();
+        bodies_[k].w = zero<Spin>();
+        track_[k].a = zero<Vec>();
+        track_[k].alpha = zero<Spin>();
+        ++track_[k].version;
+        asleep_[k] = 1;
+    }
+}
+
+template bool World<2>::same_island(std::size_t, std::size_t) const;
+template void World<2>::settle(const std::vector<std::size_t>&, double);
+template void World<2>::solve_island(std::vector<Contact>*, const std::vector<std::size_t>&, double);
+template bool World<3>::same_island(std::size_t, std::size_t) const;
+template void World<3>::settle(const std::vector<std::size_t>&, double);
+template void World<3>::solve_island(std::vector<Contact>*, const std::vector<std::size_t>&, double);
+
+}  // namespace collide
