@@ -114,10 +114,10 @@ struct Impact {
     double restitution_step(double a) const {
         switch (law) {
             case RestitutionLaw::newton:
-                return a > 0.0 ? std::max(0.0, (-e * un0 - u[0]) / a) : kNever;
-            case RestitutionLaw::poisson: return std::max(0.0, (1.0 + e) * Pc - Pn());
+                return a > 0.0 ? std::max(0.0, (restitution_target() - u[0]) / a) : kNever;
+            case RestitutionLaw::poisson: return std::max(0.0, restitution_target() - Pn());
             case RestitutionLaw::stronge: {
-                const double R = (1.0 - e * e) * Wc - W;
+                const double R = restitution_target() - W;
                 if (R <= 0.0) return 0.0;
                 const double un = std::max(0.0, u[0]), disc = un * un + 2.0 * a * R;
                 if (disc < 0.0) return kNever;
@@ -372,6 +372,10 @@ struct Impact {
         if (!compressing) g[0] -= restitution_target();
         return g;
     }
+    // The quantity whose target ends restitution (see event_series()), of the state (u_n, P_n, W).
+    double restitution_quantity(double un, double Pn_, double W_) const {
+        return law == RestitutionLaw::poisson ? Pn_ : law == RestitutionLaw::stronge ? W_ : un;
+    }
     // The value of the stage's quantity that ends restitution (see event_series()).
     double restitution_target() const {
         switch (law) {
@@ -414,7 +418,7 @@ struct Impact {
         for (int i = 0; i < kSamples; ++i) v[i] = g[kOrder];
         for (int k = kOrder - 1; k >= 0; --k)
             for (int i = 0; i < kSamples; ++i) v[i] = v[i] * (h * (i + 1) / kSamples) + g[k];
-        double lo = 0.0, hi = -1.0, slope;
+        double lo = 0.0, hi = -1.0;
         for (int i = 0; i < kSamples; ++i) {
             if (v[i] >= 0.0) {
                 hi = h * (i + 1) / kSamples;
@@ -423,11 +427,19 @@ struct Impact {
             lo = h * (i + 1) / kSamples;
         }
         if (hi < 0.0) return -1.0;
-        double t = 0.5 * (lo + hi);
+        return bracketed_root([&](double t, double* rate) { return poly(g, t, rate); }, lo, hi,
+                              0.5 * (lo + hi));
+    }
+
+    // The root of g in (lo, hi] (g(lo) < 0 <= g(hi)) from t: Newton's method on g(t, &rate),
+    // each step kept inside the bracket (else bisection), to 1e-15 of hi.
+    template <class G>
+    static double bracketed_root(G g, double lo, double hi, double t) {
         for (int it = 0; it < 100; ++it) {
-            const double gt = poly(g, t, &slope);
+            double rate;
+            const double gt = g(t, &rate);
             if (gt >= 0.0) hi = t; else lo = t;
-            double next = slope > 0.0 ? t - gt / slope : 0.5 * (lo + hi);
+            double next = rate > 0.0 ? t - gt / rate : 0.5 * (lo + hi);
             if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
             const bool done = std::abs(next - t) <= 1e-15 * hi || hi - lo <= 1e-15 * hi;
             t = next;
@@ -443,18 +455,13 @@ struct Impact {
         const double target = restitution_target();
         load(s, h);
         if (W < target) return -1.0;
-        double lo = 0.0, hi = h, t = h;
-        for (int it = 0; it < 100; ++it) {
-            load(s, t);
-            const double gt = W - target, rate = u[0] * horner(s[kQ], t);
-            if (gt >= 0.0) hi = t; else lo = t;
-            double next = rate > 0.0 ? t - gt / rate : 0.5 * (lo + hi);
-            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-            const bool done = std::abs(next - t) <= 1e-15 * hi || hi - lo <= 1e-15 * hi;
-            t = next;
-            if (done) break;
-        }
-        return t;
+        return bracketed_root(
+            [&](double t, double* rate) {
+                load(s, t);
+                *rate = u[0] * horner(s[kQ], t);
+                return W - target;
+            },
+            0.0, h, h);
     }
 
     // Slip close to its stop, along a direction near the ray s* that attracts it, finished in
@@ -502,10 +509,7 @@ struct Impact {
         P = P1;
         const double W1 = W + (energy_change() - E0) + mu * dD;
         P = P0;
-        const double now = compressing ? u1[0]
-                           : law == RestitutionLaw::poisson ? P1[0]
-                           : law == RestitutionLaw::stronge ? W1
-                                                            : u1[0];
+        const double now = compressing ? u1[0] : restitution_quantity(u1[0], P1[0], W1);
         if (now >= (compressing ? 0.0 : restitution_target())) return false;
         u = u1;
         u.template tail<2>().setZero();
@@ -585,10 +589,7 @@ struct Impact {
             if (!compressing) return false;
             end_compression();
             // e = 0: restitution has nothing to do.
-            const double now = law == RestitutionLaw::newton    ? u[0]
-                               : law == RestitutionLaw::poisson ? P[0]
-                                                                : W;
-            if (now >= restitution_target()) return false;
+            if (restitution_quantity(u[0], P[0], W) >= restitution_target()) return false;
         }
         jammed = true;
         return false;

@@ -15,21 +15,11 @@ namespace {
 // Stuck bodies (world.h): two bodies as one rigid body, combined_body's parallel-axis sums with
 // momentum and angular momentum kept. The compound's frame is the world's at this instant
 // (2D angle 0; 3D orientation identity, so its body-frame inertia is the world one).
-Body2 compound(const Body2& a, const Body2& b) {
-    const Vec2 p = a.position;  // the reference point of the sums (any point will do)
-    const Combined2 c = combined_body(at_contact(a, p), at_contact(b, p));
-    Body2 r;
-    r.mass = c.M;
-    r.inertia = c.I;
-    r.position = p + c.xc;
-    r.v = c.v;
-    r.w = c.w;
-    return r;
-}
-Body3 compound(const Body3& a, const Body3& b) {
-    const Vec3 p = a.position;
-    const Combined3 c = combined_body(at_contact(a, p), at_contact(b, p));
-    Body3 r;
+template <class B>  // Body2 or Body3
+B compound(const B& a, const B& b) {
+    const auto p = a.position;  // the reference point of the sums (any point will do)
+    const auto c = combined_body(at_contact(a, p), at_contact(b, p));
+    B r;
     r.mass = c.M;
     r.inertia = c.I;
     r.position = p + c.xc;
