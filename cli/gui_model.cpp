@@ -153,6 +153,7 @@ render::FrameState GuiModel::display_frame() const {
     const double from = index_ == 0 ? -1.0 : run_.frames[index_ - 1].t;
     for (const render::ImpactMark& m : run_.impacts)
         if (m.t > from && m.t <= f.t) f.impacts.push_back(m);
+    f.impacts = render::shown_impacts(std::move(f.impacts));
     return f;
 }
 

@@ -361,9 +361,11 @@ double write_frames(render::Renderer& renderer, const SceneRun& run, const Rende
         }
         FrameState f = run.frames[k];
         render::add_trails(run.frames, trail, &f);
-        // A collision shows in the first frame at or after it.
+        // A collision shows in the first frame at or after it (the ones that matter: see
+        // render::shown_impacts).
         while (next_impact < run.impacts.size() && run.impacts[next_impact].t <= f.t)
             f.impacts.push_back(run.impacts[next_impact++]);
+        f.impacts = render::shown_impacts(std::move(f.impacts));
         render::FrameSink::Buffer* buffer = sink.acquire();
         renderer.render(f, decor, buffer->data());
         sink.submit(static_cast<long>(k), buffer);

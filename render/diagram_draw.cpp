@@ -259,11 +259,19 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     // Collisions: r vectors, the normal, the impulses, the contact point.
     std::vector<std::size_t> role_a, role_b;
     if (decor.impacts) {
-        for (const ImpactMark& im : frame.impacts) {
+        for (std::size_t which = 0; which < frame.impacts.size(); ++which) {
+            const ImpactMark& im = frame.impacts[which];
             if (im.a >= n || im.b >= n) continue;
+            const ImVec2 p = to_screen(im.point);
+            if (which >= kDetailedImpacts) {  // beyond the detailed ones: the impulse arrow only
+                const Vec3 kP = im.impulse * k_impulse_;
+                if (norm(to_screen(im.point + Vec3(kP.x(), kP.y(), 0)) - p) > 1.0f)
+                    arrow_item(Mark::impulse, static_cast<int>(im.b), im.point, im.point + Vec3(kP.x(), kP.y(), 0),
+                               components(im.impulse, dim), c.impulse);
+                continue;
+            }
             role_a.push_back(im.a);
             role_b.push_back(im.b);
-            const ImVec2 p = to_screen(im.point);
             // r vectors (not in 1D, where every lever arm is along the line of impact).
             if (dim > 1) {
                 const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
@@ -319,8 +327,16 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         }
     }
 
-    // Velocities and spins.
+    // Velocities and spins (labelled as motion_labelled() says).
     if (decor.velocities) {
+        std::size_t moving = 0;
+        double fastest = 0.0, fastest_spin = 0.0;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
+            ++moving;
+            fastest = std::max(fastest, xy(frame.bodies[i].v).norm());
+            fastest_spin = std::max(fastest_spin, std::abs(frame.bodies[i].w.z()));
+        }
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
             const BodyState& s = frame.bodies[i];
@@ -331,8 +347,9 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          components(s.v, dim), c.velocity);
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
-                pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
-                                   {shown}, c.velocity, false});
+                if (motion_labelled(xy(s.v).norm(), fastest, moving))
+                    pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
+                                       {shown}, c.velocity, false});
             }
             const double w = s.w.z();
             if (max_spin_ > 0 && std::abs(w) > 1e-9 * max_spin_ && std::abs(w) > 1e-9) {
@@ -348,8 +365,9 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.colour = c.spin;
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
-                pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
-                                   "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
+                if (motion_labelled(std::abs(w), fastest_spin, moving))
+                    pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
+                                       "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
             }
         }
     }
@@ -543,6 +561,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     const float pad = style_.px(3.0f), gap = style_.px(6.0f);
     for (const LabelRequest& p : pending) {
         Annotation a = placed_label(fonts, labels, items, p, pad, gap);
+        if (!labels->last_free()) continue;  // no free place near: left out, never overlapping
         a.from = a.to = to_world(p.anchor);
         add(std::move(a));
     }

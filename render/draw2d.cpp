@@ -271,6 +271,7 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
                                centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
                 if (free(r, strict == 1)) {
                     taken_.push_back(r);
+                    last_free_ = true;
                     return ImVec2(r.x, r.y);
                 }
                 if (step == 0.0f && turn == 0.0f) best = ImVec2(r.x, r.y);
@@ -278,10 +279,10 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
             // Near the anchor, or not at all; off bodies and arrows a little further.
             if (step >= (strict ? 3.0f : 2.0f)) break;
         }
-    // Nowhere free: the preferred spot, clamped into the bounds.
+    // Nowhere free: the preferred spot, clamped into the bounds, not reserved.
     best.x = std::clamp(best.x, bounds_.x, std::max(bounds_.x, bounds_.z - size.x));
     best.y = std::clamp(best.y, bounds_.y, std::max(bounds_.y, bounds_.w - size.y));
-    taken_.push_back(ImVec4(best.x, best.y, best.x + size.x, best.y + size.y));
+    last_free_ = false;
     return best;
 }
 

@@ -54,14 +54,19 @@ public:
     void avoid(std::vector<ImVec2> convex) { soft_.push_back(std::move(convex)); }
     // The top-left corner for a box of `size` near `anchor`, preferably in `direction`
     // (a unit vector, screen coordinates), `gap` pixels away; tries other sides and larger
-    // distances when that spot is taken, and reserves the result.
+    // distances when that spot is taken, and reserves the result. When no free spot is near,
+    // it returns the preferred spot without reserving it and last_free() is false: callers
+    // then leave the label out, so that labels never overlap (the most important are placed
+    // first).
     ImVec2 place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float gap);
+    bool last_free() const { return last_free_; }
 
 private:
     bool free(const ImVec4& r, bool strict) const;
     ImVec4 bounds_;
     std::vector<ImVec4> taken_;
     std::vector<std::vector<ImVec2>> soft_;
+    bool last_free_ = true;
 };
 
 // A label with a soft paper-coloured backing so that it reads over lines and fills.

@@ -68,6 +68,34 @@ ImpactMark impact_mark_of(const Event<D>& e) {
 ImpactMark impact_mark(const Scene&, const Event2& e) { return impact_mark_of(e); }
 ImpactMark impact_mark(const Scene&, const Event3& e) { return impact_mark_of(e); }
 
+std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts) {
+    if (impacts.size() <= 1) return impacts;
+    double largest = 0.0;
+    for (const ImpactMark& m : impacts) largest = std::max(largest, m.impulse.norm());
+    std::vector<std::size_t> order(impacts.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    // Largest first; equal impulses keep time order.
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
+        return impacts[i].impulse.norm() > impacts[j].impulse.norm();
+    });
+    std::vector<bool> keep(impacts.size(), false);
+    for (std::size_t r = 0; r < order.size() && r < kMaxShownImpacts; ++r)
+        if (impacts[order[r]].impulse.norm() >= kShownImpulseFraction * largest) keep[order[r]] = true;
+    // The detailed ones (the largest) first, then the others; each group in time order.
+    std::vector<ImpactMark> out;
+    std::size_t detailed = 0;
+    for (std::size_t r = 0; r < order.size() && detailed < kDetailedImpacts; ++r)
+        if (keep[order[r]]) {
+            keep[order[r]] = false;
+            out.push_back(impacts[order[r]]);
+            ++detailed;
+        }
+    std::stable_sort(out.begin(), out.end(), [](const ImpactMark& a, const ImpactMark& b) { return a.t < b.t; });
+    for (std::size_t k = 0; k < impacts.size(); ++k)
+        if (keep[k]) out.push_back(impacts[k]);
+    return out;
+}
+
 void add_trails(const std::vector<FrameState>& history, double span, FrameState* frame) {
     frame->trails.assign(frame->bodies.size(), {});
     const auto first = std::lower_bound(

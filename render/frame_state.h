@@ -48,6 +48,28 @@ ImpactMark impact_mark(const Scene& scene, const Event1& e);
 ImpactMark impact_mark(const Scene& scene, const Event2& e);
 ImpactMark impact_mark(const Scene& scene, const Event3& e);
 
+// The collisions a frame draws, out of those since the previous frame. A contact-rich run has
+// hundreds between two frames (a box settling on a box: micro-collisions of 10^-5 N s); drawn
+// all, they bury the frame. Kept: those whose impulse is at least kShownImpulseFraction of the
+// largest among them, the kMaxShownImpacts largest, in time order. A frame with a few
+// collisions of similar size is unchanged.
+constexpr double kShownImpulseFraction = 0.1;
+constexpr std::size_t kMaxShownImpacts = 6;
+std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts);
+// How many of a frame's (shown) collisions get their full annotation: the impulse's value, the
+// normal n and the lever arms r_a, r_b. The others draw their impulse arrow only.
+constexpr std::size_t kDetailedImpacts = 3;
+
+// Velocity and spin labels in a frame of more than kQuietBodies moving bodies: only for the
+// bodies whose speed (or spin) is at least kShownMotionFraction of the frame's largest (their
+// arrows are drawn all the same). Fewer bodies: every one is labelled.
+constexpr std::size_t kQuietBodies = 4;
+constexpr double kShownMotionFraction = 0.1;
+// Whether a value of `size` is labelled among `count` bodies whose largest is `largest`.
+inline bool motion_labelled(double size, double largest, std::size_t count) {
+    return count <= kQuietBodies || size >= kShownMotionFraction * largest;
+}
+
 // Fills frame.trails from earlier frames: for each body the centres at the frames within
 // `span` seconds before frame.t (in `history`, time order), then its current centre.
 void add_trails(const std::vector<FrameState>& history, double span, FrameState* frame);

@@ -467,15 +467,38 @@ void TimeLine::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) c
     draw_rich_text(dl, fonts, fonts.small, ImVec2(x1 + style_.px(8.0f), cy - 0.55f * fonts.small->FontSize), c.muted, end);
     dl->AddRectFilled(ImVec2(x0, cy - bar), ImVec2(x1, cy + bar), c.grid, bar);
     dl->AddRectFilled(ImVec2(x0, cy - bar), ImVec2(X(t), cy + bar), with_alpha(c.velocity, 0.55f), bar);
-    // Collisions: ticks across the bar (the first one a triangle below it).
-    for (std::size_t k = 0; k < collisions_.size(); ++k) {
-        const float x = std::round(X(collisions_[k]));
-        const Colour colour = collisions_[k] <= t ? c.impulse : with_alpha(c.impulse, 0.45f);
-        dl->AddLine(ImVec2(x, cy - 2.2f * bar), ImVec2(x, cy + 2.2f * bar), colour, style_.lw(1.5f));
-        if (k == 0) {
-            const float s = style_.px(5.0f);
-            dl->AddTriangleFilled(ImVec2(x, cy + 2.4f * bar), ImVec2(x - s, cy + 2.4f * bar + 1.4f * s),
-                                  ImVec2(x + s, cy + 2.4f * bar + 1.4f * s), colour);
+    // Collisions: ticks across the bar (the first one a triangle below it). Many collisions
+    // (a pile settling: thousands) would merge into one bar; beyond kTicks they are counted in
+    // bins a few pixels wide instead, each a bar rising as the logarithm of its count (the
+    // fullest bin the tallest): where the collisions crowd, and when.
+    constexpr std::size_t kTicks = 40;
+    if (collisions_.size() > kTicks) {
+        const int bins = std::max(1, static_cast<int>((x1 - x0) / style_.px(3.0f)));
+        std::vector<int> count(static_cast<std::size_t>(bins), 0);
+        for (double tc : collisions_) {
+            const int b = std::clamp(static_cast<int>(std::clamp(tc / duration_, 0.0, 1.0) * bins), 0, bins - 1);
+            ++count[static_cast<std::size_t>(b)];
+        }
+        const int most = *std::max_element(count.begin(), count.end());
+        const float w = (x1 - x0) / static_cast<float>(bins);
+        for (int b = 0; b < bins; ++b) {
+            const int nb = count[static_cast<std::size_t>(b)];
+            if (nb == 0) continue;
+            const float h = bar * (1.0f + 1.6f * static_cast<float>(std::log1p(nb) / std::log1p(most)));
+            const float xb = x0 + w * static_cast<float>(b);
+            const Colour colour = duration_ * (b + 0.5) / bins <= t ? c.impulse : with_alpha(c.impulse, 0.45f);
+            dl->AddRectFilled(ImVec2(xb, cy - h), ImVec2(xb + std::max(1.0f, 0.8f * w), cy + bar), colour);
+        }
+    } else {
+        for (std::size_t k = 0; k < collisions_.size(); ++k) {
+            const float x = std::round(X(collisions_[k]));
+            const Colour colour = collisions_[k] <= t ? c.impulse : with_alpha(c.impulse, 0.45f);
+            dl->AddLine(ImVec2(x, cy - 2.2f * bar), ImVec2(x, cy + 2.2f * bar), colour, style_.lw(1.5f));
+            if (k == 0) {
+                const float s = style_.px(5.0f);
+                dl->AddTriangleFilled(ImVec2(x, cy + 2.4f * bar), ImVec2(x - s, cy + 2.4f * bar + 1.4f * s),
+                                      ImVec2(x + s, cy + 2.4f * bar + 1.4f * s), colour);
+            }
         }
     }
     dl->AddCircleFilled(ImVec2(X(t), cy), style_.px(6.0f), c.velocity);

@@ -139,6 +139,8 @@ private:
 
 // The run from 0 to its duration as a bar across the frame: a tick at every collision (a
 // triangle for the first, whose before / at / after figure is made), the time so far filled.
+// Beyond 40 collisions, their density instead: bars a few pixels wide, rising with the
+// logarithm of the count in each.
 class TimeLine {
 public:
     explicit TimeLine(const Style& style) : style_(style) {}

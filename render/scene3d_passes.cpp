@@ -269,7 +269,14 @@ Annotations annotations3d(const View3d& view, const FrameState& frame, const Dec
         item(Mark::body, static_cast<int>(i), s.x, s.x, pose_value(s, dim), 0).small = decor.com;
     }
     if (decor.impacts)
-        for (const ImpactMark& im : frame.impacts) {
+        for (std::size_t which = 0; which < frame.impacts.size(); ++which) {
+            const ImpactMark& im = frame.impacts[which];
+            if (which >= kDetailedImpacts) {  // beyond the detailed ones: the impulse arrow only
+                item(Mark::impulse, static_cast<int>(im.b), im.point, im.point + k.k_impulse * im.impulse,
+                     value(im.impulse), pal.impulse)
+                    .faint = true;
+                continue;
+            }
             const std::pair<std::size_t, const char*> ends[2] = {{im.a, "r_{a}"}, {im.b, "r_{b}"}};
             for (const auto& [i, name] : ends)
                 if (i < n && view.solids.bodies[i].drawn())

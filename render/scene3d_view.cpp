@@ -228,6 +228,15 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     // Impacts first (each impulse, its normal, its r vectors), then velocities and spins, then
     // the names, as before the list existed.
     std::vector<LabelRequest> impacts, motion;
+    // Velocity and spin labels as motion_labelled() says.
+    std::size_t moving = 0;
+    double fastest = 0.0, fastest_spin = 0.0;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (I.scene.bodies[i].is_static() || !I.solids.bodies[i].drawn() || !decor.in_focus(i)) continue;
+        ++moving;
+        fastest = std::max(fastest, frame.bodies[i].v.norm());
+        fastest_spin = std::max(fastest_spin, frame.bodies[i].w.norm());
+    }
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         const int of = static_cast<int>(k);
@@ -249,15 +258,17 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::velocity: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double v = norm_of(a.value);
-            motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
-                              c.velocity, false});
+            if (motion_labelled(v, fastest, moving))
+                motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
+                                  c.velocity, false});
             break;
         }
         case Mark::spin: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double w = norm_of(a.value);
-            motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
-                              c.spin, false});
+            if (motion_labelled(w, fastest_spin, moving))
+                motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
+                                  c.spin, false});
             break;
         }
         default:
@@ -275,7 +286,10 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     }
     const float pad = I.style.px(3.0f), gap = I.style.px(6.0f);
     for (const LabelRequest& p : pending)
-        if (!p.text.empty()) items.push_back(placed_label(fonts, labels, items, p, pad, gap));
+        if (!p.text.empty()) {
+            Annotation a = placed_label(fonts, labels, items, p, pad, gap);
+            if (labels->last_free()) items.push_back(std::move(a));  // else left out
+        }
     return items;
 }
 
