@@ -259,11 +259,10 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     // Collisions: r vectors, the normal, the impulses, the contact point.
     std::vector<std::size_t> role_a, role_b;
     if (decor.impacts) {
-        for (std::size_t which = 0; which < frame.impacts.size(); ++which) {
-            const ImpactMark& im = frame.impacts[which];
+        for (const ImpactMark& im : frame.impacts) {
             if (im.a >= n || im.b >= n) continue;
             const ImVec2 p = to_screen(im.point);
-            if (which >= kDetailedImpacts) {  // beyond the detailed ones: the impulse arrow only
+            if (!im.detailed) {  // the impulse arrow only (render::shown_impacts)
                 const Vec3 kP = im.impulse * k_impulse_;
                 if (norm(to_screen(im.point + Vec3(kP.x(), kP.y(), 0)) - p) > 1.0f)
                     arrow_item(Mark::impulse, static_cast<int>(im.b), im.point, im.point + Vec3(kP.x(), kP.y(), 0),

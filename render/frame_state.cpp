@@ -81,18 +81,26 @@ std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts) {
     std::vector<bool> keep(impacts.size(), false);
     for (std::size_t r = 0; r < order.size() && r < kMaxShownImpacts; ++r)
         if (impacts[order[r]].impulse.norm() >= kShownImpulseFraction * largest) keep[order[r]] = true;
-    // The detailed ones (the largest) first, then the others; each group in time order.
+    // The detailed ones (the largest) first, then the others; each group in time order. A
+    // collision of a pair already detailed at (nearly, 1 mm) the same point is not detailed
+    // again: a ball's last bounces would stack their n and r labels on one point.
     std::vector<ImpactMark> out;
-    std::size_t detailed = 0;
-    for (std::size_t r = 0; r < order.size() && detailed < kDetailedImpacts; ++r)
-        if (keep[order[r]]) {
-            keep[order[r]] = false;
-            out.push_back(impacts[order[r]]);
-            ++detailed;
-        }
+    for (std::size_t r = 0; r < order.size() && out.size() < kDetailedImpacts; ++r) {
+        const ImpactMark& m = impacts[order[r]];
+        if (!keep[order[r]]) continue;
+        bool again = false;
+        for (const ImpactMark& d : out)
+            again = again || (d.a == m.a && d.b == m.b && (d.point - m.point).norm() < 1e-3);
+        if (again) continue;
+        keep[order[r]] = false;
+        out.push_back(m);
+    }
     std::stable_sort(out.begin(), out.end(), [](const ImpactMark& a, const ImpactMark& b) { return a.t < b.t; });
     for (std::size_t k = 0; k < impacts.size(); ++k)
-        if (keep[k]) out.push_back(impacts[k]);
+        if (keep[k]) {
+            out.push_back(impacts[k]);
+            out.back().detailed = false;
+        }
     return out;
 }
 

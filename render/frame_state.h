@@ -22,6 +22,7 @@ struct ImpactMark {
     Vec3 point = Vec3::Zero();    // m
     Vec3 normal = Vec3::UnitX();  // unit
     Vec3 impulse = Vec3::Zero();  // N s, on b
+    bool detailed = true;  // drawn with its value, n and r_a, r_b; else its impulse arrow only
 };
 
 struct TrailPoint {
@@ -56,14 +57,15 @@ ImpactMark impact_mark(const Scene& scene, const Event3& e);
 constexpr double kShownImpulseFraction = 0.1;
 constexpr std::size_t kMaxShownImpacts = 6;
 std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts);
-// How many of a frame's (shown) collisions get their full annotation: the impulse's value, the
-// normal n and the lever arms r_a, r_b. The others draw their impulse arrow only.
+// How many of a frame's (shown) collisions get their full annotation (ImpactMark::detailed):
+// the impulse's value, the normal n and the lever arms r_a, r_b; not two of one pair at the
+// same point. The others draw their impulse arrow only.
 constexpr std::size_t kDetailedImpacts = 3;
 
 // Velocity and spin labels in a frame of more than kQuietBodies moving bodies: only for the
 // bodies whose speed (or spin) is at least kShownMotionFraction of the frame's largest (their
 // arrows are drawn all the same). Fewer bodies: every one is labelled.
-constexpr std::size_t kQuietBodies = 4;
+constexpr std::size_t kQuietBodies = 8;
 constexpr double kShownMotionFraction = 0.1;
 // Whether a value of `size` is labelled among `count` bodies whose largest is `largest`.
 inline bool motion_labelled(double size, double largest, std::size_t count) {

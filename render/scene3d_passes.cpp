@@ -269,9 +269,8 @@ Annotations annotations3d(const View3d& view, const FrameState& frame, const Dec
         item(Mark::body, static_cast<int>(i), s.x, s.x, pose_value(s, dim), 0).small = decor.com;
     }
     if (decor.impacts)
-        for (std::size_t which = 0; which < frame.impacts.size(); ++which) {
-            const ImpactMark& im = frame.impacts[which];
-            if (which >= kDetailedImpacts) {  // beyond the detailed ones: the impulse arrow only
+        for (const ImpactMark& im : frame.impacts) {
+            if (!im.detailed) {  // the impulse arrow only (render::shown_impacts)
                 item(Mark::impulse, static_cast<int>(im.b), im.point, im.point + k.k_impulse * im.impulse,
                      value(im.impulse), pal.impulse)
                     .faint = true;
