@@ -8,15 +8,23 @@
 //                        most 2.5 mm per step: contacts found closer to the instant of impact);
 //   box2d/pyramid20      210 boxes in 20 rows resting on the ground (Coulomb 0.6, e = 0), 60 Hz,
 //                        Box2D's defaults otherwise: bodies at rest for 0.5 s fall asleep;
-//   box2d/pyramid20-awake  the same with sleeping off (collide has no sleeping).
+//   box2d/pyramid20-awake  the same with sleeping off (collide has no sleeping);
+//   box2d/bin/N          N = 100, 400 boxes of random sizes (0.2 to 0.3 m) and angles dropped
+//                        into a walled bin (scenes::bin, seed 2024: Coulomb 0.5, e = 0.2), at
+//                        600 Hz, beside world2d/bin/N;
+//   box2d-60hz/bin/100   the same 100 boxes at 60 Hz.
+//   (The bins run their second in 60 frames, as world2d/bin/N: bench/settling.h.)
 // Each iteration builds a fresh world with the timer paused. Counter "energy_drift":
-// (E(1 s) - E(0)) / E(0), kinetic energy for the gas, kinetic plus potential for the pyramid.
-// Benchmarks measure; they assert nothing.
+// (E(1 s) - E(0)) / E(0), kinetic energy for the gas, kinetic plus potential for the pyramid;
+// the bins instead "penetration_mm", "penetration_max_mm" and "resting_speed" (bench/settling.h,
+// measured with collide's narrow phase on the poses Box2D ends with, as for collide's world).
+// All count Box2D's "steps". Benchmarks measure; they assert nothing.
 #include <optional>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
+#include "bench/settling.h"
 #include "compare/box2d_world.h"
 #include "tests/engine/world_scenes.h"
 
@@ -79,6 +87,37 @@ void pyramid20_awake(benchmark::State& state) {
     simulate_one_second(state, scenes::pyramid({}), at(60.0, false), true);
 }
 
+// The bin (the same seed as world2d/bin/N): a fresh world run through one second in 60 frames
+// (bench/settling.h; Box2D's fixed steps are the same as in one advance_to(1.0)), then the
+// settling counters from the last iteration's world and from one more, untimed run of the same
+// frames.
+void simulate_bin(benchmark::State& state, double hz) {
+    scenes::BinSpec b;
+    b.n = static_cast<int>(state.range(0));
+    b.seed = 2024;
+    const Scene scene = scenes::bin(2, b);
+    const compare::Box2DSettings settings = at(hz);
+    std::optional<compare::Box2DWorld> world;
+    for (auto _ : state) {
+        state.PauseTiming();
+        world.reset();
+        world.emplace(scene, settings);
+        state.ResumeTiming();
+        bench::run_frames([&](double t) { world->advance_to(t, nullptr); });
+        benchmark::ClobberMemory();
+    }
+    if (!world) return;
+    state.counters["steps"] = static_cast<double>(world->steps());
+    compare::Box2DWorld framed(scene, settings);
+    const double deepest = bench::deepest_overlap_over_frames(scene, [&](double t) {
+        framed.advance_to(t, nullptr);
+        return framed.bodies();
+    });
+    bench::settling_counters(state, scene, world->bodies(), deepest);
+}
+void bin600(benchmark::State& state) { simulate_bin(state, 600.0); }
+void bin60(benchmark::State& state) { simulate_bin(state, 60.0); }
+
 [[maybe_unused]] const bool registered = [] {
     for (int n : {100, 1000, 5000}) {
         benchmark::RegisterBenchmark("box2d/gas", gas60)->Arg(n)->Unit(benchmark::kMillisecond);
@@ -87,6 +126,11 @@ void pyramid20_awake(benchmark::State& state) {
     benchmark::RegisterBenchmark("box2d/pyramid20", pyramid20)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("box2d/pyramid20-awake", pyramid20_awake)
         ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("box2d/bin", bin600)
+        ->Arg(100)
+        ->Arg(400)
+        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("box2d-60hz/bin", bin60)->Arg(100)->Unit(benchmark::kMillisecond);
     return true;
 }();
 

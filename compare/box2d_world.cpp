@@ -307,4 +307,10 @@ std::vector<Body2> Box2DWorld::bodies() const {
     return out;
 }
 
+Box2DWorld::Mass Box2DWorld::mass_of(std::size_t i) const {
+    const b2Body* x = impl_->body.at(i);
+    // GetInertia is about the body origin, which is the centre of mass (see create()).
+    return {x->GetMass(), x->GetInertia()};
+}
+
 }  // namespace collide::compare

@@ -109,6 +109,14 @@ public:
     // Every body's state now, as the engine's bodies (mass and inertia from the scene).
     std::vector<Body2> bodies() const;
 
+    // What Box2D holds for body i, read back from it (for tests): mass (kg, 0 when static) and
+    // rotational inertia about the centre of mass (kg m^2).
+    struct Mass {
+        double mass = 0.0;
+        double inertia = 0.0;
+    };
+    Mass mass_of(std::size_t i) const;
+
 private:
     struct Impl;
     std::unique_ptr<Impl> impl_;

@@ -19,6 +19,7 @@ packages=(
   fonts-dejavu-core                 # renderer: the label font (DejaVu Sans, Greek, sub/superscripts)
   ffmpeg                            # collide render --format mp4|gif (optional for the build)
   libbox2d-dev                      # Box2D 2.4.1: the 2D reference of `collide compare`
+  libbullet-dev                     # Bullet 3.24: collide-bench's 3D peer (optional for the build)
   libglfw3-dev                      # collide gui: its window (optional for the build)
   xvfb xauth                        # collide gui's tests: a screen without a display (xvfb-run)
   clang libclang-rt-14-dev          # scripts/test-sanitize.sh: clang 14, its sanitizers and libFuzzer

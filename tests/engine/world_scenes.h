@@ -1,7 +1,10 @@
 // Scenes for the 2D and 3D worlds built in code (tests/engine/world*_test.cpp,
-// bench/world_bench.cpp and bench/box2d_bench.cpp): single bodies, static planes, an elastic gas
-// in a walled box, a pile of falling columns and a pyramid of boxes at rest. Scene and SceneBody are plain data (engine/scene.h); masses and
-// inertia come from engine/mass.h as the scene file reader (scenario/scene_file.cpp) computes them.
+// bench/world_bench.cpp, bench/box2d_bench.cpp, bench/bullet_bench.cpp): single bodies, static
+// planes, an elastic gas in a walled box, a pile of falling columns, a pyramid of boxes at rest,
+// boxes dropped into a bin and a tower knocked over by a ball; and measures of how well a scene
+// has settled (overlap, surface speed) that judge any engine's poses alike. Scene and SceneBody
+// are plain data (engine/scene.h); masses and inertia come from engine/mass.h as the scene file
+// reader (scenario/scene_file.cpp) computes them.
 //
 // Random draws are reproducible on every standard library: a std::mt19937_64 with a fixed seed
 // whose raw 64-bit output is turned into doubles by hand (as tests/engine/random_bodies.h does).
@@ -278,6 +281,188 @@ inline Scene pyramid(const PyramidSpec& p) {
                                          p.size, p.mass, x));
         }
     return s;
+}
+
+// ---- Boxes dropped into a walled bin --------------------------------------------------------
+
+// n boxes with sides drawn uniformly in [min_side, max_side] (each side on its own: two in 2D,
+// three in 3D) at random angles (3D: orientations uniform over all rotations), at rest on a
+// grid above the floor of a bin open at the top, dropped under gravity (0, -g, 0). The bin is
+// the floor y = 0 and walls x = 0, x = W (3D also z = 0, z = W), static half-planes /
+// half-spaces solid outside. Grid cells are `bin_pitch` apart, a centimetre more than the
+// largest box's diagonal, so no two boxes overlap and none touches a wall whatever its angle;
+// the lowest layer's centres are half a pitch above the floor. The bin is exactly
+// `bin_columns` cells wide: 2D 2 sqrt(n) columns (100 boxes: 20 columns, 8.7 m, 5 rows),
+// 3D cbrt(n) columns each way (100 boxes: 5 x 5, 2.6 m, 4 layers); settled, the boxes lie a
+// few deep (2D 100: about 4 layers; 400: 8). Uniform density, a box of the mean size
+// (0.25 m sides) weighing 1 kg: 16 kg/m^2 in 2D (0.64 to 1.44 kg), 64 kg/m^3 in 3D (0.51 to
+// 1.73 kg); inertia of a uniform box. Coulomb friction mu, restitution e, simultaneous
+// policy. The walls come first (2D: floor, left, right; 3D: floor, x0, x1, z0, z1), then the
+// boxes b0, b1, ... row by row from the bottom.
+struct BinSpec {
+    int n = 100;
+    std::uint64_t seed = 1;
+    double min_side = 0.2;    // m
+    double max_side = 0.3;    // m
+    double density2 = 16.0;   // kg/m^2 (2D)
+    double density3 = 64.0;   // kg/m^3 (3D)
+    double mu = 0.5;
+    double e = 0.2;
+    double g = 9.81;          // m/s^2
+    int columns = 0;          // cells across the bin (each way in 3D); 0: as above
+};
+
+// m: grid cell size, the largest box's diagonal plus 1 cm.
+inline double bin_pitch(int dimension, const BinSpec& b) {
+    return std::sqrt(static_cast<double>(dimension)) * b.max_side + 0.01;
+}
+inline int bin_columns(int dimension, const BinSpec& b) {
+    if (b.columns > 0) return b.columns;
+    const double c = dimension == 2 ? 2.0 * std::sqrt(static_cast<double>(b.n))
+                                    : std::cbrt(static_cast<double>(b.n));
+    return std::max(1, static_cast<int>(std::ceil(c - 1e-9)));
+}
+// m: the inner width W of the bin.
+inline double bin_width(int dimension, const BinSpec& b) {
+    return bin_columns(dimension, b) * bin_pitch(dimension, b);
+}
+
+inline Scene bin(int dimension, const BinSpec& b) {
+    Scene s = empty_scene(dimension, Policy::simultaneous, b.e, Vec3(0.0, -b.g, 0.0));
+    s.model = Model::coulomb;
+    s.friction = b.mu;
+    const double pitch = bin_pitch(dimension, b), W = bin_width(dimension, b);
+    const int c = bin_columns(dimension, b);
+    if (dimension == 2) {
+        s.bodies.push_back(half_plane("floor", Vec2(0, 1), 0.0));
+        s.bodies.push_back(half_plane("left", Vec2(1, 0), 0.0));
+        s.bodies.push_back(half_plane("right", Vec2(-1, 0), -W));
+    } else {
+        s.bodies.push_back(half_space("floor", Vec3(0, 1, 0), 0.0));
+        s.bodies.push_back(half_space("x0", Vec3(1, 0, 0), 0.0));
+        s.bodies.push_back(half_space("x1", Vec3(-1, 0, 0), -W));
+        s.bodies.push_back(half_space("z0", Vec3(0, 0, 1), 0.0));
+        s.bodies.push_back(half_space("z1", Vec3(0, 0, -1), -W));
+    }
+    Random rng(b.seed);
+    for (int i = 0; i < b.n; ++i) {
+        const std::string name = "b" + std::to_string(i);
+        if (dimension == 2) {
+            const double w = rng.uniform(b.min_side, b.max_side);
+            const double h = rng.uniform(b.min_side, b.max_side);
+            const double angle = rng.uniform(0.0, 2.0 * kPi);
+            const Vec2 x((i % c + 0.5) * pitch, (i / c + 0.5) * pitch);
+            s.bodies.push_back(rectangle(name, w, h, b.density2 * w * h, x, angle));
+        } else {
+            Vec3 size;
+            for (int k = 0; k < 3; ++k) size[k] = rng.uniform(b.min_side, b.max_side);
+            // Uniform over rotations (Shoemake's subgroup algorithm: three uniform draws).
+            const double u1 = rng.uniform(0.0, 1.0), u2 = rng.uniform(0.0, 2.0 * kPi),
+                         u3 = rng.uniform(0.0, 2.0 * kPi);
+            const double r1 = std::sqrt(1.0 - u1), r2 = std::sqrt(u1);
+            const Quat q(r2 * std::cos(u3), r1 * std::sin(u2), r1 * std::cos(u2),
+                         r2 * std::sin(u3));
+            const Vec3 x((i % c + 0.5) * pitch, (i / (c * c) + 0.5) * pitch,
+                         ((i / c) % c + 0.5) * pitch);
+            s.bodies.push_back(box(name, 0.5 * size, b.density3 * size.prod(), x, q.normalized()));
+        }
+    }
+    return s;
+}
+
+// ---- A tower of boxes knocked over by a ball -----------------------------------------------
+
+// `levels` boxes (mass 1 kg, 0.2 x 0.1 x 0.2 m, the short side up) stacked exactly touching on
+// the ground plane y = 0 (normal +y) at y = 0.05 + 0.1 i, x = z = 0, at rest; a 2 kg ball
+// (r = 0.08 m) at (-0.8, 0.45, 0) thrown at them at (4, 0, 0) m/s (it meets the fourth box,
+// 0.3 to 0.4 m up, after about 0.15 s). Coulomb mu 0.5, e 0.3, simultaneous policy, gravity
+// (0, -9.81, 0). The ground comes first, then the boxes from the bottom (box0, ...), then the
+// ball.
+struct TowerSpec {
+    int levels = 6;
+    double mass = 1.0;                       // kg, each box
+    Vec3 size = Vec3(0.2, 0.1, 0.2);         // m, full edge lengths
+    double ball_mass = 2.0;                  // kg
+    double ball_radius = 0.08;               // m
+    Vec3 ball_x = Vec3(-0.8, 0.45, 0.0);     // m
+    Vec3 ball_v = Vec3(4.0, 0.0, 0.0);       // m/s
+    double mu = 0.5;
+    double e = 0.3;
+    double g = 9.81;                         // m/s^2
+};
+
+inline Scene tower3d(const TowerSpec& t) {
+    Scene s = empty_scene(3, Policy::simultaneous, t.e, Vec3(0.0, -t.g, 0.0));
+    s.model = Model::coulomb;
+    s.friction = t.mu;
+    s.bodies.push_back(half_space("ground", Vec3(0, 1, 0), 0.0));
+    for (int i = 0; i < t.levels; ++i)
+        s.bodies.push_back(box("box" + std::to_string(i), 0.5 * t.size, t.mass,
+                               Vec3(0.0, (i + 0.5) * t.size.y(), 0.0)));
+    s.bodies.push_back(sphere("ball", t.ball_radius, t.ball_mass, t.ball_x, t.ball_v));
+    return s;
+}
+
+// ---- How well a scene has settled ----------------------------------------------------------
+
+// The deepest overlap (m, >= 0) between any two bodies, static ones included, at the given
+// poses, measured with collide's own narrow phase (engine/shape2d.h, shape3d.h: minus the
+// signed separation), so that poses read back from any engine are judged alike. Pairs whose
+// bounding circles / spheres are apart are skipped; two static bodies are never compared.
+inline double deepest_overlap(const Scene& scene, const std::vector<Body2>& bodies) {
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+            const Body2 &a = bodies[i], &b = bodies[j];
+            if (a.is_static && b.is_static) continue;
+            const Shape2 &sa = scene.bodies[i].shape2, &sb = scene.bodies[j].shape2;
+            if (!a.is_static && !b.is_static &&
+                (a.position - b.position).norm() > bounding_radius(sa) + bounding_radius(sb))
+                continue;
+            const Manifold2 m =
+                collide(sa, Pose2{a.position, a.angle}, sb, Pose2{b.position, b.angle});
+            deepest = std::max(deepest, -m.separation);
+        }
+    return deepest;
+}
+inline double deepest_overlap(const Scene& scene, const std::vector<Body3>& bodies) {
+    double deepest = 0.0;
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        for (std::size_t j = i + 1; j < bodies.size(); ++j) {
+            const Body3 &a = bodies[i], &b = bodies[j];
+            if (a.is_static && b.is_static) continue;
+            const Shape3 &sa = scene.bodies[i].shape3, &sb = scene.bodies[j].shape3;
+            if (!a.is_static && !b.is_static &&
+                (a.position - b.position).norm() > bounding_radius(sa) + bounding_radius(sb))
+                continue;
+            const Manifold3 m = collide(sa, Pose3{a.position, a.orientation}, sb,
+                                        Pose3{b.position, b.orientation});
+            deepest = std::max(deepest, -m.separation);
+        }
+    return deepest;
+}
+
+// The fastest surface point's speed bound over the dynamic bodies (m/s): max |v| + |w| R,
+// R the shape's bounding radius. Zero when everything is at rest.
+inline double fastest_surface_speed(const Scene& scene, const std::vector<Body2>& bodies) {
+    double fastest = 0.0;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const Body2& b = bodies[i];
+        if (b.is_static) continue;
+        const double R = bounding_radius(scene.bodies[i].shape2);
+        fastest = std::max(fastest, b.v.norm() + std::abs(b.w) * R);
+    }
+    return fastest;
+}
+inline double fastest_surface_speed(const Scene& scene, const std::vector<Body3>& bodies) {
+    double fastest = 0.0;
+    for (std::size_t i = 0; i < bodies.size(); ++i) {
+        const Body3& b = bodies[i];
+        if (b.is_static) continue;
+        const double R = bounding_radius(scene.bodies[i].shape3);
+        fastest = std::max(fastest, b.v.norm() + b.w.norm() * R);
+    }
+    return fastest;
 }
 
 // ---- Energies ------------------------------------------------------------------------------
