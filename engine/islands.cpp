@@ -41,7 +41,7 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         while (!stack.empty()) {
             const std::size_t k = stack.back();
             stack.pop_back();
-            if (bodies_[k].is_static || mark_[k] == in) continue;
+            if (bodies_[k].is_static || stepped_[k] || mark_[k] == in) continue;
             mark_[k] = in;
             parent_[k] = k;
             bodies.push_back(k);
@@ -80,9 +80,27 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
             if (!rests) continue;
             resting.push_back(ct);
             for (std::size_t k : {ct.a, ct.b}) add(k);
-            if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent_[root(ct.a)] = root(ct.b);
         }
     }
+    // Whatever touches a stepped body is stepped too (and, with stepping = always, whatever
+    // rests on anything): passed on through touching bodies ("Stepped islands" in the header).
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const Contact& ct : contacts) {
+            const bool joins = stepped_[ct.a] || stepped_[ct.b] || scene_.stepping == StepMode::always;
+            if (!joins) continue;
+            for (std::size_t k : {ct.a, ct.b})
+                if (!stepped_[k] && may_step(k)) {
+                    join(k);
+                    changed = true;
+                }
+        }
+    }
+    resting.erase(std::remove_if(resting.begin(), resting.end(),
+                                 [&](const Contact& ct) { return stepped_[ct.a] || stepped_[ct.b]; }),
+                  resting.end());
+    for (const Contact& ct : resting)
+        if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent_[root(ct.a)] = root(ct.b);
     // The islands in the order of their roots, each's contacts by pair.
     std::vector<std::pair<std::size_t, std::size_t>> order;  // (root, index in resting)
     for (std::size_t c = 0; c < resting.size(); ++c)
@@ -92,6 +110,14 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         const Contact &p = resting[x.second], &q = resting[y.second];
         return p.a != q.a ? p.a < q.a : p.b < q.b;
     });
+    // Those that joined move freely until the next step.
+    for (std::size_t k : bodies)
+        if (stepped_[k]) {
+            insert(k, t, substep_end_);
+            predict(k, t);
+        }
+    bodies.erase(std::remove_if(bodies.begin(), bodies.end(), [&](std::size_t k) { return stepped_[k] != 0; }),
+                 bodies.end());
     for (std::size_t k : bodies) set_free(k);
     const std::uint32_t member = fresh(&mark_, &mark_id_);
     std::vector<Contact> island;

@@ -7,6 +7,10 @@ namespace collide {
 
 const char* policy_name(Policy p) { return p == Policy::sequential ? "sequential" : "simultaneous"; }
 
+const char* step_mode_name(StepMode s) {
+    return s == StepMode::automatic ? "auto" : s == StepMode::always ? "always" : "never";
+}
+
 double Scene::pair_restitution(std::size_t i, std::size_t j) const {
     return std::min(bodies[i].restitution.value_or(restitution),
                     bodies[j].restitution.value_or(restitution));

@@ -20,6 +20,15 @@ namespace collide {
 enum class Policy { sequential, simultaneous };
 const char* policy_name(Policy p);
 
+// Which contacts of a 2D or 3D world advance by time steps instead of event by event
+// (engine/world.h, "Stepped islands"):
+//   automatic: where contacts persist (two moving bodies colliding again and again) and
+//              whatever touches them; every other impact exact;
+//   always:    every body from its first touching contact on (impacts of free bodies exact);
+//   never:     none: every contact exact, event by event (slow where contacts persist).
+enum class StepMode { automatic, always, never };
+const char* step_mode_name(StepMode s);  // "auto", "always", "never" (the scene file's words)
+
 struct SceneBody {
     std::string name;      // unique
     std::string shape;     // as named in the file: block, disc, rectangle, polygon, sphere, box, plane
@@ -43,6 +52,7 @@ struct Scene {
     // How a routh impact ends (engine/routh.h); the other models use Newton's law.
     RestitutionLaw restitution_law = RestitutionLaw::stronge;
     Policy policy = Policy::sequential;
+    StepMode stepping = StepMode::automatic;
     double restitution = 1.0;     // for bodies that set none
     double friction = 0.0;
     std::vector<SceneBody> bodies;

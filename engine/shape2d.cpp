@@ -69,9 +69,10 @@ Manifold2 polygon_disc(const std::vector<Vec2>& v, const std::vector<Vec2>& nrm,
 void world_polygon(const Polygon& p, const Pose2& pose, std::vector<Vec2>* v, std::vector<Vec2>* n) {
     v->resize(p.count);
     n->resize(p.count);
+    const Mat2 R = rotation(pose.angle);  // (Pose2::apply and rotate, one sine and cosine)
     for (int i = 0; i < p.count; ++i) {
-        (*v)[i] = pose.apply(p.vertices[i]);
-        (*n)[i] = pose.rotate(p.normals[i]);
+        (*v)[i] = pose.x + R * p.vertices[i];
+        (*n)[i] = R * p.normals[i];
     }
 }
 
@@ -134,7 +135,7 @@ double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& na
 // reference face (as in Box2D's b2CollidePolygons): up to two contact points.
 Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, const Pose2& pb,
                           double margin) {
-    std::vector<Vec2> va, na, vb, nb;
+    thread_local std::vector<Vec2> va, na, vb, nb;  // (kept: no allocation per call)
     world_polygon(A, pa, &va, &na);
     world_polygon(B, pb, &vb, &nb);
     const auto [sa, fa] = max_face_separation(va, na, vb);
@@ -228,8 +229,9 @@ Manifold2 halfplane_shape(const Shape2& plane, const Shape2& s, const Pose2& ps,
     }
     // Polygon: its deepest vertices; two when an edge lies (nearly) flat on the plane.
     std::array<std::pair<double, Vec2>, Polygon::kMaxVertices> d;
+    const Mat2 R = rotation(ps.angle);
     for (int i = 0; i < s.polygon.count; ++i) {
-        const Vec2 p = ps.apply(s.polygon.vertices[i]);
+        const Vec2 p = ps.x + R * s.polygon.vertices[i];
         d[i] = {plane.normal.dot(p) - plane.offset, p};
     }
     std::sort(d.begin(), d.begin() + s.polygon.count,
@@ -379,7 +381,7 @@ Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2
     const Pose2& pp = poly_a ? pa : pb;
     const Shape2& disc = poly_a ? b : a;
     const Pose2& pd = poly_a ? pb : pa;
-    std::vector<Vec2> v, n;
+    thread_local std::vector<Vec2> v, n;
     world_polygon(poly.polygon, pp, &v, &n);
     const Manifold2 m = polygon_disc(v, n, pd.x, disc.radius, margin);
     return poly_a ? m : flipped(m);

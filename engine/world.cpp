@@ -91,6 +91,9 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     searched_.assign(n, 0);
     parent_.assign(n, 0);
     before_.resize(n);
+    stepped_.assign(n, 0);
+    loose_.assign(n, 0);
+    still_.assign(n, 0.0);
     // The resting speeds (see "Resting contact" in world.h).
     const double g = gravity().norm();
     rest_smooth_ = 0.5 * kZenoTime * g;
@@ -190,6 +193,8 @@ template <int D>
 void World<D>::set_body(std::size_t i, const Body& body) {
     for (std::size_t j = 0; j < bodies_.size(); ++j) drift(j, time_);
     unweld(i);  // its new state is its own
+    stepped_[i] = 0;
+    loose_[i] = 0;
     bodies_[i] = body;
     track_[i].t = time_;
     // Whatever rested on or under it is re-examined at the start of the next substep.
@@ -289,6 +294,8 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     // Neither moves (static or asleep): nothing can happen between them.
     if ((bodies_[i].is_static || asleep_[i]) && (bodies_[j].is_static || asleep_[j])) return kNever;
     if (same_weld(i, j)) return kNever;  // stuck together
+    // Stepped bodies meet each other and static ones at their steps (see "Stepped islands").
+    if (meet_at_steps(i, j)) return kNever;
     if (passed(i, j)) return kNever;     // let through each other by the page's listing
     if (t == stall_time_ && stalled_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j)))
         return kNever;
@@ -322,8 +329,10 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
             if (un < -v_rest) return t;  // approaching now: an impact at this instant
             slow = slow || std::abs(un) <= v_rest;
         }
-        // A slow point rests: the pair belongs in an island (its forces), formed now if not yet.
-        if (slow && !same_island(a, b)) return t;
+        // A slow point rests: the pair belongs in an island (its forces), formed now if not yet
+        // (stepped bodies have no islands: a free one touching them joins them).
+        const bool steps = (stepped_[a] || bodies_[a].is_static) && (stepped_[b] || bodies_[b].is_static);
+        if (slow && !same_island(a, b) && !steps) return t;
     }
     if (closed) {
         const double s = plane_[p] ? plane_contact_time(shapes_[p].normal, Q.v, track_[q].a, gap, touching)
@@ -388,6 +397,8 @@ void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
         if (bodies_[i].is_static && bodies_[j].is_static) return;
         if (searched_[j] == search_ && !plane_[j]) return;  // reported from j's side
         if (same_weld(i, j) || passed(i, j)) return;        // stuck together, or let through
+        // Stepped bodies touch each other and static ones at their steps, not at instants.
+        if (meet_at_steps(i, j)) return;
         drift(j, t);
         const std::size_t a = std::min(i, j), b = std::max(i, j);
         const Manifold m = manifold(a, b);
@@ -505,6 +516,13 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     fresh(&searched_, &search_);
     auto reach = [&](std::size_t k) {
         if (bodies_[k].is_static || mark_[k] == reached) return false;
+        if (stepped_[k]) {  // it answers with its own mass; its other contacts act at its next step
+            mark_[k] = reached;
+            drift(k, t);
+            before_[k] = {bodies_[k].v, bodies_[k].w};
+            group.push_back(k);
+            return false;
+        }
         // A welded body brings its weld: an impulse on it moves them all.
         const std::vector<std::size_t> alone{k};
         for (std::size_t m : weld_of_[k] >= 0 ? welds_[weld_of_[k]].members : alone) {
@@ -551,6 +569,15 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         }
     }
 
+    // Stepped islands: a pair colliding again and again, and whatever a stepped body touched,
+    // are stepped from now on (see "Stepped islands" in the header).
+    for (const Contact& c : contacts) {
+        if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;
+        if (!bodies_[c.a].is_static && !bodies_[c.b].is_static) count_impact(c.a, c.b, t);
+        if (stepped_[c.a] || stepped_[c.b] || scene_.stepping == StepMode::always)
+            for (std::size_t k : {c.a, c.b}) join(k);
+    }
+
     // The stick model welds what it stuck (see "Stuck bodies" in the header).
     if (scene_.model == Model::stick)
         for (const Contact& c : contacts)
@@ -576,7 +603,17 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         events->push_back(ev);
         ++counters_.events;
     }
-    settle(group, t);
+    settle(group, t);  // (stepped bodies are left out)
+    for (std::size_t k : group) {
+        if (!stepped_[k]) continue;
+        if (bodies_[k].v != before_[k].v || bodies_[k].w != before_[k].w) {
+            wake(k);
+            loose_[k] = 1;
+        }
+        ++track_[k].version;
+        insert(k, t, substep_end_);
+        predict(k, t);
+    }
     return impact;
 }
 
@@ -607,29 +644,46 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
             for (std::size_t i = 0; i < bodies_.size(); ++i) track_[i].t = t_end;
             break;
         }
-        bool any_rest = false;
+        bool any_rest = false, any_stepped = false;
         double speed = 0.0, size = 0.0;
         std::size_t moving = 0;
         for (std::size_t i = 0; i < bodies_.size(); ++i) {
             if (bodies_[i].is_static) continue;
             any_rest = any_rest || (island_[i] != 0 && !asleep_[i]);
+            any_stepped = any_stepped || (stepped_[i] && !asleep_[i]);
             speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
             size += radius_[i];
             ++moving;
         }
         if (moving > 0 && speed > 0.0) h = std::min(h, std::max(shortest, 4.0 * size / speed));
-        if (any_rest || gravity().norm() > 0.0) h = std::min(h, kRestStep);
+        // Stepped islands: a substep never crosses a step's end; at a step's start they are solved.
+        bool step_now = false;
+        if (any_stepped) {
+            if (!(step_end_ - t0 > 1e-9 * kIslandStep)) {
+                step_now = true;
+                step_end_ = t0 + kIslandStep;
+            }
+            h = std::min(h, step_end_ - t0);
+            if (any_rest) h = std::min(h, kRestStep);
+        } else if (any_rest || gravity().norm() > 0.0) {
+            h = std::min(h, kRestStep);
+        }
         const double t1 = (t_end - t0 <= h) ? t_end : t0 + h;
         substep_end_ = t1;
         ++counters_.substeps;
 
         build_grid(t0, t1);
         heap_.clear();
+        if (step_now) {
+            const std::size_t recorded = events->size();
+            step_islands(t0, events);
+            if (on_impact && events->size() > recorded) on_impact(t0);
+        }
         // Resting contacts are found afresh each substep; then every body predicts its next impact.
         // Sleeping islands keep their (zero) motion and are neither re-solved nor predicted.
         std::vector<std::size_t> all;
         for (std::size_t i = 0; i < bodies_.size(); ++i)
-            if (!bodies_[i].is_static && !asleep_[i] && (island_[i] != 0 || gravity().norm() > 0.0))
+            if (!bodies_[i].is_static && !asleep_[i] && !stepped_[i] && (island_[i] != 0 || gravity().norm() > 0.0))
                 all.push_back(i);
         for (auto it = members_.begin(); it != members_.end();)
             it = asleep_[it->second.front()] ? std::next(it) : members_.erase(it);

@@ -57,6 +57,34 @@
 // may fall asleep again. A box on the ground, a settled column, a pyramid in balance cost
 // nothing once asleep; with nothing awake, advance_to jumps to its end.
 //
+// Stepped islands (the scene's `stepping`, engine/scene.h). Exact events collapse into
+// micro-collisions where contacts persist (boxes resting on boxes: a pile, a tower); there
+// the world advances by time steps instead. Rule (stepping = auto): a pair of moving bodies
+// that has collided kPersistImpacts times within kPersistWindow is in persistent contact; both
+// are stepped from then on, and so is every moving body that touches a stepped body (at an
+// impact or at a step's start). With stepping = always every body is stepped from its first
+// touching contact; with never, none is. Welded bodies and the page's listing are never stepped.
+// The stepped bodies advance together in steps of kIslandStep (engine/island_step.h: Moreau-
+// Jean at the impulse level, warm-started Gauss-Seidel sweeps, speculative contacts within
+// kSpeculative plus what the step can close, split-impulse correction of penetration beyond
+// 0.05 mm): at each step's start their contacts are found and solved, and during the step they
+// move at their new velocities (x+ = x- + h v+; a 3D body turns torque-free). What differs
+// from the exact world: a collision between stepped bodies happens at a step's start, up to
+// one step early, with Newton's law (e of the pair, no threshold) applied to the approach speed
+// before the step; friction is Coulomb's cone for coulomb and routh scenes (matrix and stick:
+// sticking, frictionless: none); a step records as an event only a pair's first contact (a
+// pair that carried no impulse at the previous step). A free body still meets a stepped one at
+// the exact instant (the stepped body moves on a straight line within the step): the impact is
+// resolved there by the scene's model and policy on the free body's contacts (the stepped
+// body answers with its own mass and inertia; its other contacts act at the next step) and
+// the free body joins the stepped ones. A stepped body with no contact within the margin at a
+// step's start is free again (exact events); a stepped island whose every surface point moved
+// slower than kStepSleepSpeed for kStepSleepTime falls asleep (v and w exactly zero) until
+// something touches it. A body joining between two steps keeps its free motion until the next,
+// and a stepped body whose motion an impact changed within a step is loose until the next:
+// it meets stepped and static bodies at exact instants too (resolved like any impact), so
+// nothing pushed between two steps is pushed into its neighbours.
+//
 // Stuck bodies (the stick model). An impact resolved by the stick model between two dynamic
 // bodies welds them: from then on they move as one rigid body (a weld), whose mass, centre and
 // inertia are the parallel-axis sums of its members' (combined_body in engine/response.h) and
@@ -93,6 +121,7 @@
 
 #include "engine/broad_phase.h"
 #include "engine/contact_solver.h"
+#include "engine/island_step.h"
 #include "engine/run_count.h"
 #include "engine/scene.h"
 #include "engine/space.h"
@@ -162,6 +191,8 @@ public:
     bool asleep(std::size_t i) const { return asleep_[i] != 0; }
     // True while body i is stuck to other bodies (see "Stuck bodies").
     bool welded(std::size_t i) const { return weld_of_[i] >= 0; }
+    // True while body i advances by time steps (see "Stepped islands").
+    bool stepped(std::size_t i) const { return stepped_[i] != 0; }
 
     struct Counters {
         std::uint64_t events = 0;       // pair collisions recorded
@@ -170,6 +201,8 @@ public:
         std::uint64_t island_solves = 0;
         std::uint64_t sleeps = 0;       // islands put to sleep
         std::uint64_t welds = 0;        // pairs stuck together (the stick model)
+        std::uint64_t steps = 0;        // time steps of the stepped islands
+        std::uint64_t joined = 0;       // bodies that became stepped
     };
     const Counters& counters() const { return counters_; }
 
@@ -178,6 +211,13 @@ public:
     static constexpr double kRestStep = 1e-3;   // s: longest substep while anything rests
     static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
     static constexpr std::uint64_t kMaxWorkPerInstant = 100000;   // predictions popped at one t
+    // Stepped islands (see above).
+    static constexpr double kIslandStep = 1.0 / 600.0;  // s
+    static constexpr int kPersistImpacts = 16;
+    static constexpr double kPersistWindow = 0.1;       // s
+    static constexpr double kSpeculative = 1e-3;        // m
+    static constexpr double kStepSleepSpeed = 2e-3;     // m/s
+    static constexpr double kStepSleepTime = 0.5;       // s
 
 private:
     struct Track {                  // per body: its own clock and current free motion
@@ -252,6 +292,19 @@ private:
     void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
                       double t);
 
+    // Stepped islands (engine/stepped.cpp).
+    bool may_step(std::size_t i) const;
+    // i and j meet only at steps: both stepped or static (not both static), neither loose.
+    bool meet_at_steps(std::size_t i, std::size_t j) const {
+        const bool si = stepped_[i] && !loose_[i], sj = stepped_[j] && !loose_[j];
+        return (si || sj) && (si || bodies_[i].is_static) && (sj || bodies_[j].is_static);
+    }
+    void join(std::size_t i);   // body i is stepped from now on (its free motion until the next step)
+    void wake(std::size_t i);   // a sleeping stepped body moves again
+    void count_impact(std::size_t a, std::size_t b, double t);  // stepping = auto's rule
+    double surface_speed(std::size_t i) const;  // |v| + |w| R
+    void step_islands(double t, std::vector<Event<D>>* events);
+
     RunCount runs_;                       // counts this world among every run (run_count.h)
     Scene scene_;
     std::vector<Body> bodies_;
@@ -282,6 +335,19 @@ private:
 
     BroadPhase<D> grid_;
     ContactSolver<D> solver_;
+
+    std::vector<char> stepped_;    // 1: advances by time steps
+    // 1: stepped, but its motion changed since its step's start (an impact, a join, a wake):
+    // until the next step it meets every body at exact instants, as a free body does.
+    std::vector<char> loose_;
+    std::vector<double> still_;    // s a stepped body has been slower than kStepSleepSpeed
+    struct Rate {                  // a pair's recent collisions (count_impact)
+        double since = 0.0;
+        int count = 0;
+    };
+    std::unordered_map<std::uint64_t, Rate> rates_;
+    double step_end_ = -std::numeric_limits<double>::infinity();  // the present step's end
+    IslandStepper<D> stepper_;
 
     std::vector<Body> later_;  // solve_island's scratch: an island's bodies a step later
 

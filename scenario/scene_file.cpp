@@ -253,7 +253,7 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
     auto sc = root.table("scene");
     if (!sc) root.fail("", "missing table [scene]");
     sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "restitution_law",
-                    "policy", "restitution", "friction"});
+                    "policy", "stepping", "restitution", "friction"});
     Scene s;
     s.title = sc->string("title", "a title").value_or("");
     s.dimension = read_dimension(*sc);
@@ -276,6 +276,11 @@ Scene parse_scene_text(const std::string& text, const std::string& name, SceneVi
                        "sequential"
                    ? Policy::sequential
                    : Policy::simultaneous;
+    if (sc->has("stepping")) {
+        if (s.dimension == 1) sc->fail("stepping", "applies to 2D and 3D scenes (a 1D world is exact event by event)");
+        const std::string st = read_choice(*sc, "stepping", {"auto", "always", "never"}, "stepping", "auto");
+        s.stepping = st == "auto" ? StepMode::automatic : st == "always" ? StepMode::always : StepMode::never;
+    }
     if (s.model == Model::page_listing && (s.dimension != 3 || s.policy != Policy::sequential))
         sc->fail("model", "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs "
                           "only in 3D scenes with policy = \"sequential\"");

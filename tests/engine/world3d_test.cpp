@@ -561,6 +561,7 @@ SlideResult slide_off(double e) {
     Scene s = ground_scene(Policy::sequential, e);
     s.bodies.push_back(sphere("A", r, m, Vec3(0.0, r, 0.0)));
     s.bodies.push_back(sphere("B", r, m, Vec3(0.3 * r, r + h, 0.0)));
+    s.stepping = StepMode::never;  // the exact world's resting contact, not stepped islands
     World3 w(s);
     std::vector<Event3> events;
     auto energy = [&] {

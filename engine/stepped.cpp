@@ -1,0 +1,199 @@
+// Stepped islands ("Stepped islands" in engine/world.h): which bodies are stepped, and one step
+// of them all (the solve itself: engine/island_step.h).
+#include "engine/world.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "engine/shape2d.h"
+#include "engine/shape3d.h"
+
+namespace collide {
+
+template <int D>
+bool World<D>::may_step(std::size_t i) const {
+    return !bodies_[i].is_static && weld_of_[i] < 0 && scene_.stepping != StepMode::never &&
+           scene_.model != Model::stick && scene_.model != Model::page_listing;
+}
+
+template <int D>
+void World<D>::join(std::size_t i) {
+    if (stepped_[i] || !may_step(i)) return;
+    set_free(i);  // out of its resting island; its free motion until the next step
+    stepped_[i] = 1;
+    loose_[i] = 1;
+    still_[i] = 0.0;
+    ++counters_.joined;
+}
+
+template <int D>
+void World<D>::wake(std::size_t i) {
+    if (!asleep_[i]) return;
+    asleep_[i] = 0;
+    loose_[i] = 1;
+    still_[i] = 0.0;
+    track_[i].a = gravity();  // not solved at this step's start: free until the next
+    track_[i].alpha = zero<Spin>();
+    ++track_[i].version;
+}
+
+// stepping = auto: a pair of moving bodies colliding kPersistImpacts times within
+// kPersistWindow is in persistent contact (always: any touching contact is).
+template <int D>
+void World<D>::count_impact(std::size_t a, std::size_t b, double t) {
+    if (scene_.stepping != StepMode::automatic || !may_step(a) || !may_step(b)) return;
+    Rate& r = rates_[static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b)];
+    if (t - r.since > kPersistWindow) {
+        r.since = t;
+        r.count = 0;
+    }
+    if (++r.count < kPersistImpacts) return;
+    join(a);
+    join(b);
+}
+
+template <int D>
+double World<D>::surface_speed(std::size_t i) const {
+    return bodies_[i].v.norm() + magnitude(bodies_[i].w) * radius_[i];
+}
+
+// One step of every stepped body that is awake, at t (the step's start): their contacts within
+// the margin (bringing in the moving bodies that touch them and the sleepers they reach), the
+// solve, their motion for the step, the first contacts as events, and sleeping.
+template <int D>
+void World<D>::step_islands(double t, std::vector<Event<D>>* events) {
+    const double h = kIslandStep;
+    const double g = gravity().norm();
+    std::vector<std::size_t> members;
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (stepped_[i] && !asleep_[i]) members.push_back(i);
+    if (members.empty()) return;
+    ++counters_.steps;
+    fresh(&searched_, &search_);
+    std::vector<StepContact<D>> contacts;
+    std::vector<int> touches(bodies_.size(), 0);  // contacts within the margin, per body
+    for (std::size_t q = 0; q < members.size(); ++q) {
+        const std::size_t i = members[q];
+        drift(i, t);
+        searched_[i] = search_;
+        const double reach_i = kSpeculative + (surface_speed(i) + g * h) * h;
+        auto box = [&](Vec* lo, Vec* hi) {
+            swept_box(i, t, substep_end_, lo, hi);
+            *lo -= Vec::Constant(reach_i);
+            *hi += Vec::Constant(reach_i);
+        };
+        grid_.for_each_neighbour(i, box, [&](std::size_t j) {
+            if (searched_[j] == search_ && !plane_[j]) return;  // from j's side
+            if (weld_of_[j] >= 0 || passed(i, j)) return;
+            drift(j, t);
+            const std::size_t a = std::min(i, j), b = std::max(i, j);
+            const double margin = kSpeculative + (surface_speed(a) + surface_speed(b) + 2.0 * g * h) * h;
+            if (!plane_[a] && !plane_[b] &&
+                (bodies_[b].position - bodies_[a].position).norm() > radius_[a] + radius_[b] + margin)
+                return;  // their bounding circles (spheres) apart
+            const Manifold m = collide(shapes_[a], pose_of(bodies_[a]), shapes_[b], pose_of(bodies_[b]), margin);
+            if (m.count == 0) return;
+            if (!bodies_[j].is_static && !stepped_[j]) {
+                // A moving body not stepped joins when it touches (nearer, its impact is exact).
+                if (m.separation > kTouch || !may_step(j)) return;
+                join(j);
+                members.push_back(j);
+            } else if (stepped_[j] && asleep_[j]) {
+                wake(j);
+                members.push_back(j);
+            }
+            StepContact<D> c;
+            c.a = a;
+            c.b = b;
+            c.m = m;
+            c.e = scene_.pair_restitution(a, b);
+            c.mu = friction_limit(a, b);
+            contacts.push_back(c);
+            ++touches[a];
+            ++touches[b];
+        });
+    }
+    // A stepped body with nothing within the margin is free again.
+    std::vector<std::size_t> stepped;
+    for (std::size_t i : members) {
+        if (touches[i] > 0) {
+            stepped.push_back(i);
+            continue;
+        }
+        stepped_[i] = 0;
+        loose_[i] = 0;
+        set_free(i);
+        insert(i, t, substep_end_);
+    }
+    for (std::size_t i : stepped) before_[i] = {bodies_[i].v + gravity() * h, bodies_[i].w};
+    stepper_.step(&contacts, stepped, &bodies_, gravity(), h);
+    for (std::size_t i : stepped) {
+        Track& k = track_[i];
+        k.a = zero<Vec>();  // x+ = x- + h v+
+        k.alpha = zero<Spin>();
+        k.t = t;
+        ++k.version;
+        loose_[i] = 0;
+    }
+
+    // A pair's first contact is an impact: recorded as an event.
+    for (const StepContact<D>& c : contacts) {
+        if (!c.fresh || !(c.weight > 0.0) || !(c.approach < -rest_speed(c.a, c.b))) continue;
+        Event<D> ev;
+        ev.t = t;
+        ev.a = c.a;
+        ev.b = c.b;
+        ev.normal = c.m.normal;
+        ev.impulse = c.impulse;
+        ev.point = c.moment / c.weight;
+        auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
+        ev.before_a = stepped_[c.a] ? before_[c.a] : vel(c.a);
+        ev.before_b = stepped_[c.b] ? before_[c.b] : vel(c.b);
+        ev.after_a = vel(c.a);
+        ev.after_b = vel(c.b);
+        ev.pose_a = pose_of(bodies_[c.a]);
+        ev.pose_b = pose_of(bodies_[c.b]);
+        events->push_back(ev);
+        ++counters_.events;
+    }
+
+    // Sleeping: islands (connected through contacts between moving bodies) whose every body has
+    // been slow for kStepSleepTime.
+    for (std::size_t i : stepped) {
+        parent_[i] = i;
+        still_[i] = surface_speed(i) <= kStepSleepSpeed ? still_[i] + h : 0.0;
+    }
+    auto root = [&](std::size_t k) {
+        while (parent_[k] != k) k = parent_[k] = parent_[parent_[k]];
+        return k;
+    };
+    for (const StepContact<D>& c : contacts)
+        if (stepped_[c.a] && stepped_[c.b]) parent_[root(c.a)] = root(c.b);
+    std::vector<double> least(bodies_.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t i : stepped) least[root(i)] = std::min(least[root(i)], still_[i]);
+    for (std::size_t i : stepped) {
+        if (least[root(i)] >= kStepSleepTime) {
+            bodies_[i].v = zero<Vec>();
+            bodies_[i].w = zero<Spin>();
+            asleep_[i] = 1;
+            if (root(i) == i) ++counters_.sleeps;
+        }
+        insert(i, t, substep_end_);
+    }
+}
+
+template bool World<2>::may_step(std::size_t) const;
+template void World<2>::join(std::size_t);
+template void World<2>::wake(std::size_t);
+template void World<2>::count_impact(std::size_t, std::size_t, double);
+template double World<2>::surface_speed(std::size_t) const;
+template void World<2>::step_islands(double, std::vector<Event<2>>*);
+template bool World<3>::may_step(std::size_t) const;
+template void World<3>::join(std::size_t);
+template void World<3>::wake(std::size_t);
+template void World<3>::count_impact(std::size_t, std::size_t, double);
+template double World<3>::surface_speed(std::size_t) const;
+template void World<3>::step_islands(double, std::vector<Event<3>>*);
+
+}  // namespace collide
