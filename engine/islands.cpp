@@ -91,7 +91,7 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
             if (!joins) continue;
             for (std::size_t k : {ct.a, ct.b})
                 if (!stepped_[k] && may_step(k)) {
-                    join(k);
+                    join(k, t);
                     changed = true;
                 }
         }

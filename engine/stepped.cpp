@@ -18,12 +18,14 @@ bool World<D>::may_step(std::size_t i) const {
 }
 
 template <int D>
-void World<D>::join(std::size_t i) {
+void World<D>::join(std::size_t i, double t) {
     if (stepped_[i] || !may_step(i)) return;
-    set_free(i);  // out of its resting island; its free motion until the next step
+    drift(i, t);
+    set_free(i);  // out of its resting island
     stepped_[i] = 1;
-    loose_[i] = 1;
+    solved_[i] = 0;
     still_[i] = 0.0;
+    restep_ = true;
     ++counters_.joined;
 }
 
@@ -31,26 +33,29 @@ template <int D>
 void World<D>::wake(std::size_t i) {
     if (!asleep_[i]) return;
     asleep_[i] = 0;
-    loose_[i] = 1;
+    solved_[i] = 0;
     still_[i] = 0.0;
-    track_[i].a = gravity();  // not solved at this step's start: free until the next
-    track_[i].alpha = zero<Spin>();
+    restep_ = true;
     ++track_[i].version;
 }
 
-// stepping = auto: a pair of moving bodies colliding kPersistImpacts times within
-// kPersistWindow is in persistent contact (always: any touching contact is).
+// stepping = auto: a pair colliding kPersistImpacts times within kPersistWindow is in
+// persistent contact, unless both are smooth (round or plane: their last bounces merge exactly,
+// "Resting contact"); its moving bodies are stepped.
 template <int D>
 void World<D>::count_impact(std::size_t a, std::size_t b, double t) {
-    if (scene_.stepping != StepMode::automatic || !may_step(a) || !may_step(b)) return;
+    if (scene_.stepping != StepMode::automatic) return;
+    if ((round_[a] || plane_[a]) && (round_[b] || plane_[b])) return;
+    for (std::size_t k : {a, b})
+        if (!bodies_[k].is_static && !may_step(k)) return;
     Rate& r = rates_[static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b)];
     if (t - r.since > kPersistWindow) {
         r.since = t;
         r.count = 0;
     }
     if (++r.count < kPersistImpacts) return;
-    join(a);
-    join(b);
+    join(a, t);
+    join(b, t);
 }
 
 template <int D>
@@ -62,9 +67,12 @@ double World<D>::surface_speed(std::size_t i) const {
 // the margin (bringing in the moving bodies that touch them and the sleepers they reach), the
 // solve, their motion for the step, the first contacts as events, and sleeping.
 template <int D>
-void World<D>::step_islands(double t, std::vector<Event<D>>* events) {
+void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within) {
     const double h = kIslandStep;
     const double g = gravity().norm();
+    restep_ = false;
+    const double left = std::max(0.0, step_end_ - t);  // of a step cut short
+    step_end_ = t + h;
     std::vector<std::size_t> members;
     for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (stepped_[i] && !asleep_[i]) members.push_back(i);
@@ -97,7 +105,7 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events) {
             if (!bodies_[j].is_static && !stepped_[j]) {
                 // A moving body not stepped joins when it touches (nearer, its impact is exact).
                 if (m.separation > kTouch || !may_step(j)) return;
-                join(j);
+                join(j, t);
                 members.push_back(j);
             } else if (stepped_[j] && asleep_[j]) {
                 wake(j);
@@ -122,11 +130,15 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events) {
             continue;
         }
         stepped_[i] = 0;
-        loose_[i] = 0;
+        if (solved_[i]) bodies_[i].v -= gravity() * left;
+        solved_[i] = 0;
         set_free(i);
         insert(i, t, substep_end_);
     }
-    for (std::size_t i : stepped) before_[i] = {bodies_[i].v + gravity() * h, bodies_[i].w};
+    for (std::size_t i : stepped) {
+        if (solved_[i]) bodies_[i].v -= gravity() * left;  // the step cut short: see the header
+        before_[i] = {bodies_[i].v + gravity() * h, bodies_[i].w};
+    }
     stepper_.step(&contacts, stepped, &bodies_, gravity(), h);
     for (std::size_t i : stepped) {
         Track& k = track_[i];
@@ -134,7 +146,7 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events) {
         k.alpha = zero<Spin>();
         k.t = t;
         ++k.version;
-        loose_[i] = 0;
+        solved_[i] = 1;
     }
 
     // A pair's first contact is an impact: recorded as an event.
@@ -181,19 +193,21 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events) {
         }
         insert(i, t, substep_end_);
     }
+    if (within)
+        for (std::size_t i : stepped) predict(i, t);
 }
 
 template bool World<2>::may_step(std::size_t) const;
-template void World<2>::join(std::size_t);
+template void World<2>::join(std::size_t, double);
 template void World<2>::wake(std::size_t);
 template void World<2>::count_impact(std::size_t, std::size_t, double);
 template double World<2>::surface_speed(std::size_t) const;
-template void World<2>::step_islands(double, std::vector<Event<2>>*);
+template void World<2>::step_islands(double, std::vector<Event<2>>*, bool);
 template bool World<3>::may_step(std::size_t) const;
-template void World<3>::join(std::size_t);
+template void World<3>::join(std::size_t, double);
 template void World<3>::wake(std::size_t);
 template void World<3>::count_impact(std::size_t, std::size_t, double);
 template double World<3>::surface_speed(std::size_t) const;
-template void World<3>::step_islands(double, std::vector<Event<3>>*);
+template void World<3>::step_islands(double, std::vector<Event<3>>*, bool);
 
 }  // namespace collide

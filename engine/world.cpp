@@ -92,7 +92,7 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     parent_.assign(n, 0);
     before_.resize(n);
     stepped_.assign(n, 0);
-    loose_.assign(n, 0);
+    solved_.assign(n, 0);
     still_.assign(n, 0.0);
     // The resting speeds (see "Resting contact" in world.h).
     const double g = gravity().norm();
@@ -194,7 +194,7 @@ void World<D>::set_body(std::size_t i, const Body& body) {
     for (std::size_t j = 0; j < bodies_.size(); ++j) drift(j, time_);
     unweld(i);  // its new state is its own
     stepped_[i] = 0;
-    loose_[i] = 0;
+    solved_[i] = 0;
     bodies_[i] = body;
     track_[i].t = time_;
     // Whatever rested on or under it is re-examined at the start of the next substep.
@@ -303,6 +303,25 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     drift(j, t);
     ++counters_.predictions;
     const std::size_t a = std::min(i, j), b = std::max(i, j);
+    // Too far apart to meet within the substep: the gap between their bounding circles (or a
+    // body's and a plane) exceeds what their speeds, accelerations and spins can close by t1.
+    if (weld_of_[a] < 0 && weld_of_[b] < 0 && !(plane_[a] && plane_[b])) {
+        const double horizon = t1 - t;
+        auto reach = [&](std::size_t k) {  // how far a surface point of k can move towards the other
+            const Body& B = bodies_[k];
+            if (B.is_static) return 0.0;
+            const double spin = round_[k] ? 0.0 : spin_bound(B, inv_min_moment_[k]) + magnitude(track_[k].alpha) * horizon;
+            return (B.v.norm() + spin * radius_[k]) * horizon + 0.5 * track_[k].a.norm() * horizon * horizon;
+        };
+        double gap;
+        if (plane_[a] || plane_[b]) {
+            const std::size_t p = plane_[a] ? a : b, q = plane_[a] ? b : a;
+            gap = shapes_[p].normal.dot(bodies_[q].position) - shapes_[p].offset - radius_[q];
+        } else {
+            gap = (bodies_[b].position - bodies_[a].position).norm() - radius_[a] - radius_[b];
+        }
+        if (gap > reach(a) + reach(b) + 2.0 * kTouch) return kNever;
+    }
     const double v_rest = rest_speed(a, b);
     const Track& ka = track_[a];
     const Track& kb = track_[b];
@@ -401,6 +420,9 @@ void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
         if (meet_at_steps(i, j)) return;
         drift(j, t);
         const std::size_t a = std::min(i, j), b = std::max(i, j);
+        if (!plane_[a] && !plane_[b] && weld_of_[a] < 0 && weld_of_[b] < 0 &&
+            (bodies_[b].position - bodies_[a].position).norm() > radius_[a] + radius_[b] + 2.0 * kTouch)
+            return;  // their bounding circles (spheres) apart: not touching
         const Manifold m = manifold(a, b);
         if (m.separation > kTouch || m.count == 0) return;
         Contact c;
@@ -573,9 +595,9 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     // are stepped from now on (see "Stepped islands" in the header).
     for (const Contact& c : contacts) {
         if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;
-        if (!bodies_[c.a].is_static && !bodies_[c.b].is_static) count_impact(c.a, c.b, t);
+        count_impact(c.a, c.b, t);
         if (stepped_[c.a] || stepped_[c.b] || scene_.stepping == StepMode::always)
-            for (std::size_t k : {c.a, c.b}) join(k);
+            for (std::size_t k : {c.a, c.b}) join(k, t);
     }
 
     // The stick model welds what it stuck (see "Stuck bodies" in the header).
@@ -608,12 +630,10 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         if (!stepped_[k]) continue;
         if (bodies_[k].v != before_[k].v || bodies_[k].w != before_[k].w) {
             wake(k);
-            loose_[k] = 1;
+            restep_ = true;  // pushed: its island is stepped again from now
         }
-        ++track_[k].version;
-        insert(k, t, substep_end_);
-        predict(k, t);
     }
+    if (restep_) step_islands(t, events, true);
     return impact;
 }
 
@@ -659,11 +679,8 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
         // Stepped islands: a substep never crosses a step's end; at a step's start they are solved.
         bool step_now = false;
         if (any_stepped) {
-            if (!(step_end_ - t0 > 1e-9 * kIslandStep)) {
-                step_now = true;
-                step_end_ = t0 + kIslandStep;
-            }
-            h = std::min(h, step_end_ - t0);
+            step_now = !(step_end_ - t0 > 1e-9 * kIslandStep);
+            h = std::min(h, step_now ? kIslandStep : step_end_ - t0);
             if (any_rest) h = std::min(h, kRestStep);
         } else if (any_rest || gravity().norm() > 0.0) {
             h = std::min(h, kRestStep);
@@ -674,11 +691,6 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
 
         build_grid(t0, t1);
         heap_.clear();
-        if (step_now) {
-            const std::size_t recorded = events->size();
-            step_islands(t0, events);
-            if (on_impact && events->size() > recorded) on_impact(t0);
-        }
         // Resting contacts are found afresh each substep; then every body predicts its next impact.
         // Sleeping islands keep their (zero) motion and are neither re-solved nor predicted.
         std::vector<std::size_t> all;
@@ -689,6 +701,12 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
             it = asleep_[it->second.front()] ? std::next(it) : members_.erase(it);
         for (std::size_t i : all) set_free(i);
         if (!all.empty()) settle(all, t0);
+        // Then the stepped islands' step, if one starts now (or settling brought bodies to them).
+        if (step_now || restep_) {
+            const std::size_t recorded = events->size();
+            step_islands(t0, events, false);
+            if (on_impact && events->size() > recorded) on_impact(t0);
+        }
         std::unordered_set<std::size_t> predicted(all.begin(), all.end());
         for (std::size_t i = 0; i < bodies_.size(); ++i)
             if (!asleep_[i] && !predicted.count(i)) predict(i, t0);

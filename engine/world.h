@@ -80,10 +80,11 @@
 // the free body joins the stepped ones. A stepped body with no contact within the margin at a
 // step's start is free again (exact events); a stepped island whose every surface point moved
 // slower than kStepSleepSpeed for kStepSleepTime falls asleep (v and w exactly zero) until
-// something touches it. A body joining between two steps keeps its free motion until the next,
-// and a stepped body whose motion an impact changed within a step is loose until the next:
-// it meets stepped and static bodies at exact instants too (resolved like any impact), so
-// nothing pushed between two steps is pushed into its neighbours.
+// something touches it. Whenever a body joins or wakes, or an impact changes a stepped body's
+// motion, a new step is taken at once from that instant (the step's clock starts again), so
+// nothing pushed between two steps is pushed into its neighbours; the bodies of the step cut
+// short give back the gravity impulse of the time left, m g (t_end - t) (momentum kept; their
+// positions moved on the step's velocity meanwhile: off by at most g h^2, 27 um).
 //
 // Stuck bodies (the stick model). An impact resolved by the stick model between two dynamic
 // bodies welds them: from then on they move as one rigid body (a weld), whose mass, centre and
@@ -294,16 +295,18 @@ private:
 
     // Stepped islands (engine/stepped.cpp).
     bool may_step(std::size_t i) const;
-    // i and j meet only at steps: both stepped or static (not both static), neither loose.
+    // i and j meet only at steps: both stepped, or one stepped and one static.
     bool meet_at_steps(std::size_t i, std::size_t j) const {
-        const bool si = stepped_[i] && !loose_[i], sj = stepped_[j] && !loose_[j];
-        return (si || sj) && (si || bodies_[i].is_static) && (sj || bodies_[j].is_static);
+        return (stepped_[i] || stepped_[j]) && (stepped_[i] || bodies_[i].is_static) &&
+               (stepped_[j] || bodies_[j].is_static);
     }
-    void join(std::size_t i);   // body i is stepped from now on (its free motion until the next step)
-    void wake(std::size_t i);   // a sleeping stepped body moves again
+    void join(std::size_t i, double t);  // body i is stepped from t on (a step is taken at t)
+    void wake(std::size_t i);            // a sleeping stepped body moves again (a step is taken)
     void count_impact(std::size_t a, std::size_t b, double t);  // stepping = auto's rule
     double surface_speed(std::size_t i) const;  // |v| + |w| R
-    void step_islands(double t, std::vector<Event<D>>* events);
+    // A step of every stepped body awake, from t; `within` a substep (after an impact) the
+    // stepped bodies are also predicted again.
+    void step_islands(double t, std::vector<Event<D>>* events, bool within);
 
     RunCount runs_;                       // counts this world among every run (run_count.h)
     Scene scene_;
@@ -337,9 +340,10 @@ private:
     ContactSolver<D> solver_;
 
     std::vector<char> stepped_;    // 1: advances by time steps
-    // 1: stepped, but its motion changed since its step's start (an impact, a join, a wake):
-    // until the next step it meets every body at exact instants, as a free body does.
-    std::vector<char> loose_;
+    // 1: its motion is the last step's (a step taken again before its end gives back the
+    // gravity impulse of the time left, see "Stepped islands").
+    std::vector<char> solved_;
+    bool restep_ = false;          // something joined, woke or was pushed: a step is taken now
     std::vector<double> still_;    // s a stepped body has been slower than kStepSleepSpeed
     struct Rate {                  // a pair's recent collisions (count_impact)
         double since = 0.0;
