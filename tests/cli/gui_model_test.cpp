@@ -64,6 +64,34 @@ TEST(GuiModel, SizeScalesTheShapeAndAnOverlapIsRefused) {
     EXPECT_EQ(m.scene().bodies[0].length, 2 * a.length);
 }
 
+// As the window edits: the re-run goes to the worker and the edit returns at once; the frames
+// stay the last complete run's (with its scene) until poll() or finish() takes the new one, and
+// of two quick edits only the newer's run ever shows.
+TEST(GuiModel, InTheBackgroundTheFramesWaitForTheNewestRun) {
+    GuiModel m(catch_up(), 30.0, Rerun::background);
+    const double e0 = m.scene().restitution;
+    ASSERT_NE(e0, 0.0);
+    m.seek_time(0.5);
+    m.set_restitution(1.0);
+    m.set_restitution(0.0);
+    EXPECT_EQ(m.scene().restitution, 0.0);       // the controls show the edit
+    EXPECT_EQ(m.shown_scene().restitution, e0);  // the frames, the run before it
+    expect_closed_form(m, e0);
+    m.finish();
+    EXPECT_FALSE(m.running());
+    EXPECT_EQ(m.run_progress(), 1.0);
+    EXPECT_EQ(m.shown_scene().restitution, 0.0);
+    expect_closed_form(m, 0.0);
+    EXPECT_DOUBLE_EQ(m.time(), 0.5);  // the playback time kept
+    EXPECT_FALSE(m.poll());           // taken once
+    // A script waits for its edits' runs whatever the mode.
+    GuiToggles t;
+    for (const GuiAction& a : parse_gui_script_text("set e 1\ntime 0\nnext-collision\n", "s.txt"))
+        EXPECT_TRUE(run_script_action(a, "s.txt", &m, &t)) << a.verb;
+    EXPECT_EQ(m.shown_scene().restitution, 1.0);
+    expect_closed_form(m, 1.0);
+}
+
 TEST(GuiModel, PlaybackStepsSeeksAndFindsTheCollision) {
     GuiModel m(catch_up(), 30.0);
     EXPECT_EQ(m.index(), 0u);
