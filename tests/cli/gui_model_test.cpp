@@ -92,6 +92,24 @@ TEST(GuiModel, InTheBackgroundTheFramesWaitForTheNewestRun) {
     expect_closed_form(m, 1.0);
 }
 
+// A run the world refuses, in the background: its error is reported (the window shows it in
+// red), the frames stay the previous run's, and the next good edit clears it. (The page's
+// listing is 3D code: a 2D world refuses it.)
+TEST(GuiModel, InTheBackgroundARefusedRunReportsItsErrorAndKeepsTheFrames) {
+    GuiModel m(load_scenario(std::string(COLLIDE_SOURCE_DIR) + "/lessons/scenes/billiards-2d.toml"), 30.0,
+               Rerun::background);
+    const Model before = m.scene().model;
+    const std::size_t impacts = m.impacts().size();
+    m.set_model(Model::page_listing);
+    m.finish();
+    EXPECT_NE(m.error().find("3D"), std::string::npos) << m.error();
+    EXPECT_EQ(m.shown_scene().model, before);
+    EXPECT_EQ(m.impacts().size(), impacts);
+    m.set_model(before);
+    m.finish();
+    EXPECT_TRUE(m.error().empty()) << m.error();
+}
+
 TEST(GuiModel, PlaybackStepsSeeksAndFindsTheCollision) {
     GuiModel m(catch_up(), 30.0);
     EXPECT_EQ(m.index(), 0u);
