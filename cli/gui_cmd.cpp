@@ -110,8 +110,8 @@ public:
     const std::vector<std::uint8_t>& rgba() const { return rgba_; }
     GLuint texture() const { return texture_; }
 
-    // Takes a re-run that has finished (the edits run on the model's worker): true when the
-    // frames changed.
+    // Takes a re-run that has finished (the edits run on the model's worker), its frames or its
+    // error; true when there was one (the renderer then follows the run shown).
     bool poll() {
         if (!model_->poll()) return false;
         rebuild_renderer();
