@@ -97,7 +97,7 @@ public:
         id_ = lesson_ ? lesson_->id : scenario;
         if (const auto slash = id_.find_last_of('/'); slash != std::string::npos) id_ = id_.substr(slash + 1);
         if (const auto dot = id_.rfind(".toml"); dot != std::string::npos) id_ = id_.substr(0, dot);
-        model_ = std::make_unique<GuiModel>(scene_source_, frame.fps);
+        model_ = std::make_unique<GuiModel>(scene_source_, frame.fps, Rerun::background);
         rebuild_renderer();
     }
 
@@ -110,23 +110,32 @@ public:
     const std::vector<std::uint8_t>& rgba() const { return rgba_; }
     GLuint texture() const { return texture_; }
 
-    // After a change of the scene or of the panels shown: the settings, the formula and the
-    // framing follow the edited scene.
+    // Takes a re-run that has finished (the edits run on the model's worker), its frames or its
+    // error; true when there was one (the renderer then follows the run shown).
+    bool poll() {
+        if (!model_->poll()) return false;
+        rebuild_renderer();
+        return true;
+    }
+
+    // After a new run or a change of the panels shown: the settings, the formula and the
+    // framing follow the scene of the run shown (the edited scene once its run has finished).
     void rebuild_renderer() {
-        const std::optional<render::FormulaText> formula = first_collision_formula(model_->scene(), model_->run());
-        settings_ = frame_settings(frame_, model_->scene(), view_, formula ? &*formula : nullptr);
+        const Scene& scene = model_->shown_scene();
+        const std::optional<render::FormulaText> formula = first_collision_formula(scene, model_->run());
+        settings_ = frame_settings(frame_, scene, view_, formula ? &*formula : nullptr);
         settings_.header = toggles_.header;
         settings_.table = toggles_.table;
         settings_.plots = toggles_.plots;
         settings_.timeline = toggles_.timeline;
         if (!camera_) {  // the scenario's camera, or the renderer's default angles, to orbit from
             camera_ = settings_.camera;
-            const int d = model_->scene().dimension;
+            const int d = scene.dimension;
             if (!camera_->azimuth) camera_->azimuth = render::default_azimuth(d);
             if (!camera_->elevation) camera_->elevation = render::default_elevation(d);
         }
         settings_.camera = *camera_;
-        renderer_ = std::make_unique<render::Renderer>(window_, model_->scene(), settings_);
+        renderer_ = std::make_unique<render::Renderer>(window_, scene, settings_);
         renderer_->prepare(model_->frames(), model_->impacts());
         dirty_ = true;
     }
@@ -175,7 +184,7 @@ public:
     // False when the run has no collision.
     bool save_figure(const std::string& path) {
         const std::optional<render::Image> figure =
-            first_collision_figure(window_, model_->scene(), view_, settings_, model_->run());
+            first_collision_figure(window_, model_->shown_scene(), view_, settings_, model_->run());
         window_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
         if (!figure) return false;
         render::write_png_atomic(path, figure->width, figure->height, figure->rgba.data());
@@ -248,14 +257,17 @@ void draw_keys(const Ui& ui, bool perspective, int y, int width, int height) {
         "Space play / pause    → ← one frame    N next collision    Home the start    S slower");
     ImGui::TextWrapped("R reset    F save the frame    G save the figure    H help    Q quit");
     if (perspective) ImGui::TextWrapped("Drag over the frame to turn the camera; the wheel zooms.");
-    ImGui::TextWrapped("Every change re-runs the scene from t = 0: the frame is the one collide render draws.");
+    ImGui::TextWrapped(
+        "Every change re-runs the scene from t = 0, in the background (the frame stays the last complete "
+        "run's until then): the frame is the one collide render draws.");
     if (!ui.status.empty() && ui.status != "save-frame" && ui.status != "save-figure")
         ImGui::TextWrapped("%s", ui.status.c_str());
     ImGui::End();
 }
 
-// The controls beside the frame. Returns true when the scene or the panels changed so that the
-// renderer must be rebuilt.
+// The controls beside the frame. An edit starts a re-run on the model's worker (the renderer
+// follows when it has finished: Session::poll). Returns true when the panels shown changed so
+// that the renderer must be rebuilt.
 bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::string>& lesson_ids,
                 std::string* switch_to, bool* quit) {
     GuiModel& m = s.model();
@@ -301,7 +313,21 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
     float t = static_cast<float>(m.time());
     if (ImGui::SliderFloat("time (s)", &t, 0.0f, static_cast<float>(duration), "%.3f")) m.seek_time(t);
     if (ImGui::Combo("speed", &ui.speed, kSpeeds, IM_ARRAYSIZE(kSpeeds))) m.speed = kSpeedValues[ui.speed];
-    ImGui::Text("%zu collision%s in the run", m.impacts().size(), m.impacts().size() == 1 ? "" : "s");
+    // The run shown, or while a change re-runs the scene (on the worker), how far that run got:
+    // one line either way, so that the controls below stay where they are.
+    if (m.running()) {
+        const double length = m.scene().duration, reached = m.run_progress() * length;
+        const std::string text = fixed(reached, 3) + " s of " + fixed(length, 3) + " s";
+        // A bar as tall as a line of text, its label beside it on the same baseline.
+        ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(ImGui::GetStyle().FramePadding.x, 0.0f));
+        ImGui::ProgressBar(static_cast<float>(m.run_progress()),
+                           ImVec2(ImGui::CalcItemWidth(), ImGui::GetTextLineHeight()), text.c_str());
+        ImGui::PopStyleVar();
+        ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);
+        ImGui::TextUnformatted("re-running");
+    } else {
+        ImGui::Text("%zu collision%s in the run", m.impacts().size(), m.impacts().size() == 1 ? "" : "s");
+    }
     ImGui::Separator();
 
     // Physics: scene-wide.
@@ -309,22 +335,18 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
     float e = static_cast<float>(sc.restitution);
     if (ImGui::SliderFloat("e (restitution)", &e, 0.0f, 1.0f, "%.2f") ) {
         m.set_restitution(e);
-        rebuild = true;
     }
     float mu = static_cast<float>(sc.friction);
     if (ImGui::SliderFloat("\u03bc (friction)", &mu, 0.0f, 1.5f, "%.2f")) {
         m.set_friction(mu);
-        rebuild = true;
     }
     int model = static_cast<int>(sc.model);
     if (ImGui::Combo("model", &model, kModels, IM_ARRAYSIZE(kModels))) {
         m.set_model(static_cast<Model>(model));
-        rebuild = true;
     }
     int policy = static_cast<int>(sc.policy);
     if (ImGui::Combo("contacts", &policy, kPolicies, IM_ARRAYSIZE(kPolicies))) {
         m.set_policy(static_cast<Policy>(policy));
-        rebuild = true;
     }
 
     // Bodies.
@@ -336,13 +358,11 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
             double mass = render::body_mass(sc, i);
             if (ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) && mass > 0) {
                 m.set_mass(i, mass);
-                rebuild = true;
             }
             // Size: the shape scaled about its centre (mass kept).
             for (const double k : {0.8, 1.25}) {
                 if (ImGui::Button(k < 1 ? "smaller (\u00d70.8)" : "bigger (\u00d71.25)")) {
                     m.scale_size(i, k);
-                    rebuild = true;
                 }
                 ImGui::SameLine();
             }
@@ -353,20 +373,17 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
             if (ImGui::InputScalarN("v (m/s)", ImGuiDataType_Double, v, d, nullptr, nullptr, "%.4g",
                                     ImGuiInputTextFlags_EnterReturnsTrue)) {
                 m.set_velocity(i, Vec3(v[0], v[1], v[2]));
-                rebuild = true;
             }
             if (d == 2) {
                 double w = b.body2.w;
                 if (ImGui::InputDouble("\u03c9 (rad/s)", &w, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue)) {
                     m.set_spin(i, Vec3(0, 0, w));
-                    rebuild = true;
                 }
             } else if (d == 3) {
                 double w[3] = {b.body3.w.x(), b.body3.w.y(), b.body3.w.z()};
                 if (ImGui::InputScalarN("\u03c9 (rad/s)", ImGuiDataType_Double, w, 3, nullptr, nullptr, "%.4g",
                                         ImGuiInputTextFlags_EnterReturnsTrue)) {
                     m.set_spin(i, Vec3(w[0], w[1], w[2]));
-                    rebuild = true;
                 }
             }
         }
@@ -374,7 +391,6 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
     }
     if (ImGui::Button("Reset the scene")) {
         m.reset();
-        rebuild = true;
     }
     if (!m.error().empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.8f, 0.1f, 0.1f, 1.0f));
@@ -421,7 +437,9 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
             "Keys: Space play / pause; Right, Left one frame; N next collision; Home the start; "
             "S slower (cycles the speeds); R reset the scene; F save the frame; G save the before / at / "
             "after figure; H this help; Q or Esc quit.\n"
-            "Every change re-runs the scene from t = 0; the frame is the one collide render draws.");
+            "Every change re-runs the scene from t = 0, in the background (a newer change cancels it); "
+            "until it has finished the frame is the last complete run's. The frame is the one collide "
+            "render draws.");
     }
     ImGui::End();
     return rebuild;
@@ -470,7 +488,8 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
             controls.make_current();
             const bool scripted = next_action < script.size();
             if (scripted || session->model().playing) glfwPollEvents();
-            else glfwWaitEventsTimeout(0.1);
+            else glfwWaitEventsTimeout(session->model().running() ? 1.0 / 30 : 0.1);  // the progress bar moves
+            session->poll();  // a re-run that has finished replaces the frames
             const auto now = std::chrono::steady_clock::now();
             session->model().advance(std::chrono::duration<double>(now - last).count());
             last = now;
@@ -519,10 +538,7 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
                     ui.speed = (ui.speed + 1) % IM_ARRAYSIZE(kSpeedValues);
                     m.speed = kSpeedValues[ui.speed];
                 }
-                if (ImGui::IsKeyPressed(GLFW_KEY_R)) {
-                    m.reset();
-                    session->rebuild_renderer();
-                }
+                if (ImGui::IsKeyPressed(GLFW_KEY_R)) m.reset();
                 if (ImGui::IsKeyPressed(GLFW_KEY_F)) ui.status = "save-frame";
                 if (ImGui::IsKeyPressed(GLFW_KEY_G)) ui.status = "save-figure";
                 if (ImGui::IsKeyPressed(GLFW_KEY_H)) ui.help = !ui.help;

@@ -20,24 +20,46 @@ double trail_span(const Scene& s) { return std::min(1.0, 0.3 * s.duration); }
 
 }  // namespace
 
-GuiModel::GuiModel(Scene scene, double fps) : original_(scene), scene_(std::move(scene)), fps_(fps) {
+GuiModel::GuiModel(Scene scene, double fps, Rerun mode)
+    : original_(scene), scene_(std::move(scene)), fps_(fps), mode_(mode) {
     rerun();
+    finish();
     if (!error_.empty()) throw std::runtime_error(error_);
 }
 
 void GuiModel::rerun() {
     Scene timing = scene_;
     timing.output_dt = 1.0 / fps_;
-    const std::vector<double> times = output_times(timing);
-    try {
-        SceneRun run = run_scene(scene_, times);
+    // The job owns copies of what it reads: the world it runs lives on the worker thread.
+    runs_.start([scene = scene_, times = output_times(timing)](RunControl& control) {
+        const double end = times.empty() ? 0.0 : times.back();
+        SceneRun run = run_scene(scene, times, [&control, end](double t) {
+            control.report(end > 0 ? t / end : 1.0);
+            control.check();  // cancelled: stop at this frame's instant
+        });
+        return Run{scene, std::move(run)};
+    });
+    if (mode_ == Rerun::wait) finish();
+}
+
+bool GuiModel::poll() {
+    std::optional<BackgroundRun<Run>::Outcome> out = runs_.take_result();
+    if (!out) return false;
+    if (out->result) {
         const double t = run_.frames.empty() ? 0.0 : time();
-        run_ = std::move(run);
+        shown_ = std::move(out->result->scene);
+        run_ = std::move(out->result->run);
         error_.clear();
         seek_time(t);
-    } catch (const std::exception& e) {
-        error_ = e.what();
+    } else {
+        error_ = out->error;
     }
+    return true;
+}
+
+void GuiModel::finish() {
+    runs_.wait();
+    poll();
 }
 
 void GuiModel::set_restitution(double e) {
@@ -149,7 +171,7 @@ void GuiModel::advance(double wall_seconds) {
 
 render::FrameState GuiModel::display_frame() const {
     render::FrameState f = run_.frames[index_];
-    render::add_trails(run_.frames, trail_span(scene_), &f);
+    render::add_trails(run_.frames, trail_span(shown_), &f);
     const double from = index_ == 0 ? -1.0 : run_.frames[index_ - 1].t;
     for (const render::ImpactMark& m : run_.impacts)
         if (m.t > from && m.t <= f.t) f.impacts.push_back(m);
@@ -347,6 +369,7 @@ bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* mo
                 model->set_spin(i, d == 2 ? Vec3(0, 0, num(2)) : Vec3(num(2), num(3), num(4)));
             }
         }
+        model->finish();  // a script's next action sees this edit's run
         fail_if_refused("set");
     } else if (v == "play") {
         model->playing = true;
@@ -367,6 +390,7 @@ bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* mo
         toggles->toggle(a.args[0]);
     } else if (v == "reset") {
         model->reset();
+        model->finish();
     } else {
         return false;
     }

@@ -4,13 +4,17 @@
 // script that drives it in tests and demonstrations (`collide gui --script FILE`).
 //
 // Every change re-runs the edited scene from its start: the run is deterministic, so the same
-// settings give the same frames.
+// settings give the same frames. The re-run happens on a worker thread (cli/background_run.h):
+// in the window (Rerun::background) an edit returns at once, the frames stay those of the last
+// complete run while the new one runs, and a newer edit cancels an older run; elsewhere
+// (Rerun::wait, the default: tests, scripts) an edit returns once its run has finished.
 #pragma once
 
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "cli/background_run.h"
 #include "cli/scene_run.h"
 #include "engine/scene.h"
 #include "render/diagram_view.h"
@@ -18,14 +22,23 @@
 
 namespace collide {
 
+// How an edit's re-run is waited for.
+enum class Rerun {
+    wait,        // the edit returns once the run has finished (its frames or error are there)
+    background,  // the edit returns at once; poll() takes the run when it has finished
+};
+
 class GuiModel {
 public:
-    // Runs `scene` at `fps` frames per simulated second. Throws std::runtime_error if the world
-    // cannot run it (the message says why).
-    GuiModel(Scene scene, double fps);
+    // Runs `scene` at `fps` frames per simulated second (this first run always waits). Throws
+    // std::runtime_error if the world cannot run it (the message says why).
+    GuiModel(Scene scene, double fps, Rerun mode = Rerun::wait);
 
     const Scene& original() const { return original_; }
-    const Scene& scene() const { return scene_; }  // as edited, what the frames show
+    const Scene& scene() const { return scene_; }  // as edited: what the controls show
+    // The scene of the frames (run()): scene() once its re-run has finished, until then the
+    // scene of the previous complete run. Draw with this one.
+    const Scene& shown_scene() const { return shown_; }
 
     // Edits; each re-runs the scene from t = 0 and keeps the playback time. A run the world
     // refuses leaves the previous frames and sets error(). Restitution and friction set the
@@ -42,6 +55,16 @@ public:
     void scale_size(std::size_t body, double factor);
     void reset();                                        // back to the scene as loaded
     const std::string& error() const { return error_; }
+
+    // The re-run under way (Rerun::background). running(): an edit's run has not finished, or
+    // not been taken by poll(); the frames are still the previous run's.
+    bool running() const { return runs_.busy(); }
+    double run_progress() const { return runs_.progress(); }  // 0 to 1: simulated time reached / duration
+    // Takes the newest run once it has finished: its frames (the playback time kept) or its
+    // error. True when either changed (the window then redraws from shown_scene() and run()).
+    bool poll();
+    // Waits for the run under way and takes it (as poll()); at once when there is none.
+    void finish();
 
     // The run: one frame per 1/fps s from 0 to the duration, and every collision.
     double fps() const { return fps_; }
@@ -66,14 +89,20 @@ public:
     render::FrameState display_frame() const;
 
 private:
-    void rerun();
+    struct Run {
+        Scene scene;  // the scene the run is of
+        SceneRun run;
+    };
+    void rerun();  // starts the run of scene_ (and waits for it under Rerun::wait)
 
-    Scene original_, scene_;
+    Scene original_, scene_, shown_;
     double fps_;
+    Rerun mode_;
     SceneRun run_;
     std::size_t index_ = 0;
     double clock_ = 0.0;  // simulated time while playing (between frames)
     std::string error_;
+    BackgroundRun<Run> runs_;  // last: its worker stops before the rest goes
 };
 
 // The view switches of the window (and the script's `toggle`).

@@ -292,9 +292,12 @@ render::ImpactMark with_roles(const render::ImpactMark& mark, std::size_t a, std
     return out;
 }
 
-SceneRun run_scene(const Scene& scene, const std::vector<double>& times) {
+SceneRun run_scene(const Scene& scene, const std::vector<double>& times,
+                   const std::function<void(double t)>& on_sample) {
     SceneRun run;
-    run.record = record_any(scene, times);
+    RecordOptions options;
+    options.on_sample = on_sample;
+    run.record = record_any(scene, times, options);
     visit_record(run, [&](const auto& rec) {
         for (std::size_t k = 0; k < rec.times.size(); ++k)
             run.frames.push_back(render::frame_state(scene, rec.times[k], rec.states[k]));

@@ -4,6 +4,7 @@
 // `collide render`, `collide material` and `collide gui` read one SceneRun per scene.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -21,7 +22,10 @@ struct SceneRun {
 };
 
 // Runs `scene` once, sampled at `times` (output_times of the scene at the frame rate).
-SceneRun run_scene(const Scene& scene, const std::vector<double>& times);
+// `on_sample`, if given, is called after each sample with its time (RecordOptions::on_sample:
+// progress, and a throw stops the run).
+SceneRun run_scene(const Scene& scene, const std::vector<double>& times,
+                   const std::function<void(double t)>& on_sample = nullptr);
 
 // The data files of a run (README.md, "collide render"): data.csv, events.csv, and the
 // frames and events of data.json (state_json / event_json objects joined by ",\n").

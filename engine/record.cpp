@@ -23,6 +23,7 @@ Recording<D> record(const Scene& scene, const std::vector<double>& times, const 
         world.advance_to(t, &r.events, on_impact);
         r.states.push_back(world.bodies());
         r.events_upto.push_back(r.events.size());
+        if (options.on_sample) options.on_sample(t);
     }
     return r;
 }

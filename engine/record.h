@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <variant>
 #include <vector>
 
@@ -60,6 +61,11 @@ struct Recording {
 
 struct RecordOptions {
     std::size_t instants = 16;  // collision instants whose every body is kept
+    // Called after each sampled instant with its time (s), once the world has reached it: a
+    // caller can show how far the run got, and stop it by throwing (record then throws that).
+    // The samples are where the world is asked to stop anyway, so the run is the same with or
+    // without it.
+    std::function<void(double t)> on_sample;
 };
 
 // Runs `scene` once, sampling it at `times` (increasing, from >= 0). Throws what the world

@@ -64,6 +64,52 @@ TEST(GuiModel, SizeScalesTheShapeAndAnOverlapIsRefused) {
     EXPECT_EQ(m.scene().bodies[0].length, 2 * a.length);
 }
 
+// As the window edits: the re-run goes to the worker and the edit returns at once; the frames
+// stay the last complete run's (with its scene) until poll() or finish() takes the new one, and
+// of two quick edits only the newer's run ever shows.
+TEST(GuiModel, InTheBackgroundTheFramesWaitForTheNewestRun) {
+    GuiModel m(catch_up(), 30.0, Rerun::background);
+    const double e0 = m.scene().restitution;
+    ASSERT_NE(e0, 0.0);
+    m.seek_time(0.5);
+    m.set_restitution(1.0);
+    m.set_restitution(0.0);
+    EXPECT_EQ(m.scene().restitution, 0.0);       // the controls show the edit
+    EXPECT_EQ(m.shown_scene().restitution, e0);  // the frames, the run before it
+    expect_closed_form(m, e0);
+    m.finish();
+    EXPECT_FALSE(m.running());
+    EXPECT_EQ(m.run_progress(), 1.0);
+    EXPECT_EQ(m.shown_scene().restitution, 0.0);
+    expect_closed_form(m, 0.0);
+    EXPECT_DOUBLE_EQ(m.time(), 0.5);  // the playback time kept
+    EXPECT_FALSE(m.poll());           // taken once
+    // A script waits for its edits' runs whatever the mode.
+    GuiToggles t;
+    for (const GuiAction& a : parse_gui_script_text("set e 1\ntime 0\nnext-collision\n", "s.txt"))
+        EXPECT_TRUE(run_script_action(a, "s.txt", &m, &t)) << a.verb;
+    EXPECT_EQ(m.shown_scene().restitution, 1.0);
+    expect_closed_form(m, 1.0);
+}
+
+// A run the world refuses, in the background: its error is reported (the window shows it in
+// red), the frames stay the previous run's, and the next good edit clears it. (The page's
+// listing is 3D code: a 2D world refuses it.)
+TEST(GuiModel, InTheBackgroundARefusedRunReportsItsErrorAndKeepsTheFrames) {
+    GuiModel m(load_scenario(std::string(COLLIDE_SOURCE_DIR) + "/lessons/scenes/billiards-2d.toml"), 30.0,
+               Rerun::background);
+    const Model before = m.scene().model;
+    const std::size_t impacts = m.impacts().size();
+    m.set_model(Model::page_listing);
+    m.finish();
+    EXPECT_NE(m.error().find("3D"), std::string::npos) << m.error();
+    EXPECT_EQ(m.shown_scene().model, before);
+    EXPECT_EQ(m.impacts().size(), impacts);
+    m.set_model(before);
+    m.finish();
+    EXPECT_TRUE(m.error().empty()) << m.error();
+}
+
 TEST(GuiModel, PlaybackStepsSeeksAndFindsTheCollision) {
     GuiModel m(catch_up(), 30.0);
     EXPECT_EQ(m.index(), 0u);

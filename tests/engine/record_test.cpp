@@ -104,6 +104,36 @@ TEST(Record, RecordingDoesNotChangeTheRun) {
     for (std::size_t k = 0; k < events.size(); ++k) EXPECT_EQ(events[k].t, r.events[k].t);
 }
 
+// The sample hook (how collide gui shows progress and cancels a run): called once per sample,
+// in order, after the world reached it; the run is the same with it; what it throws stops the
+// run and comes out of record.
+TEST(Record, TheSampleHookSeesEverySampleAndCanStopTheRun) {
+    PileSpec p;
+    p.n = 6;
+    p.per_column = 3;
+    const Scene s = pile(2, p);
+    const std::vector<double> times = every(0.05, 1.0);
+    std::vector<double> seen;
+    RecordOptions o;
+    o.on_sample = [&](double t) { seen.push_back(t); };
+    const Recording<2> hooked = record<2>(s, times, o);
+    EXPECT_EQ(seen, times);
+    const Recording<2> plain = record<2>(s, times);
+    ASSERT_EQ(hooked.events.size(), plain.events.size());
+    for (std::size_t k = 0; k < plain.events.size(); ++k) EXPECT_EQ(hooked.events[k].t, plain.events[k].t);
+    for (std::size_t i = 0; i < s.bodies.size(); ++i)
+        EXPECT_EQ(hooked.states.back()[i].position, plain.states.back()[i].position);
+
+    struct Stop {};
+    seen.clear();
+    o.on_sample = [&](double t) {
+        seen.push_back(t);
+        if (seen.size() == 3) throw Stop{};
+    };
+    EXPECT_THROW(record<2>(s, times, o), Stop);
+    EXPECT_EQ(seen.size(), 3u);  // nothing run after the throw
+}
+
 // 1D: the event carries the blocks' centres; 1 m/s onto a block at rest 0.5 m away (faces
 // 0.1 m from the centres): they touch after 0.3 s.
 TEST(Record, OneDimensionalEventsCarryTheCentres) {
