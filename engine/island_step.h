@@ -61,7 +61,7 @@ public:
     static constexpr int kVelocitySweeps = 12;
     static constexpr int kPositionSweeps = 4;
     static constexpr double kSlop = 5e-5;   // m of penetration left alone (contacts persist)
-    static constexpr double kBeta = 0.4;    // fraction of the rest removed per step
+    static constexpr double kBeta = 0.8;    // fraction of the rest removed per step
     static constexpr double kMatch = 5e-3;  // m: a point within this of last step's is the same
 
     IslandStepper() = default;
