@@ -61,6 +61,8 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
                             std::vector<Body>* bodies, const Vec& g, double h) {
     std::vector<Body>& B = *bodies;
     if (slot_.size() != B.size()) slot_.assign(B.size(), -1);
+    if (last_.size() != B.size()) last_.assign(B.size(), 0);
+    ++serial_;
     struct Slot {
         Vec v = Vec::Zero(), vp = Vec::Zero();  // velocity, pseudo-velocity (m/s)
         Spin w = zero<Spin>(), wp = zero<Spin>();  // spin, pseudo-spin (rad/s)
@@ -140,11 +142,13 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         c.approach = 0.0;
         const std::uint64_t key = static_cast<std::uint64_t>(c.a) << 32 | c.b;
         const auto found = cache_.find(key);
+        const int sa = slot_[c.a], sb = slot_[c.b];
         const Cached* before = found == cache_.end() ? nullptr : &found->second;
+        if (before && ((sa >= 0 && before->serial != last_[c.a]) || (sb >= 0 && before->serial != last_[c.b])))
+            before = nullptr;  // not in contact at their last step
         c.fresh = true;
         if (before)
             for (int q = 0; q < before->count; ++q) c.fresh = c.fresh && !(before->lam[q] > 0.0);
-        const int sa = slot_[c.a], sb = slot_[c.b];
         const double inv_ma = sa >= 0 ? s[sa].inv_m : 0.0, inv_mb = sb >= 0 ? s[sb].inv_m : 0.0;
         for (int k = 0; k < c.m.count; ++k) {
             Row r;
@@ -244,7 +248,11 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         }
 
     // Results: contacts' impulses, last step's points for the next, the bodies.
-    next_.clear();
+    for (const StepContact<D>& c : *contacts) {
+        Cached& saved = cache_[static_cast<std::uint64_t>(c.a) << 32 | c.b];
+        saved.serial = serial_;
+        saved.count = 0;
+    }
     for (const Row& r : rows) {
         StepContact<D>& c = (*contacts)[r.c];
         Vec P = r.lam * r.n;
@@ -252,14 +260,15 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         c.impulse += P;
         c.weight += r.lam;
         c.moment += r.lam * c.m.points[r.k];
-        Cached& saved = next_[static_cast<std::uint64_t>(c.a) << 32 | c.b];
+        Cached& saved = cache_[static_cast<std::uint64_t>(c.a) << 32 | c.b];
+        if (saved.count == Space<D>::kMaxPoints) continue;  // (a pair is listed once)
         saved.anchor[saved.count] = to_local(B[c.a], c.m.points[r.k]);
         saved.lam[saved.count] = r.lam;
         saved.lam_t[saved.count] = P - r.lam * r.n;
         ++saved.count;
     }
-    cache_.swap(next_);
     for (std::size_t q = 0; q < members.size(); ++q) {
+        last_[members[q]] = serial_;
         Body& b = B[members[q]];
         b.v = s[q].v;
         b.w = s[q].w;

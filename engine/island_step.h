@@ -75,13 +75,18 @@ public:
 
 private:
     using InvInertia = std::conditional_t<D == 2, double, Mat3>;
-    struct Cached {  // one pair's points at the previous step
+    struct Cached {  // one pair's points at its last step
+        std::uint64_t serial = 0;  // the step() that wrote it
         int count = 0;
         std::array<Vec, Space<D>::kMaxPoints> anchor;    // on body a, in its own frame
         std::array<double, Space<D>::kMaxPoints> lam{};
         std::array<Vec, Space<D>::kMaxPoints> lam_t;     // tangential impulse, world
     };
-    std::unordered_map<std::uint64_t, Cached> cache_, next_;
+    // A pair's points are last step's only if it was written at each of its moving bodies'
+    // last step (islands may step apart: a step taken again after an impact is one island's).
+    std::unordered_map<std::uint64_t, Cached> cache_;
+    std::uint64_t serial_ = 0;          // step() calls
+    std::vector<std::uint64_t> last_;   // per body: the serial of its last step
     std::vector<int> slot_;  // body index -> slot in the step's arrays (-1: static for the step)
 };
 

@@ -26,6 +26,7 @@ void World<D>::join(std::size_t i, double t) {
     solved_[i] = 0;
     still_[i] = 0.0;
     restep_ = true;
+    reseed_.push_back(i);
     ++counters_.joined;
 }
 
@@ -36,6 +37,7 @@ void World<D>::wake(std::size_t i) {
     solved_[i] = 0;
     still_[i] = 0.0;
     restep_ = true;
+    reseed_.push_back(i);
     ++track_[i].version;
 }
 
@@ -70,13 +72,25 @@ template <int D>
 void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within) {
     const double h = kIslandStep;
     const double g = gravity().norm();
-    restep_ = false;
-    const double left = std::max(0.0, step_end_ - t);  // of a step cut short
-    step_end_ = t + h;
     std::vector<std::size_t> members;
-    for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (stepped_[i] && !asleep_[i]) members.push_back(i);
+    const std::uint32_t in = fresh(&mark_, &mark_id_);
+    if (!within) {
+        step_end_ = t + h;
+        for (std::size_t i = 0; i < bodies_.size(); ++i)
+            if (stepped_[i] && !asleep_[i]) members.push_back(i);
+    } else {
+        for (std::size_t i : reseed_)
+            if (stepped_[i] && !asleep_[i] && mark_[i] != in) {
+                members.push_back(i);
+                mark_[i] = in;
+            }
+    }
+    for (std::size_t i : members) mark_[i] = in;
+    restep_ = false;
+    reseed_.clear();
     if (members.empty()) return;
+    // The gravity impulse a body solved for a step longer than it moved on gives back.
+    auto left = [&](std::size_t i) { return solved_[i] ? std::max(0.0, until_[i] - t) : 0.0; };
     ++counters_.steps;
     fresh(&searched_, &search_);
     std::vector<StepContact<D>> contacts;
@@ -107,9 +121,14 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
                 if (m.separation > kTouch || !may_step(j)) return;
                 join(j, t);
                 members.push_back(j);
+                mark_[j] = in;
             } else if (stepped_[j] && asleep_[j]) {
                 wake(j);
                 members.push_back(j);
+                mark_[j] = in;
+            } else if (stepped_[j] && mark_[j] != in) {  // the rest of a restepped island
+                members.push_back(j);
+                mark_[j] = in;
             }
             StepContact<D> c;
             c.a = a;
@@ -130,13 +149,13 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
             continue;
         }
         stepped_[i] = 0;
-        if (solved_[i]) bodies_[i].v -= gravity() * left;
+        bodies_[i].v -= gravity() * left(i);
         solved_[i] = 0;
         set_free(i);
         insert(i, t, substep_end_);
     }
     for (std::size_t i : stepped) {
-        if (solved_[i]) bodies_[i].v -= gravity() * left;  // the step cut short: see the header
+        bodies_[i].v -= gravity() * left(i);  // the step cut short: see the header
         before_[i] = {bodies_[i].v + gravity() * h, bodies_[i].w};
     }
     stepper_.step(&contacts, stepped, &bodies_, gravity(), h);
@@ -147,6 +166,7 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
         k.t = t;
         ++k.version;
         solved_[i] = 1;
+        until_[i] = t + h;
     }
 
     // A pair's first contact is an impact: recorded as an event.
@@ -195,6 +215,8 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
     }
     if (within)
         for (std::size_t i : stepped) predict(i, t);
+    restep_ = false;  // (what woke here is in this step)
+    reseed_.clear();
 }
 
 template bool World<2>::may_step(std::size_t) const;

@@ -93,6 +93,7 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     before_.resize(n);
     stepped_.assign(n, 0);
     solved_.assign(n, 0);
+    until_.assign(n, 0.0);
     still_.assign(n, 0.0);
     // The resting speeds (see "Resting contact" in world.h).
     const double g = gravity().norm();
@@ -631,6 +632,7 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         if (bodies_[k].v != before_[k].v || bodies_[k].w != before_[k].w) {
             wake(k);
             restep_ = true;  // pushed: its island is stepped again from now
+            reseed_.push_back(k);
         }
     }
     if (restep_) step_islands(t, events, true);
@@ -704,7 +706,7 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
         // Then the stepped islands' step, if one starts now (or settling brought bodies to them).
         if (step_now || restep_) {
             const std::size_t recorded = events->size();
-            step_islands(t0, events, false);
+            step_islands(t0, events, !step_now);
             if (on_impact && events->size() > recorded) on_impact(t0);
         }
         std::unordered_set<std::size_t> predicted(all.begin(), all.end());

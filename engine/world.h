@@ -81,7 +81,7 @@
 // step's start is free again (exact events); a stepped island whose every surface point moved
 // slower than kStepSleepSpeed for kStepSleepTime falls asleep (v and w exactly zero) until
 // something touches it. Whenever a body joins or wakes, or an impact changes a stepped body's
-// motion, a new step is taken at once from that instant (the step's clock starts again), so
+// motion, its island takes a new step at once from that instant (the others go on), so
 // nothing pushed between two steps is pushed into its neighbours; the bodies of the step cut
 // short give back the gravity impulse of the time left, m g (t_end - t) (momentum kept; their
 // positions moved on the step's velocity meanwhile: off by at most g h^2, 27 um).
@@ -304,8 +304,8 @@ private:
     void wake(std::size_t i);            // a sleeping stepped body moves again (a step is taken)
     void count_impact(std::size_t a, std::size_t b, double t);  // stepping = auto's rule
     double surface_speed(std::size_t i) const;  // |v| + |w| R
-    // A step of every stepped body awake, from t; `within` a substep (after an impact) the
-    // stepped bodies are also predicted again.
+    // A step from t of every stepped body awake (all), or (a step taken again between two
+    // steps, `within` a substep) of the islands of the bodies in reseed_, predicted again.
     void step_islands(double t, std::vector<Event<D>>* events, bool within);
 
     RunCount runs_;                       // counts this world among every run (run_count.h)
@@ -343,7 +343,9 @@ private:
     // 1: its motion is the last step's (a step taken again before its end gives back the
     // gravity impulse of the time left, see "Stepped islands").
     std::vector<char> solved_;
+    std::vector<double> until_;    // s: the end of a solved body's step
     bool restep_ = false;          // something joined, woke or was pushed: a step is taken now
+    std::vector<std::size_t> reseed_;  // ... these bodies: their islands are stepped again
     std::vector<double> still_;    // s a stepped body has been slower than kStepSleepSpeed
     struct Rate {                  // a pair's recent collisions (count_impact)
         double since = 0.0;
