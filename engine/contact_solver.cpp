@@ -26,17 +26,6 @@ constexpr double kPolishTolerance = 1e-12;
 constexpr int kPolishRounds = 8;
 constexpr double kPolishGrowth = 1e3;  // largest correction, in units of the problem's impulses
 
-// Unit tangents spanning the contact plane: 2D one, 3D two.
-int tangents(const Vec2& n, std::array<Vec2, 2>* t) {
-    (*t)[0] = perp(n);
-    return 1;
-}
-int tangents(const Vec3& n, std::array<Vec3, 2>* t) {
-    const Vec3 helper = std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY();
-    (*t)[0] = n.cross(helper).normalized();
-    (*t)[1] = n.cross((*t)[0]);
-    return 2;
-}
 
 }  // namespace
 

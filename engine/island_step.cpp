@@ -23,17 +23,6 @@ double turning_share(const Vec3& r, const Vec3& n, const Mat3& inv_I) {
     return c.dot(inv_I * c);
 }
 
-// Unit tangents spanning the contact plane: 2D one, 3D two.
-int tangents(const Vec2& n, std::array<Vec2, 2>* t) {
-    (*t)[0] = perp(n);
-    return 1;
-}
-int tangents(const Vec3& n, std::array<Vec3, 2>* t) {
-    const Vec3 helper = std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY();
-    (*t)[0] = n.cross(helper).normalized();
-    (*t)[1] = n.cross((*t)[0]);
-    return 2;
-}
 
 // A point in the body's own frame.
 Vec2 to_local(const Body2& b, const Vec2& p) {

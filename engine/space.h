@@ -3,6 +3,7 @@
 // a number (rad/s about +z), a 3D one a vector; w x r, r x P and a body's pose follow.
 #pragma once
 
+#include <array>
 #include <cmath>
 
 #include "engine/body.h"
@@ -45,6 +46,18 @@ inline Vec2 spin_cross(double w, const Vec2& r) { return cross(w, r); }  // w x 
 inline Vec3 spin_cross(const Vec3& w, const Vec3& r) { return w.cross(r); }
 inline double lever(const Vec2& r, const Vec2& P) { return cross(r, P); }  // r x P
 inline Vec3 lever(const Vec3& r, const Vec3& P) { return r.cross(P); }
+
+// Unit tangents spanning the contact plane of normal n: 2D one, 3D two (returns how many).
+inline int tangents(const Vec2& n, std::array<Vec2, 2>* t) {
+    (*t)[0] = perp(n);
+    return 1;
+}
+inline int tangents(const Vec3& n, std::array<Vec3, 2>* t) {
+    const Vec3 helper = std::abs(n.x()) < 0.57 ? Vec3::UnitX() : Vec3::UnitY();
+    (*t)[0] = n.cross(helper).normalized();
+    (*t)[1] = n.cross((*t)[0]);
+    return 2;
+}
 
 inline Pose2 pose_of(const Body2& b) { return Pose2{b.position, b.angle}; }
 inline Pose3 pose_of(const Body3& b) { return Pose3{b.position, b.orientation}; }
