@@ -1,7 +1,8 @@
 // The world (world.h): construction, motion between events, prediction, the contacts of an
 // instant and their resolution, and advance_to. Its parts live in files of their own: time of
 // impact (toi.h), broad phase (broad_phase.h), contact solver (contact_solver.h), welds
-// (weld.cpp) and islands and sleeping (islands.cpp).
+// (weld.cpp), islands and sleeping (islands.cpp) and stepped islands (stepped.cpp,
+// island_step.h).
 #include "engine/world.h"
 
 #include <algorithm>
