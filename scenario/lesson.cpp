@@ -43,9 +43,9 @@ std::vector<std::string> strings(const TableReader& t, const std::string& key, c
 
 // The keys a question of each kind may have (anything else is refused by name).
 const std::vector<std::string>& question_keys() {
-    static const std::vector<std::string> keys = {"kind", "text", "quantity", "event", "body", "explain", "at",
-                                                  "about", "tolerance", "choices", "correct", "reasons",
-                                                  "answer", "what_if"};
+    static const std::vector<std::string> keys = {"kind", "text", "quantity", "event", "pair", "collision", "body",
+                                                  "explain", "at", "about", "tolerance", "choices", "correct",
+                                                  "reasons", "answer", "what_if"};
     return keys;
 }
 
@@ -63,12 +63,31 @@ void forbid_on(const TableReader& q, const std::string& kind, const std::vector<
 void parse_quantity(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
     Q.quantity = read_choice(q, "quantity", lesson_quantities(), "quantity", "");
     const QuantityInfo& info = quantity_table().at(Q.quantity);
-    if (info.needs_event) {
+    if (info.needs_event && q.has("pair")) {
+        // The collision by its bodies: `pair` (a, then b) and `collision` (which of theirs).
+        q.forbid("event", "'event' (a collision of the run) and 'pair' (a collision of two bodies) name it twice");
+        Q.pair = strings(q, "pair", "two body names, a then b");
+        if (Q.pair.size() != 2)
+            q.fail("pair", "expected two body names, a then b, got " + std::to_string(Q.pair.size()));
+        Q.pair_a = body_named(L.scene, Q.pair[0], q, "pair");
+        Q.pair_b = body_named(L.scene, Q.pair[1], q, "pair");
+        if (Q.pair_a == Q.pair_b) q.fail("pair", "a and b are the same body '" + Q.pair[0] + "'");
+        for (const LessonFigure& f : L.figures)
+            if (f.ia == Q.pair_b && f.ib == Q.pair_a)
+                q.fail("pair", f.key + " calls '" + f.a + "' a and '" + f.b +
+                                   "' b: one lesson gives a pair of bodies one pair of roles");
+        const long long k = q.integer("collision", "which collision of the pair, from 1").value_or(1);
+        if (k < 1 || k > 1000000) q.fail("collision", "expected a collision number from 1, got " + std::to_string(k));
+        Q.collision = static_cast<int>(k);
+    } else if (info.needs_event) {
         const long long e = q.integer("event", "a collision number, from 1").value_or(1);
         if (e < 1 || e > 1000000) q.fail("event", "expected a collision number from 1");
         Q.event = static_cast<int>(e);
+        q.forbid("collision", "'collision' counts the collisions of a 'pair'; give the pair, or 'event' alone");
     } else {
         q.forbid("event", "'" + Q.quantity + "' is about the whole run, not one collision");
+        q.forbid("pair", "'" + Q.quantity + "' is about the whole run, not one collision");
+        q.forbid("collision", "'" + Q.quantity + "' is about the whole run, not one collision");
     }
     if (info.needs_body) {
         Q.body = q.string("body", "a body's name").value_or("");
@@ -154,7 +173,7 @@ LessonQuestion parse_question(const TableReader& q, const Lesson& L) {
     if (Q.text.empty()) q.fail("text", "missing key 'text'");
     Q.explain = q.string("explain", "why (text)").value_or("");
     const std::vector<std::string> choice_keys = {"choices", "correct", "reasons"};
-    const std::vector<std::string> quantity_keys = {"quantity", "event", "body", "at", "about", "tolerance"};
+    const std::vector<std::string> quantity_keys = {"quantity", "event", "pair", "collision", "body", "at", "about", "tolerance"};
     if (Q.kind != QuestionKind::explain) forbid_on(q, kind, {"answer"}, "the model answer of an explain question");
     if (Q.kind != QuestionKind::numeric) forbid_on(q, kind, {"what_if"}, "for numeric questions");
     switch (Q.kind) {

@@ -18,7 +18,7 @@ namespace collide {
 
 // What a [[question]] asks of the student (README.md, "Lessons", questions):
 //   numeric  (the default) a quantity the engine computes from the run (`quantity`, with
-//            `event`, `body`, `at`, `about` as it needs), marked right within `tolerance`
+//            `event` or `pair` and `collision`, `body`, `at`, `about` as it needs), marked right within `tolerance`
 //            (relative, 0 < tolerance < 1, default 0.02); `what_if` asks it of the scene
 //            run again with other values ({"A.mass" = 4.0, "scene.restitution" = 1.0}).
 //   predict  asked before the animation, checked after it: either `choices` + `correct` +
@@ -34,6 +34,14 @@ struct LessonQuestion {
     std::string quantity;  // what answers it: one of lesson_quantities(); "" when the question
                            // has no engine quantity (choice, explain, predict with choices)
     int event = 1;         // event quantities: which collision of the run, from 1
+    // Or, instead of `event`, the collision named by its bodies: the `collision`-th (from 1)
+    // of pair[0] and pair[1], with pair[0] as the page's a and pair[1] as its b (the impulse is
+    // the one on pair[1]). A run of many bodies numbers its collisions in an order that any
+    // change of the engine can shift; a pair and its count name the same one whatever else
+    // collides around it (a row of dominoes: "domino 5 hits domino 6").
+    std::vector<std::string> pair;       // empty, or two body names
+    std::size_t pair_a = 0, pair_b = 0;  // their scene indices
+    int collision = 1;
     std::string body;      // body quantities: the body's name
     std::string explain;   // optional (required for predict): why, shown with the answer
     std::optional<Vec3> at;     // point_velocity_*: a point of the body (world frame at the
@@ -49,6 +57,7 @@ struct LessonQuestion {
     std::map<std::string, double> what_if;
 
     bool has_quantity() const { return !quantity.empty(); }
+    bool has_pair() const { return !pair.empty(); }
     bool has_choices() const { return !choices.empty(); }
 };
 

@@ -94,7 +94,8 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
     std::map<std::size_t, CollisionInstant> instants;
     const auto instant = [&](std::size_t k) -> const CollisionInstant& {
         if (auto it = instants.find(k); it != instants.end()) return it->second;
-        // In the lesson's roles: a [[figure]] naming this pair says which body is a.
+        // In the lesson's roles: a [[figure]] naming this pair says which body is a (a
+        // question's `pair` gives the same roles: the lesson refuses others).
         CollisionInstant c = collision_instant(events[k]);
         for (const LessonFigure& f : L.figures) c = with_roles(c, f.ia, f.ib);
         return instants.emplace(k, c).first->second;
@@ -138,16 +139,14 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
                 a.is_vector = true;
             }
         };
-        if (info.needs_event && static_cast<std::size_t>(q.event) > events.size())
-            throw InputError(L.file, {}, where + ".event",
-                             "asks for collision " + std::to_string(q.event) + " but the run has " +
-                                 std::to_string(events.size()));
         std::size_t body = info.needs_body ? body_index(q.body) : 0;
         if (info.needs_event) {
-            const CollisionInstant& c = instant(static_cast<std::size_t>(q.event - 1));
+            const std::size_t k = question_event(L, q, where, events);
+            CollisionInstant c = instant(k);
+            if (q.has_pair()) c = with_roles(c, q.pair_a, q.pair_b);
             if (info.needs_body && body != c.a && body != c.b)
                 throw InputError(L.file, {}, where + ".body",
-                                 "'" + q.body + "' takes no part in collision " + std::to_string(q.event) +
+                                 "'" + q.body + "' takes no part in collision " + std::to_string(k + 1) +
                                      " (" + scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + ")");
             const bool is_a = body == c.a;
             if (q.quantity == "impulse") set_vector(c.impulse);
@@ -170,7 +169,7 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
                 const std::vector<RouthPhase>& ph = s.routh.phases;
                 if (ph.size() < 2 || ph[0].kind != RouthPhase::Kind::slip)
                     throw InputError(L.file, {}, where + ".quantity",
-                                     "the slip does not stop during collision " + std::to_string(q.event));
+                                     "the slip does not stop during collision " + std::to_string(k + 1));
                 a.value = ph[0].normal_impulse_to;
             }
             else if (q.quantity == "point_velocity_before" || q.quantity == "point_velocity_after") {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "engine/record.h"
+#include "scenario/input_error.h"
 #include "scenario/lesson.h"
 
 namespace collide {
@@ -30,6 +31,38 @@ std::string option_number(std::size_t index);
 bool shows_tolerance(const LessonQuestion& q);
 // A relative tolerance as a percentage for the student: 0.02 -> "2 %", 0.005 -> "0.5 %".
 std::string tolerance_text(double tolerance);
+// The run's collision a question asks about, as an index into `events` (the run's, in time
+// order): its `event`-th, or the first event of the `collision`-th instant at which its `pair`
+// collides (either body first; as a [[figure]] counts them). Throws InputError naming the
+// question (`where`, e.g. "question[3]") when the run has no such one.
+template <class Event>
+std::size_t question_event(const Lesson& L, const LessonQuestion& q, const std::string& where,
+                           const std::vector<Event>& events) {
+    if (!q.has_pair()) {
+        if (static_cast<std::size_t>(q.event) > events.size())
+            throw InputError(L.file, {}, where + ".event",
+                             "asks for collision " + std::to_string(q.event) + " but the run has " +
+                                 std::to_string(events.size()));
+        return static_cast<std::size_t>(q.event - 1);
+    }
+    int seen = 0;
+    bool any = false;
+    double last = 0.0;  // s: the latest instant of the pair
+    for (std::size_t k = 0; k < events.size(); ++k) {
+        const Event& e = events[k];
+        if ((e.a != q.pair_a || e.b != q.pair_b) && (e.a != q.pair_b || e.b != q.pair_a)) continue;
+        if (any && e.t == last) continue;  // more of the same instant
+        any = true;
+        last = e.t;
+        if (++seen == q.collision) return k;
+    }
+    const std::string times = seen == 0 ? "never collide" : seen == 1 ? "collide only once" :
+                              "collide only " + std::to_string(seen) + " times";
+    throw InputError(L.file, {}, where + (q.collision > 1 ? ".collision" : ".pair"),
+                     "asks for collision " + std::to_string(q.collision) + " of '" + q.pair[0] + "' and '" +
+                         q.pair[1] + "', but they " + times + " in the run");
+}
+
 // Answers every question (one answer each, in order) from `run`, a recording of the lesson's
 // scene whose last sample is
 // at its duration (the run's end). Throws InputError (naming the question) when one asks for

@@ -35,14 +35,16 @@ std::string describe(const std::map<std::string, double>& values) {
     return s;
 }
 
-// The collisions the asked questions name (each once, in order; the first when none does).
-std::vector<int> asked_events(const Lesson& L, const std::vector<std::size_t>& asked) {
+// The collisions the asked questions name, as numbers of the run's collisions from 1 (each
+// once, in order; the first when none does). Throws InputError when the run lacks one.
+template <class Event>
+std::vector<int> asked_events(const Lesson& L, const std::vector<std::size_t>& asked, const std::vector<Event>& run) {
     std::vector<int> events;
     for (std::size_t i : asked) {
         const LessonQuestion& q = L.questions[i];
-        if (q.has_quantity() && quantity_table().at(q.quantity).needs_event &&
-            std::find(events.begin(), events.end(), q.event) == events.end())
-            events.push_back(q.event);
+        if (!q.has_quantity() || !quantity_table().at(q.quantity).needs_event) continue;
+        const int k = static_cast<int>(question_event(L, q, "question[" + std::to_string(i + 1) + "]", run)) + 1;
+        if (std::find(events.begin(), events.end(), k) == events.end()) events.push_back(k);
     }
     if (events.empty()) events.push_back(1);
     std::sort(events.begin(), events.end());
@@ -57,7 +59,7 @@ void answer_sheet(const Lesson& original, StudentSheet& s) {
     s.worked.clear();
     std::visit(
         [&](const auto& r) {
-            for (int k : asked_events(original, s.asked)) {
+            for (int k : asked_events(original, s.asked, r.events)) {
                 if (static_cast<std::size_t>(k) > r.events.size())
                     throw InputError(original.file, {}, "vary",
                                      r.events.empty() ? "the run has no collision"
@@ -66,6 +68,10 @@ void answer_sheet(const Lesson& original, StudentSheet& s) {
                                                             std::to_string(k));
                 CollisionInstant c = collision_instant(r.events[static_cast<std::size_t>(k - 1)]);
                 for (const LessonFigure& f : s.lesson.figures) c = with_roles(c, f.ia, f.ib);
+                for (std::size_t i : s.asked) {  // a question's pair gives the same roles
+                    const LessonQuestion& q = original.questions[i];
+                    if (q.has_pair()) c = with_roles(c, q.pair_a, q.pair_b);
+                }
                 WorkedCollision w;
                 w.event = k;
                 w.problem = collision_problem(s.lesson.scene, c);

@@ -49,6 +49,27 @@ TEST(LessonQuestions, ANumericQuestionIsTheDefaultWithATwoPercentTolerance) {
     EXPECT_EQ(L.questions[1].body, "A");
 }
 
+TEST(LessonQuestions, APairNamesACollisionByItsBodiesInItsRoles) {
+    const Lesson L = parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\npair = [\"B\", \"A\"]\n"
+                           "[[question]]\ntext = \"v?\"\nquantity = \"velocity_after\"\nbody = \"A\"\n"
+                           "pair = [\"A\", \"B\"]\ncollision = 3\n");
+    ASSERT_EQ(L.questions.size(), 2u);
+    const LessonQuestion &q = L.questions[0], &r = L.questions[1];
+    EXPECT_TRUE(q.has_pair());
+    EXPECT_EQ(q.pair, (std::vector<std::string>{"B", "A"}));
+    EXPECT_EQ(q.pair_a, 1u);  // B, the page's a
+    EXPECT_EQ(q.pair_b, 0u);
+    EXPECT_EQ(q.collision, 1);
+    EXPECT_EQ(r.pair_a, 0u);
+    EXPECT_EQ(r.collision, 3);
+    EXPECT_FALSE(parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\n").questions[0].has_pair());
+    // Not on a question about the whole run.
+    EXPECT_THROW(parse("[[question]]\ntext = \"n?\"\nquantity = \"collisions\"\npair = [\"A\", \"B\"]\n"), InputError);
+    EXPECT_THROW(parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\npair = [\"A\", \"C\"]\n"), InputError);
+    EXPECT_THROW(parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\npair = [\"A\", \"B\"]\ncollision = 0\n"),
+                 InputError);
+}
+
 TEST(LessonQuestions, AChoiceQuestionKeepsItsOptionsTheRightOneAndEveryReason) {
     const Lesson L = parse("[[question]]\nkind = \"choice\"\ntext = \"Which way?\"\n"
                            "choices = [\"forward\", \"backward\", \"stops\"]\ncorrect = 2\n"

@@ -730,5 +730,31 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
     }
 }
 
+TEST(LessonAnswers, APairNamesTheRunsCollisionInItsRoles) {
+    // The bouncing ball's third bounce, by its number in the run and by its pair: the same
+    // collision; asked with the roles the other way round, the impulse on b is the opposite.
+    Lesson L = lesson("bouncing-ball");
+    L.questions.clear();
+    LessonQuestion by_event, by_pair, reversed;
+    by_event.text = by_pair.text = reversed.text = "P?";
+    by_event.quantity = by_pair.quantity = reversed.quantity = "impulse";
+    by_event.event = 3;
+    by_pair.pair = {"floor", "ball"};
+    by_pair.pair_a = index_of(L, "floor");
+    by_pair.pair_b = index_of(L, "ball");
+    by_pair.collision = 3;
+    reversed = by_pair;
+    reversed.pair = {"ball", "floor"};
+    std::swap(reversed.pair_a, reversed.pair_b);
+    L.questions = {by_event, by_pair, reversed};
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(a.size(), 3u);
+    EXPECT_GT(a[0].vector.y(), 0.0);  // the floor pushes the ball up
+    EXPECT_EQ(a[1].vector, a[0].vector);
+    EXPECT_EQ(a[2].vector, -a[0].vector);
+    L.questions[1].collision = 1000;
+    EXPECT_THROW(answer_questions(L), InputError);
+}
+
 }  // namespace
 }  // namespace collide
