@@ -221,8 +221,16 @@ struct Ran {
     std::optional<PenaltyStudy> penalty;
 };
 
+// The collisions a lesson's figures show, for the record to keep wherever they fall.
+std::vector<RecordOptions::Keep> figure_keeps(const Loaded& in) {
+    std::vector<RecordOptions::Keep> keep;
+    if (in.lesson)
+        for (const LessonFigure& f : in.lesson->figures) keep.push_back({f.ia, f.ib, f.collision});
+    return keep;
+}
+
 Ran run_stage(const Loaded& in) {
-    Ran out{run_scene(in.scene, in.times), {}, std::nullopt};
+    Ran out{run_scene(in.scene, in.times, nullptr, figure_keeps(in)), {}, std::nullopt};
     if (in.lesson && in.lesson->penalty) out.penalty = penalty_study(*in.lesson, out.run.record);
     if (in.lesson) out.answers = answer_questions(*in.lesson, out.run.record, out.penalty ? &*out.penalty : nullptr);
     return out;
@@ -264,7 +272,7 @@ void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
     const std::vector<CollisionPick> picks = lesson_picks(in);
     for (const auto& [label, s] : scenes) {
         // Each variant at its own collision: the one the lesson's first figure picks.
-        const std::optional<Moments> m = s == &in.scene ? moments : pick_moments(*s, run_scene(*s, in.times), picks);
+        const std::optional<Moments> m = s == &in.scene ? moments : pick_moments(*s, run_scene(*s, in.times, nullptr, figure_keeps(in)), picks);
         RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
         if (m) {
             result.first = m->instant;
@@ -292,10 +300,8 @@ Analysis analyse_stage(const Loaded& in, const SceneRun& run) {
                 const std::string times = n == 0 ? "never collide" : n == 1 ? "collide only once" :
                                           "collide only " + std::to_string(n) + " times";
                 throw InputError(in.lesson->file, f.pos, f.key,
-                                 "'" + f.a + "' and '" + f.b + "' " + times + " in the run's first " +
-                                     std::to_string(RecordOptions{}.instants) +
-                                     " collision instants, so there is no collision " + std::to_string(f.collision) +
-                                     " to show");
+                                 "'" + f.a + "' and '" + f.b + "' " + times + " in the run, so there is no collision " +
+                                     std::to_string(f.collision) + " to show");
             }
             if (k == 0) {
                 out.moments = std::move(m);

@@ -293,10 +293,11 @@ render::ImpactMark with_roles(const render::ImpactMark& mark, std::size_t a, std
 }
 
 SceneRun run_scene(const Scene& scene, const std::vector<double>& times,
-                   const std::function<void(double t)>& on_sample) {
+                   const std::function<void(double t)>& on_sample, const std::vector<RecordOptions::Keep>& keep) {
     SceneRun run;
     RecordOptions options;
     options.on_sample = on_sample;
+    options.keep = keep;
     run.record = record_any(scene, times, options);
     visit_record(run, [&](const auto& rec) {
         for (std::size_t k = 0; k < rec.times.size(); ++k)

@@ -23,9 +23,11 @@ struct SceneRun {
 
 // Runs `scene` once, sampled at `times` (output_times of the scene at the frame rate).
 // `on_sample`, if given, is called after each sample with its time (RecordOptions::on_sample:
-// progress, and a throw stops the run).
+// progress, and a throw stops the run). `keep`: collisions whose instants the record keeps
+// wherever they fall (RecordOptions::keep: a lesson's figures), besides the first 16.
 SceneRun run_scene(const Scene& scene, const std::vector<double>& times,
-                   const std::function<void(double t)>& on_sample = nullptr);
+                   const std::function<void(double t)>& on_sample = nullptr,
+                   const std::vector<RecordOptions::Keep>& keep = {});
 
 // The data files of a run (README.md, "collide render"): data.csv, events.csv, and the
 // frames and events of data.json (state_json / event_json objects joined by ",\n").

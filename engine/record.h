@@ -61,6 +61,15 @@ struct Recording {
 
 struct RecordOptions {
     std::size_t instants = 16;  // collision instants whose every body is kept
+    // Kept too, wherever they fall: the instants of the first `count` collisions of each of
+    // these pairs (a collision of a pair: an instant at which they collide, in time order). A
+    // lesson's figure of "the first strike of domino 1 on domino 2" may come after many
+    // collisions of other bodies.
+    struct Keep {
+        std::size_t a = 0, b = 0;
+        int count = 1;
+    };
+    std::vector<Keep> keep;
     // Called after each sampled instant with its time (s), once the world has reached it: a
     // caller can show how far the run got, and stop it by throwing (record then throws that).
     // The samples are where the world is asked to stop anyway, so the run is the same with or

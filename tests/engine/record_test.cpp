@@ -81,6 +81,32 @@ TEST(Record, ABouncingBallsEventsAreOnTheGroundAndOnlyTheFirstInstantsAreKept) {
     EXPECT_NEAR(r.instants[1].bodies[1].v.y(), std::sqrt(2.0 * g * (h - r0)), 1e-9);
 }
 
+// Two balls bounce on the ground (e = 1), the second dropped from higher; only one instant is
+// kept besides those asked for by pair: the second ball's second and third landings (at
+// 3 te2 and 5 te2) are kept for a figure of "the 3rd collision of ground and high", its 4th is not.
+TEST(Record, TheInstantsOfAKeptPairsCollisionsAreKeptWhereverTheyFall) {
+    const double g = 9.81, r0 = 0.1, h1 = 0.5, h2 = 1.0;
+    Scene s = empty_scene(3, Policy::sequential, 1.0, Vec3(0, -g, 0));
+    s.duration = 3.0;
+    s.bodies.push_back(half_space("ground", Vec3::UnitY(), 0.0));
+    s.bodies.push_back(sphere("low", r0, 1.0, Vec3(0, h1, 0)));
+    s.bodies.push_back(sphere("high", r0, 1.0, Vec3(1, h2, 0)));
+    RecordOptions options;
+    options.instants = 1;
+    options.keep = {{0, 2, 3}};
+    const Recording<3> r = record<3>(s, every(0.05, 3.0), options);
+    const double te1 = std::sqrt(2.0 * (h1 - r0) / g), te2 = std::sqrt(2.0 * (h2 - r0) / g);
+    ASSERT_EQ(r.instants.size(), 4u);  // low's first landing; high's first three
+    EXPECT_NEAR(r.instants[0].t, te1, 1e-9);
+    for (int k = 1; k <= 3; ++k) {
+        const auto& in = r.instants[static_cast<std::size_t>(k)];
+        EXPECT_NEAR(in.t, (2.0 * k - 1.0) * te2, 1e-9) << k;
+        ASSERT_EQ(in.end - in.first, 1u);
+        EXPECT_EQ(r.events[in.first].b, 2u);
+        EXPECT_NEAR(in.bodies[2].v.y(), std::sqrt(2.0 * g * (h2 - r0)), 1e-8) << k;  // just after
+    }
+}
+
 // Recording a run changes nothing in it: the same world advanced to the same instants gives
 // the same states and events, bit for bit (a pile of boxes: resting contact, sleeping).
 TEST(Record, RecordingDoesNotChangeTheRun) {
