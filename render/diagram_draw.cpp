@@ -328,14 +328,13 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
 
     // Velocities and spins (labelled as motion_labelled() says).
     if (decor.velocities) {
-        std::size_t moving = 0;
-        double fastest = 0.0, fastest_spin = 0.0;
+        std::vector<double> speeds, spins;
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
-            ++moving;
-            fastest = std::max(fastest, xy(frame.bodies[i].v).norm());
-            fastest_spin = std::max(fastest_spin, std::abs(frame.bodies[i].w.z()));
+            speeds.push_back(xy(frame.bodies[i].v).norm());
+            spins.push_back(std::abs(frame.bodies[i].w.z()));
         }
+        const double speed_floor = motion_label_floor(speeds), spin_floor = motion_label_floor(spins);
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
             const BodyState& s = frame.bodies[i];
@@ -346,7 +345,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          components(s.v, dim), c.velocity);
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
-                if (motion_labelled(xy(s.v).norm(), fastest, moving))
+                if (motion_labelled(xy(s.v).norm(), speed_floor))
                     pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
                                        {shown}, c.velocity, false});
             }
@@ -364,7 +363,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.colour = c.spin;
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
-                if (motion_labelled(std::abs(w), fastest_spin, moving))
+                if (motion_labelled(std::abs(w), spin_floor))
                     pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
                                        "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
             }

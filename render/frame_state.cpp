@@ -1,6 +1,7 @@
 #include "render/frame_state.h"
 
 #include <algorithm>
+#include <functional>
 #include <type_traits>
 
 #include "engine/diagnostics.h"
@@ -63,6 +64,48 @@ ImpactMark impact_mark_of(const Event<D>& e) {
     m.normal = lift(e.normal);
     m.impulse = lift(e.impulse);
     return m;
+}
+
+double motion_label_floor(std::vector<double> sizes) {
+    if (sizes.size() <= kQuietBodies) return 0.0;
+    std::sort(sizes.begin(), sizes.end(), std::greater<double>());
+    return std::max(kShownMotionFraction * sizes.front(), sizes[kMaxMotionLabels - 1]);
+}
+
+TableRows table_rows(const std::vector<std::size_t>& moving, const std::vector<double>& kinetic,
+                     const FrameState& frame, std::size_t rows) {
+    TableRows out;
+    if (moving.size() <= rows) {
+        out.shown = moving;
+        return out;
+    }
+    const std::size_t room = rows > 0 ? rows - 1 : 0;  // one line goes to the others
+    std::vector<bool> is_moving(frame.bodies.size(), false), taken(frame.bodies.size(), false);
+    for (std::size_t i : moving) is_moving[i] = true;
+    const auto take = [&](std::size_t i) {
+        if (out.shown.size() < room && i < taken.size() && is_moving[i] && !taken[i]) {
+            taken[i] = true;
+            out.shown.push_back(i);
+        }
+    };
+    // The two bodies of the frame's largest collision (the first of equals).
+    const ImpactMark* largest = nullptr;
+    for (const ImpactMark& m : frame.impacts)
+        if (!largest || m.impulse.norm() > largest->impulse.norm()) largest = &m;
+    if (largest) take(largest->b), take(largest->a);
+    // Then the most kinetic energy.
+    std::vector<std::size_t> by_energy = moving;
+    std::stable_sort(by_energy.begin(), by_energy.end(),
+                     [&](std::size_t x, std::size_t y) { return kinetic[x] > kinetic[y]; });
+    for (std::size_t i : by_energy) take(i);
+    std::sort(out.shown.begin(), out.shown.end());
+    for (std::size_t i : moving) {
+        if (taken[i]) continue;
+        ++out.others;
+        out.others_speed = std::max(out.others_speed, frame.bodies[i].v.norm());
+        out.others_spin = std::max(out.others_spin, frame.bodies[i].w.norm());
+    }
+    return out;
 }
 
 ImpactMark impact_mark(const Scene&, const Event2& e) { return impact_mark_of(e); }

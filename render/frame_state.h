@@ -63,14 +63,37 @@ std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts);
 constexpr std::size_t kDetailedImpacts = 3;
 
 // Velocity and spin labels in a frame of more than kQuietBodies moving bodies: only for the
-// bodies whose speed (or spin) is at least kShownMotionFraction of the frame's largest (their
-// arrows are drawn all the same). Fewer bodies: every one is labelled.
+// bodies whose speed (or spin) is at least kShownMotionFraction of the frame's largest and
+// among the kMaxMotionLabels largest (their arrows are drawn all the same: a pile of 40 boxes
+// settling turns them all a little). Fewer bodies: every one is labelled.
 constexpr std::size_t kQuietBodies = 8;
 constexpr double kShownMotionFraction = 0.1;
-// Whether a value of `size` is labelled among `count` bodies whose largest is `largest`.
-inline bool motion_labelled(double size, double largest, std::size_t count) {
-    return count <= kQuietBodies || size >= kShownMotionFraction * largest;
-}
+constexpr std::size_t kMaxMotionLabels = 6;
+// The smallest speed (or spin) labelled in a frame whose moving bodies' speeds (or spins) are
+// `sizes`: 0 (every one) for up to kQuietBodies of them, else the larger of
+// kShownMotionFraction of the largest and the kMaxMotionLabels-th largest.
+double motion_label_floor(std::vector<double> sizes);
+// Whether a value of `size` is labelled (`floor` from motion_label_floor).
+inline bool motion_labelled(double size, double floor) { return size >= floor; }
+
+// The data table's rows in a frame of many bodies. The table has room for at most `rows`
+// bodies (kTableBodies, or fewer when the frame is short); with more moving bodies than that,
+// rows - 1 of them get a row and one line tells the others' count and how fast the fastest of
+// them moves and turns. The rows go to the two bodies of the frame's largest (shown) collision,
+// then to those with the most kinetic energy (ties: scene order): what moves, not the many
+// bodies that a settling pile's small collisions touch. They are listed in scene order. The
+// totals below them stay those of every moving body.
+constexpr std::size_t kTableBodies = 8;
+struct TableRows {
+    std::vector<std::size_t> shown;  // scene indices of the bodies with a row, in scene order
+    std::size_t others = 0;          // moving bodies without a row
+    double others_speed = 0.0;       // m/s: the largest |v| among them
+    double others_spin = 0.0;        // rad/s: the largest |ω| among them
+};
+// `moving`: the moving bodies' scene indices, in order; `kinetic`: each body's kinetic energy
+// (J), by scene index; `frame`: its bodies and collisions (ImpactMark::a, b).
+TableRows table_rows(const std::vector<std::size_t>& moving, const std::vector<double>& kinetic,
+                     const FrameState& frame, std::size_t rows = kTableBodies);
 
 // Fills frame.trails from earlier frames: for each body the centres at the frames within
 // `span` seconds before frame.t (in `history`, time order), then its current centre.

@@ -44,7 +44,8 @@ std::vector<DataTable::Cell> DataTable::cells(std::size_t i, const FrameState& f
         double m = 0;
         for (std::size_t r : rows_) m += body_mass(scene_, r);
         const FrameTotals sums = frame_totals(scene_, f);
-        out.push_back({"total", {}});
+        // Every moving body's, also those without a row: said so when some have none.
+        out.push_back({rows_.size() > capacity_ ? "all " + std::to_string(rows_.size()) : "total", {}});
         out.push_back(number(m));
         out.push_back({"", {}});
         if (d > 1) out.push_back({"", {}});
@@ -64,7 +65,28 @@ std::vector<DataTable::Cell> DataTable::cells(std::size_t i, const FrameState& f
     return out;
 }
 
-void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& samples) {
+TableRows DataTable::rows(const FrameState& f) const {
+    std::vector<double> kinetic(scene_.bodies.size(), 0.0);
+    if (rows_.size() > capacity_)
+        for (std::size_t i : rows_) kinetic[i] = kinetic_energy(scene_, i, f.bodies[i]);
+    return table_rows(rows_, kinetic, f, capacity_);
+}
+
+std::string DataTable::others_text(const TableRows& r) const {
+    if (r.others == 0) return "";
+    std::string s = "+ " + std::to_string(r.others) + " more";
+    if (r.others_speed == 0 && r.others_spin == 0) return s + ", at rest";
+    // Bounds rounded up at the columns' decimals, so that they stay true as printed.
+    const auto up = [](double x, int decimals) {
+        const double k = std::pow(10.0, decimals);
+        return format_fixed(std::ceil(x * k - 1e-9) / k, decimals);
+    };
+    s += ": |v| ≤ " + up(r.others_speed, columns_[2].decimals) + " m/s";
+    if (scene_.dimension > 1) s += ", |ω| ≤ " + up(r.others_spin, columns_[3].decimals) + " rad/s";
+    return s;
+}
+
+void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& samples, float max_height) {
     const int d = scene_.dimension;
     rows_.clear();
     for (std::size_t i = 0; i < scene_.bodies.size(); ++i)
@@ -95,8 +117,18 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
     }
     for (std::size_t c = 1; c < columns_.size(); ++c) columns_[c].decimals = decimals_for(largest[c]);
 
-    // Widths: the widest cell over the run (and the header).
+    // Rows: every moving body while kTableBodies and max_height allow, else as many as fit
+    // beside a line for the others (table_rows picks them frame by frame).
     ImFont* font = fonts.table;
+    pad_ = style_.px(8.0f);
+    swatch_ = std::round(font->FontSize * 0.7f);
+    row_height_ = std::round(font->FontSize * 1.45f);
+    const float fixed = pad_ * 2 + row_height_ * 2 + style_.px(4.0f);  // header, totals
+    const float fit = std::floor((max_height - fixed) / row_height_);
+    capacity_ = std::min(kTableBodies, static_cast<std::size_t>(std::max(2.0f, fit)));
+    if (rows_.size() <= capacity_) capacity_ = rows_.size();
+
+    // Widths: the widest cell over the run (and the header).
     for (Column& c : columns_) c.width = rich_text_size(fonts, font, c.header).x;
     const auto widen = [&](const FrameState& f) {
         std::vector<std::size_t> all = rows_;
@@ -112,13 +144,22 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
     for (std::size_t k = 0; k < samples.size(); k += step) widen(samples[k]);
     if (!samples.empty()) widen(samples.back());
 
-    pad_ = style_.px(8.0f);
-    swatch_ = std::round(font->FontSize * 0.7f);
-    row_height_ = std::round(font->FontSize * 1.45f);
     float w = pad_ + swatch_ + style_.px(6.0f);
     for (const Column& c : columns_) w += c.width + style_.px(16.0f);
     w += pad_ - style_.px(16.0f);
-    const float h = pad_ * 2 + row_height_ * static_cast<float>(rows_.size() + 2) + style_.px(4.0f);
+    if (rows_.size() > capacity_) {
+        // The line for the others at its widest: all but the rows' bodies, at the run's top speeds.
+        TableRows widest;
+        widest.others = rows_.size() - (capacity_ - 1);
+        for (const FrameState& f : samples)
+            for (std::size_t r : rows_) {
+                widest.others_speed = std::max(widest.others_speed, f.bodies[r].v.norm());
+                widest.others_spin = std::max(widest.others_spin, f.bodies[r].w.norm());
+            }
+        w = std::max(w, pad_ * 2 + swatch_ + style_.px(6.0f) + rich_text_size(fonts, font, others_text(widest)).x);
+    }
+    const std::size_t lines = rows_.size() > capacity_ ? capacity_ : rows_.size();  // bodies, then the others' line
+    const float h = pad_ * 2 + row_height_ * static_cast<float>(lines + 2) + style_.px(4.0f);
     size_ = rows_.empty() ? ImVec2(0, 0) : ImVec2(std::ceil(w), std::ceil(h));
 }
 
@@ -154,8 +195,22 @@ Annotations DataTable::annotate(const FontSet& fonts, ImVec2 at, const FrameStat
     for (const Column& col : columns_) header.push_back({col.header, {}});
     row(header, -1, c.muted, y);
     y += row_height_;
-    for (std::size_t i : rows_) {
+    const TableRows shown = rows(f);
+    for (std::size_t i : shown.shown) {
         row(cells(i, f), static_cast<int>(i), c.ink, y);
+        y += row_height_;
+    }
+    if (shown.others > 0) {  // one cell across the row
+        Annotation a;
+        a.kind = Mark::table_cell;
+        a.body = -1;
+        a.of = 0;
+        a.text = others_text(shown);
+        const float tw = rich_text_size(fonts, font, a.text).x;
+        a.box = ImVec4(x_first, y + text_dy, x_first + tw, y + text_dy + font->FontSize);
+        a.font_px = font->FontSize;
+        a.colour = c.muted;
+        out.push_back(std::move(a));
         y += row_height_;
     }
     row(cells(scene_.bodies.size(), f), -1, c.ink, y + style_.px(4.0f));
@@ -168,7 +223,11 @@ void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const Fram
     draw_panel(dl, style_, at, size_);
     float y = at.y + pad_ + row_height_;
     dl->AddLine(ImVec2(at.x + pad_, y), ImVec2(at.x + size_.x - pad_, y), c.panel_border, style_.lw(1.0f));
-    for (std::size_t order = 0; order < rows_.size(); ++order) {
+    const TableRows shown = rows(f);
+    for (std::size_t i : shown.shown) {
+        // A body's swatch has its colour in the view: its place among the moving bodies.
+        const std::size_t order =
+            static_cast<std::size_t>(std::find(rows_.begin(), rows_.end(), i) - rows_.begin());
         const float sy = y + 0.5f * (row_height_ - swatch_);
         dl->AddRectFilled(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_),
                           c.fills[order % Palette::kFills], style_.lw(2.0f));
@@ -176,6 +235,7 @@ void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const Fram
                     style_.px(2.0f), 0, style_.lw(1.0f));
         y += row_height_;
     }
+    if (shown.others > 0) y += row_height_;
     y += style_.px(4.0f);
     dl->AddLine(ImVec2(at.x + pad_, y - style_.lw(2.0f)), ImVec2(at.x + size_.x - pad_, y - style_.lw(2.0f)),
                 c.panel_border, style_.lw(1.0f));
@@ -184,16 +244,18 @@ void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const Fram
 }
 
 std::vector<std::vector<std::string>> DataTable::text(const FrameState& f) const {
-    std::vector<std::vector<std::string>> rows(1);
-    for (const Column& col : columns_) rows[0].push_back(col.header);
+    std::vector<std::vector<std::string>> lines(1);
+    for (const Column& col : columns_) lines[0].push_back(col.header);
     const auto texts = [](const std::vector<Cell>& cells) {
         std::vector<std::string> out;
         for (const Cell& c : cells) out.push_back(c.text);
         return out;
     };
-    for (std::size_t i : rows_) rows.push_back(texts(cells(i, f)));
-    rows.push_back(texts(cells(scene_.bodies.size(), f)));
-    return rows;
+    const TableRows shown = rows(f);
+    for (std::size_t i : shown.shown) lines.push_back(texts(cells(i, f)));
+    if (shown.others > 0) lines.push_back({others_text(shown)});
+    lines.push_back(texts(cells(scene_.bodies.size(), f)));
+    return lines;
 }
 
 void Header::prepare(const FontSet& fonts, std::string title, int time_decimals,

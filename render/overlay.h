@@ -24,15 +24,21 @@ namespace collide::render {
 class DataTable {
 public:
     DataTable(const Scene& scene, const Style& style) : scene_(scene), style_(style) {}
-    void prepare(const FontSet& fonts, const std::vector<FrameState>& samples);
+    // Lays the table out for the run's frames, at most `max_height` pixels tall: beyond
+    // kTableBodies moving bodies, or as many as fit, the rows go to the bodies table_rows()
+    // picks in each frame and one line sums up the others (render/frame_state.h).
+    void prepare(const FontSet& fonts, const std::vector<FrameState>& samples, float max_height = 1e9f);
     ImVec2 size() const { return size_; }
     // Draws the panel, the swatches and rules, and the cells annotate() lists.
     void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, const FrameState& frame) const;
     // Its cells as Mark::table_cell items where draw() writes them (after prepare).
     Annotations annotate(const FontSet& fonts, ImVec2 top_left, const FrameState& frame) const;
     // What draw() writes, cell by cell (after prepare): the header row, a row per moving body
-    // (name, m, v, ω in 2D and 3D, p, E_k) and the totals (m, p, E_k).
+    // (name, m, v, ω in 2D and 3D, p, E_k), or per body table_rows() picks and then a line for
+    // the others ("+ 8 more: |v| ≤ 0.004 m/s, |ω| ≤ 0.2 rad/s"), and the totals (m, p, E_k).
     std::vector<std::vector<std::string>> text(const FrameState& frame) const;
+    // The bodies with a row in this frame, and the others (after prepare).
+    TableRows rows(const FrameState& frame) const;
 
 private:
     struct Column {
@@ -46,11 +52,15 @@ private:
     };
     // The cells of one row (moving body i, or the totals when i is the body count).
     std::vector<Cell> cells(std::size_t i, const FrameState& frame) const;
+    // The line for the bodies without a row ("" when every body has one).
+    std::string others_text(const TableRows& rows) const;
 
     const Scene& scene_;
     Style style_;
     std::vector<Column> columns_;
     std::vector<std::size_t> rows_;  // moving bodies
+    std::size_t capacity_ = 0;       // body rows the table has (a line for the others besides
+                                     // when rows_ has more)
     float row_height_ = 0, pad_ = 0, swatch_ = 0;
     ImVec2 size_{0, 0};
 };

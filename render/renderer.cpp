@@ -104,9 +104,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     if (settings_.header)
         header_->prepare(fonts, scene_.title, settings_.time_decimals,
                          legend(longest, 5.0, longest, 5.0));
-    if (settings_.table) table_->prepare(fonts, samples);
     const ImVec2 hs = settings_.header ? header_->size() : ImVec2(0, 0);
-    const ImVec2 ts = settings_.table ? table_->size() : ImVec2(0, 0);
 
     // The bottom strip: the time line across the frame; above it the plots and the formula.
     float strip = 0;  // its height, margin included
@@ -168,6 +166,11 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     }
     if (strip > 0) strip += gap;
     const float bottom = H - strip;  // the views end here
+
+    // The table: as tall as the room under the header allows (a scene of many bodies gets a
+    // row for the few that matter in each frame, and a line for the others).
+    if (settings_.table) table_->prepare(fonts, samples, bottom - m - (hs.y > 0 ? hs.y + gap : 0.0f));
+    const ImVec2 ts = settings_.table ? table_->size() : ImVec2(0, 0);
 
     // Two layouts: overlays in a band across the top, or in a column on the right.
     struct Layout {

@@ -229,14 +229,13 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     // the names, as before the list existed.
     std::vector<LabelRequest> impacts, motion;
     // Velocity and spin labels as motion_labelled() says.
-    std::size_t moving = 0;
-    double fastest = 0.0, fastest_spin = 0.0;
+    std::vector<double> speeds, spins;
     for (std::size_t i = 0; i < n; ++i) {
         if (I.scene.bodies[i].is_static() || !I.solids.bodies[i].drawn() || !decor.in_focus(i)) continue;
-        ++moving;
-        fastest = std::max(fastest, frame.bodies[i].v.norm());
-        fastest_spin = std::max(fastest_spin, frame.bodies[i].w.norm());
+        speeds.push_back(frame.bodies[i].v.norm());
+        spins.push_back(frame.bodies[i].w.norm());
     }
+    const double speed_floor = motion_label_floor(speeds), spin_floor = motion_label_floor(spins);
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         const int of = static_cast<int>(k);
@@ -258,7 +257,7 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::velocity: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double v = norm_of(a.value);
-            if (motion_labelled(v, fastest, moving))
+            if (motion_labelled(v, speed_floor))
                 motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
                                   c.velocity, false});
             break;
@@ -266,7 +265,7 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::spin: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double w = norm_of(a.value);
-            if (motion_labelled(w, fastest_spin, moving))
+            if (motion_labelled(w, spin_floor))
                 motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
                                   c.spin, false});
             break;
