@@ -276,12 +276,24 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     }
     pending = impacts;
     pending.insert(pending.end(), motion.begin(), motion.end());
+    // Names beside their bodies, at the height of their centres, on the side away from the
+    // other bodies (left of the group's middle: to the left): in a stack each name stands by its
+    // own box, where a name above a box would land on the box above it and be pushed anywhere.
+    float middle = 0;
+    int named = 0;
+    for (const Annotation& a : items)
+        if (a.kind == Mark::body) middle += cam.project(a.from).x, ++named;
+    if (named > 0) middle /= static_cast<float>(named);
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         if (a.kind != Mark::body) continue;
         const std::size_t i = static_cast<std::size_t>(a.body);
-        const ImVec2 top = cam.project(a.from + Vec3(0, 0.5 * I.solids.bodies[i].size, 0));
-        pending.push_back({static_cast<int>(k), top, ImVec2(0, -1), I.scene.bodies[i].name, {}, c.ink, true});
+        const ImVec2 centre = cam.project(a.from);
+        const float side = centre.x < middle - 0.5f ? -1.0f : 1.0f;
+        ImVec2 edge = centre;  // the outline's extreme point on that side, at the centre's height
+        for (const ImVec2& q : I.screen_outline(i, frame.bodies[i]))
+            if (side * (q.x - edge.x) > 0) edge.x = q.x;
+        pending.push_back({static_cast<int>(k), edge, ImVec2(side, 0), I.scene.bodies[i].name, {}, c.ink, true});
     }
     const float pad = I.style.px(3.0f), gap = I.style.px(6.0f);
     for (const LabelRequest& p : pending)
