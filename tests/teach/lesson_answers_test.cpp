@@ -7,10 +7,13 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <tuple>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "engine/diagnostics.h"
 #include "teach/answers.h"
 #include "teach/lesson_penalty.h"
 
@@ -70,6 +73,20 @@ const LessonAnswer& ans_at(const Lesson& L, const std::vector<LessonAnswer>& a, 
         if (q.quantity == quantity && q.body == body_name && q.at && (*q.at - at).norm() < 1e-12) return a[i];
     }
     throw std::runtime_error(L.id + ": no question asks " + quantity + " of '" + body_name + "' at that point");
+}
+
+// The answer to the question that names its collision by `pair` (a, b) and `collision`; the
+// what-if one when `what_if` is true.
+const LessonAnswer& ans_pair(const Lesson& L, const std::vector<LessonAnswer>& a, const std::string& quantity,
+                             const std::string& body_name, const std::string& pa, const std::string& pb,
+                             bool what_if = false) {
+    for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) {
+        const LessonQuestion& q = L.questions[i];
+        if (q.quantity == quantity && q.body == body_name && q.has_pair() && q.pair[0] == pa && q.pair[1] == pb &&
+            q.what_if.empty() != what_if)
+            return a[i];
+    }
+    throw std::runtime_error(L.id + ": no question asks " + quantity + " of " + pa + " and " + pb);
 }
 
 // Half extents of a 2D rectangle, in its own axes (its polygon is centred on the body).
@@ -754,6 +771,95 @@ TEST(LessonAnswers, APairNamesTheRunsCollisionInItsRoles) {
     EXPECT_EQ(a[2].vector, -a[0].vector);
     L.questions[1].collision = 1000;
     EXPECT_THROW(answer_questions(L), InputError);
+}
+
+TEST(LessonAnswers, Tower) {
+    // The ball flies ballistically to the tower's left faces (x = -w/2): its front reaches them
+    // after t = (-w/2 - r - x0) / v, when it has fallen g t^2 / 2, into box 4's height. The
+    // impact is solved with every touching contact of the resting tower together: each body's
+    // momentum changes by the impulses it receives (round-off), the ball's by -P. Box 6
+    // touches only box 5, so it rises at j56 / m; box 5 rides up with box 4's edge, so box 4
+    // lifts both: j45 = 2 j56 to the difference of their rising speeds (4e-6 here).
+    const Lesson& L = lesson("tower");
+    const std::vector<LessonAnswer> a = answer_questions(L);
+    ASSERT_EQ(engine_answers(L, a), 7u);
+    const SceneBody& ball = body(L, "ball");
+    const SceneBody& box4 = body(L, "box 4");
+    const double g = -L.scene.gravity.y(), m = ball.body3.mass;
+    const Vec3 x0 = ball.body3.position, v0 = ball.body3.v;
+    const double t = (-box4.shape3.half.x() - ball.shape3.radius - x0.x()) / v0.x();
+    EXPECT_NEAR(t, 0.155, 1e-12);
+    const double y = x0.y() - 0.5 * g * t * t;
+    EXPECT_GT(y, box4.body3.position.y() - box4.shape3.half.y());  // box 4's height
+    EXPECT_LT(y, box4.body3.position.y() + box4.shape3.half.y());
+    EXPECT_NEAR(ans_pair(L, a, "time", "", "ball", "box 4").value, t, 1e-9);  // contact to 1e-10 m
+    const LessonAnswer& P = ans_pair(L, a, "impulse", "", "ball", "box 4");
+    const Vec3 v_before(v0.x(), -g * t, 0.0);
+    expect_vec3(ans_pair(L, a, "velocity_after", "ball", "ball", "box 4"), v_before - P.vector / m, 1e-8);
+
+    // Every body's momentum at the impact's instant changes by the impulses it received.
+    const AnyRecording run = record_any(L.scene, {L.scene.duration});
+    const auto& rec = std::get<Recording<3>>(run);
+    std::vector<Vec3> received(L.scene.bodies.size(), Vec3::Zero()), dp(L.scene.bodies.size(), Vec3::Zero());
+    std::size_t at_impact = 0;
+    for (const Event<3>& e : rec.events) {
+        if (e.t != rec.events.front().t) break;
+        ++at_impact;
+        received[e.b] += e.impulse;
+        received[e.a] -= e.impulse;
+        for (const auto& [i, before, after] : {std::tuple{e.a, e.before_a, e.after_a}, std::tuple{e.b, e.before_b, e.after_b}})
+            if (!L.scene.bodies[i].is_static()) dp[i] = L.scene.bodies[i].body3.mass * (after.v - before.v);
+    }
+    EXPECT_EQ(at_impact, 7u);  // ball-box 4, box 4 with 3 and 5, 5-6, 3-2, 2-1, 1-ground
+    for (std::size_t i = 0; i < L.scene.bodies.size(); ++i) {
+        if (L.scene.bodies[i].is_static()) continue;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(dp[i][k], received[i][k], 1e-9) << L.scene.bodies[i].name;
+    }
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(received[index_of(L, "ball")][k], -P.vector[k], 1e-12);
+
+    // Up the tower: box 6 rises at j56 / m, box 4 gives box 5 twice as much.
+    double j56 = 0;  // no question asks it: from the record
+    for (std::size_t k = 0; k < at_impact; ++k) {
+        const Event<3>& e = rec.events[k];
+        if (e.a == index_of(L, "box 5") && e.b == index_of(L, "box 6")) j56 = e.impulse.dot(e.normal);
+    }
+    const double j45 = ans_pair(L, a, "impulse_normal", "", "box 4", "box 5").value;
+    EXPECT_NEAR(ans_pair(L, a, "velocity_after", "box 6", "box 5", "box 6").vector.y(), j56 / body(L, "box 6").body3.mass,
+                1e-9);
+    EXPECT_NEAR(j45, 2 * j56, 1e-4 * j45);
+    // Down the tower: box 3 passes on almost all it receives, with friction at the cone's edge.
+    const double j34 = ans_pair(L, a, "impulse_normal", "", "box 3", "box 4").value;
+    const double jg1 = ans_pair(L, a, "impulse_normal", "", "ground", "box 1").value;
+    EXPECT_NEAR(jg1, j34, 1e-3 * j34);
+
+    // The numbers the lesson's text quotes (to their printed digits).
+    EXPECT_NEAR(P.vector.x(), 3.945, 5e-4);
+    EXPECT_NEAR(P.vector.y(), -0.869, 5e-4);
+    EXPECT_NEAR(j34, 1.234, 5e-4);
+    EXPECT_NEAR(jg1, 1.234, 5e-4);
+    EXPECT_NEAR(j56, 0.1217, 5e-5);
+    EXPECT_NEAR(j45, 0.243, 5e-4);
+    EXPECT_NEAR(ans_pair(L, a, "velocity_after", "ball", "ball", "box 4").vector.x(), 2.028, 5e-4);
+
+    // Energy: 42.49 J at the start (closed form), about 7.5 J at the end, and between two
+    // frames (the lesson's output_dt) it never rises by more than 2 mJ.
+    std::vector<double> times;
+    for (int k = 0; k <= 200; ++k) times.push_back(0.01 * k);
+    const AnyRecording sampled_run = record_any(L.scene, times);
+    const auto& sampled = std::get<Recording<3>>(sampled_run);
+    std::vector<double> E;
+    for (const auto& state : sampled.states) {
+        double potential = 0;
+        for (const Body3& b : state)
+            if (!b.is_static) potential += b.mass * g * b.position.y();
+        E.push_back(totals(state).kinetic_energy + potential);
+    }
+    double boxes = 0;
+    for (int i = 1; i <= 6; ++i) boxes += body(L, "box " + std::to_string(i)).body3.position.y() * g;
+    EXPECT_NEAR(E.front(), boxes + m * g * x0.y() + 0.5 * m * v0.squaredNorm(), 1e-9);
+    EXPECT_NEAR(E.front(), 42.49, 5e-3);
+    EXPECT_NEAR(E.back(), 7.5, 0.1);
+    for (std::size_t k = 1; k < E.size(); ++k) EXPECT_LT(E[k] - E[k - 1], 2e-3) << times[k];
 }
 
 }  // namespace
