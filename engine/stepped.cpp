@@ -172,22 +172,9 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
     // A pair's first contact is an impact: recorded as an event.
     for (const StepContact<D>& c : contacts) {
         if (!c.fresh || !(c.weight > 0.0) || !(c.approach < -rest_speed(c.a, c.b))) continue;
-        Event<D> ev;
-        ev.t = t;
-        ev.a = c.a;
-        ev.b = c.b;
-        ev.normal = c.m.normal;
-        ev.impulse = c.impulse;
-        ev.point = c.moment / c.weight;
         auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
-        ev.before_a = stepped_[c.a] ? before_[c.a] : vel(c.a);
-        ev.before_b = stepped_[c.b] ? before_[c.b] : vel(c.b);
-        ev.after_a = vel(c.a);
-        ev.after_b = vel(c.b);
-        ev.pose_a = pose_of(bodies_[c.a]);
-        ev.pose_b = pose_of(bodies_[c.b]);
-        events->push_back(ev);
-        ++counters_.events;
+        record(c.a, c.b, t, c.m.normal, c.impulse, c.moment / c.weight, stepped_[c.a] ? before_[c.a] : vel(c.a),
+               stepped_[c.b] ? before_[c.b] : vel(c.b), events);
     }
 
     // Sleeping: islands (connected through contacts between moving bodies) whose every body has

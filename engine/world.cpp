@@ -610,22 +610,10 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
 
     for (const Contact& c : contacts) {
         if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;
-        Event<D> ev;
-        ev.t = t;
-        ev.a = c.a;
-        ev.b = c.b;
-        ev.normal = c.m.normal;
-        ev.impulse = c.impulse;
-        ev.point = c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0];
         auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
-        ev.before_a = mark_[c.a] == reached ? before_[c.a] : vel(c.a);
-        ev.before_b = mark_[c.b] == reached ? before_[c.b] : vel(c.b);
-        ev.after_a = vel(c.a);
-        ev.after_b = vel(c.b);
-        ev.pose_a = pose_of(bodies_[c.a]);
-        ev.pose_b = pose_of(bodies_[c.b]);
-        events->push_back(ev);
-        ++counters_.events;
+        record(c.a, c.b, t, c.m.normal, c.impulse, c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0],
+               mark_[c.a] == reached ? before_[c.a] : vel(c.a), mark_[c.b] == reached ? before_[c.b] : vel(c.b),
+               events);
     }
     settle(group, t);  // (stepped bodies are left out)
     for (std::size_t k : group) {
@@ -638,6 +626,27 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     }
     if (restep_) step_islands(t, events, true);
     return impact;
+}
+
+template <int D>
+void World<D>::record(std::size_t a, std::size_t b, double t, const Vec& normal, const Vec& impulse,
+                      const Vec& point, const typename Event<D>::Velocity& before_a,
+                      const typename Event<D>::Velocity& before_b, std::vector<Event<D>>* events) {
+    Event<D> ev;
+    ev.t = t;
+    ev.a = a;
+    ev.b = b;
+    ev.normal = normal;
+    ev.impulse = impulse;
+    ev.point = point;
+    ev.before_a = before_a;
+    ev.before_b = before_b;
+    ev.after_a = {bodies_[a].v, bodies_[a].w};
+    ev.after_b = {bodies_[b].v, bodies_[b].w};
+    ev.pose_a = pose_of(bodies_[a]);
+    ev.pose_b = pose_of(bodies_[b]);
+    events->push_back(ev);
+    ++counters_.events;
 }
 
 // ---- Stepping ----

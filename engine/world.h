@@ -284,6 +284,10 @@ private:
     bool resolve(std::size_t i, std::size_t j, double t, std::vector<Event<D>>* events);  // true: an impact
     bool resolve_point(Contact* c, int k);
     void resolve_simultaneous(std::vector<Contact>* contacts);
+    // An event of bodies a and b at t: their velocities now are its "after".
+    void record(std::size_t a, std::size_t b, double t, const Vec& normal, const Vec& impulse, const Vec& point,
+                const typename Event<D>::Velocity& before_a, const typename Event<D>::Velocity& before_b,
+                std::vector<Event<D>>* events);
     void solve_points(std::vector<Contact>* contacts, const std::vector<PointGoal>& goals,
                       std::vector<Body>* state);  // the contact solver, on bodies not welded
 
