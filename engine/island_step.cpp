@@ -24,13 +24,15 @@ double turning_share(const Vec3& r, const Vec3& n, const Mat3& inv_I) {
 }
 
 
-// A point in the body's own frame.
-Vec2 to_local(const Body2& b, const Vec2& p) {
-    const Vec2 d = p - b.position;
-    const double c = std::cos(b.angle), s = std::sin(b.angle);
-    return Vec2(c * d.x() + s * d.y(), -s * d.x() + c * d.y());
+// A point in the body's own frame, from the frame kept in its slot (2D: the angle's cosine and
+// sine, found once per body and step; 3D: the inverse orientation).
+Vec2 to_local(const Vec2& x, const Vec2& cs, const Vec2& p) {
+    const Vec2 d = p - x;
+    return Vec2(cs.x() * d.x() + cs.y() * d.y(), -cs.y() * d.x() + cs.x() * d.y());
 }
-Vec3 to_local(const Body3& b, const Vec3& p) { return b.orientation.conjugate() * (p - b.position); }
+Vec3 to_local(const Vec3& x, const Quat& q_inv, const Vec3& p) { return q_inv * (p - x); }
+Vec2 frame_of(const Body2& b) { return Vec2(std::cos(b.angle), std::sin(b.angle)); }
+Quat frame_of(const Body3& b) { return b.orientation.conjugate(); }
 
 // The pseudo-velocities' correction of a pose over h (2D: angle; 3D: the small rotation w h).
 void correct(Body2* b, const Vec2& dx, double dtheta) {
@@ -52,77 +54,50 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
     if (slot_.size() != B.size()) slot_.assign(B.size(), -1);
     if (last_.size() != B.size()) last_.assign(B.size(), 0);
     ++serial_;
-    struct Slot {
-        Vec v = Vec::Zero(), vp = Vec::Zero();  // velocity, pseudo-velocity (m/s)
-        Spin w = zero<Spin>(), wp = zero<Spin>();  // spin, pseudo-spin (rad/s)
-        double inv_m = 0.0;
-        InvInertia inv_I{};
+    // Slots: the members first, then every other body of a contact, which keeps its velocity
+    // (zero inverse mass and inertia: the impulses leave it as it is).
+    std::vector<Slot>& s = slots_;
+    s.clear();
+    auto add_slot = [&](std::size_t i, bool moves) {
+        const Body& b = B[i];
+        slot_[i] = static_cast<int>(s.size());
+        Slot q;
+        q.v = b.v;
+        q.w = b.w;
+        q.x = b.position;
+        q.frame = frame_of(b);
+        q.inv_m = moves ? b.inv_mass() : 0.0;
+        if constexpr (D == 2) q.inv_I = moves ? inv_inertia(b) : 0.0;
+        else q.inv_I = moves ? inv_inertia(b) : Mat3::Zero();
+        s.push_back(q);
     };
-    std::vector<Slot> s(members.size());
-    for (std::size_t q = 0; q < members.size(); ++q) {
-        const Body& b = B[members[q]];
-        slot_[members[q]] = static_cast<int>(q);
-        s[q].v = b.v;
-        s[q].w = b.w;
-        s[q].vp = zero<Vec>();
-        s[q].wp = zero<Spin>();
-        s[q].inv_m = b.inv_mass();
-        s[q].inv_I = inv_inertia(b);
-    }
+    for (std::size_t i : members) add_slot(i, true);
+    for (const StepContact<D>& c : *contacts)
+        for (std::size_t i : {c.a, c.b})
+            if (slot_[i] < 0) add_slot(i, false);
+    const std::size_t moving = members.size();
 
-    struct Row {
-        std::size_t c = 0;
-        int k = 0;
-        int sa = -1, sb = -1;  // slots; -1: the body does not move in this step
-        Vec ra = Vec::Zero(), rb = Vec::Zero(), n = Vec::Zero();
-        std::array<Vec, 2> t = {Vec::Zero(), Vec::Zero()};
-        int nt = 0;
-        double mn = 0.0;
-        std::array<double, 2> mt{};
-        double target = 0.0;   // normal velocity goal
-        double depth = 0.0;    // signed separation at the step's start
-        double mu = 0.0;
-        double lam = 0.0, lam_p = 0.0;
-        std::array<double, 2> lam_t{};
-    };
-    std::vector<Row> rows;
-    auto vel = [&](int slot, std::size_t body, const Vec& r) {
-        if (slot < 0) return Vec(B[body].v + spin_cross(B[body].w, r));
-        return Vec(s[slot].v + spin_cross(s[slot].w, r));
-    };
     auto rel = [&](const Row& r) {
-        const StepContact<D>& c = (*contacts)[r.c];
-        return Vec(vel(r.sb, c.b, r.rb) - vel(r.sa, c.a, r.ra));
+        return Vec(s[r.sb].v + spin_cross(s[r.sb].w, r.rb) - (s[r.sa].v + spin_cross(s[r.sa].w, r.ra)));
     };
     auto rel_pseudo = [&](const Row& r) {
-        Vec u = zero<Vec>();
-        if (r.sb >= 0) u += s[r.sb].vp + spin_cross(s[r.sb].wp, r.rb);
-        if (r.sa >= 0) u -= s[r.sa].vp + spin_cross(s[r.sa].wp, r.ra);
+        const Vec u = s[r.sb].vp + spin_cross(s[r.sb].wp, r.rb) - (s[r.sa].vp + spin_cross(s[r.sa].wp, r.ra));
         return u.dot(r.n);
     };
-    auto apply = [&](const Row& r, const Vec& P) {
-        if (r.sa >= 0) {
-            s[r.sa].v -= P * s[r.sa].inv_m;
-            s[r.sa].w -= s[r.sa].inv_I * lever(r.ra, P);
-        }
-        if (r.sb >= 0) {
-            s[r.sb].v += P * s[r.sb].inv_m;
-            s[r.sb].w += s[r.sb].inv_I * lever(r.rb, P);
-        }
-    };
-    auto apply_pseudo = [&](const Row& r, double lam) {
-        const Vec P = lam * r.n;
-        if (r.sa >= 0) {
-            s[r.sa].vp -= P * s[r.sa].inv_m;
-            s[r.sa].wp -= s[r.sa].inv_I * lever(r.ra, P);
-        }
-        if (r.sb >= 0) {
-            s[r.sb].vp += P * s[r.sb].inv_m;
-            s[r.sb].wp += s[r.sb].inv_I * lever(r.rb, P);
-        }
+    // P on b, -P on a, into the velocities (pseudo = false) or the pseudo-velocities.
+    auto apply = [&](const Row& r, const Vec& P, bool pseudo) {
+        Slot& A = s[r.sa];
+        Slot& Bs = s[r.sb];
+        (pseudo ? A.vp : A.v) -= P * A.inv_m;
+        (pseudo ? A.wp : A.w) -= A.inv_I * lever(r.ra, P);
+        (pseudo ? Bs.vp : Bs.v) += P * Bs.inv_m;
+        (pseudo ? Bs.wp : Bs.w) += Bs.inv_I * lever(r.rb, P);
     };
 
     // Rows, their goals from the velocities before the step, and last step's impulses.
+    std::vector<Row>& rows = rows_;
+    rows.clear();
+    impacts_.clear();
     for (std::size_t ci = 0; ci < contacts->size(); ++ci) {
         StepContact<D>& c = (*contacts)[ci];
         c.impulse = zero<Vec>();
@@ -132,13 +107,15 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         const std::uint64_t key = static_cast<std::uint64_t>(c.a) << 32 | c.b;
         const auto found = cache_.find(key);
         const int sa = slot_[c.a], sb = slot_[c.b];
+        const bool a_moves = static_cast<std::size_t>(sa) < moving, b_moves = static_cast<std::size_t>(sb) < moving;
         const Cached* before = found == cache_.end() ? nullptr : &found->second;
-        if (before && ((sa >= 0 && before->serial != last_[c.a]) || (sb >= 0 && before->serial != last_[c.b])))
+        if (before && ((a_moves && before->serial != last_[c.a]) || (b_moves && before->serial != last_[c.b])))
             before = nullptr;  // not in contact at their last step
         c.fresh = true;
         if (before)
             for (int q = 0; q < before->count; ++q) c.fresh = c.fresh && !(before->lam[q] > 0.0);
-        const double inv_ma = sa >= 0 ? s[sa].inv_m : 0.0, inv_mb = sb >= 0 ? s[sb].inv_m : 0.0;
+        const Slot& A = s[sa];
+        const Slot& Bs = s[sb];
         for (int k = 0; k < c.m.count; ++k) {
             Row r;
             r.c = ci;
@@ -146,20 +123,20 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
             r.sa = sa;
             r.sb = sb;
             r.n = c.m.normal;
-            r.ra = c.m.points[k] - B[c.a].position;
-            r.rb = c.m.points[k] - B[c.b].position;
+            r.ra = c.m.points[k] - A.x;
+            r.rb = c.m.points[k] - Bs.x;
             r.depth = c.m.depths[k];
             r.mu = c.mu;
-            double kn = inv_ma + inv_mb;
-            if (sa >= 0) kn += turning_share(r.ra, r.n, s[sa].inv_I);
-            if (sb >= 0) kn += turning_share(r.rb, r.n, s[sb].inv_I);
+            double kn = A.inv_m + Bs.inv_m;
+            if (a_moves) kn += turning_share(r.ra, r.n, A.inv_I);
+            if (b_moves) kn += turning_share(r.rb, r.n, Bs.inv_I);
             r.mn = kn > 0.0 ? 1.0 / kn : 0.0;
             if (r.mu != 0.0) {
                 r.nt = tangents(r.n, &r.t);
                 for (int q = 0; q < r.nt; ++q) {
-                    double kt = inv_ma + inv_mb;
-                    if (sa >= 0) kt += turning_share(r.ra, r.t[q], s[sa].inv_I);
-                    if (sb >= 0) kt += turning_share(r.rb, r.t[q], s[sb].inv_I);
+                    double kt = A.inv_m + Bs.inv_m;
+                    if (a_moves) kt += turning_share(r.ra, r.t[q], A.inv_I);
+                    if (b_moves) kt += turning_share(r.rb, r.t[q], Bs.inv_I);
                     r.mt[q] = kt > 0.0 ? 1.0 / kt : 0.0;
                 }
             }
@@ -167,9 +144,12 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
             c.approach = std::min(c.approach, un);
             const double gap = std::max(r.depth, 0.0);
             r.target = -gap / h;
-            if (un < 0.0 && gap + h * un <= 0.0) r.target = std::max(r.target, -c.e * un);
+            if (un < 0.0 && gap + h * un <= 0.0) {
+                r.target = std::max(r.target, -c.e * un);
+                if (c.fresh) impacts_.push_back(rows.size());
+            }
             if (before) {  // the nearest of last step's points, if near enough
-                const Vec here = to_local(B[c.a], c.m.points[k]);
+                const Vec here = to_local(A.x, A.frame, c.m.points[k]);
                 int best = -1;
                 double best_d = kMatch;
                 for (int q = 0; q < before->count; ++q) {
@@ -189,42 +169,47 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
     }
 
     // Gravity over the step, then last step's impulses (warm start).
-    for (Slot& b : s)
-        if (b.inv_m > 0.0) b.v += h * g;
+    for (std::size_t q = 0; q < moving; ++q)
+        if (s[q].inv_m > 0.0) s[q].v += h * g;
     for (const Row& r : rows) {
         Vec P = r.lam * r.n;
         for (int q = 0; q < r.nt; ++q) P += r.lam_t[q] * r.t[q];
-        apply(r, P);
+        apply(r, P, false);
     }
 
     // Velocity sweeps: friction (within the cone of the present normal impulse), then normal.
-    for (int sweep = 0; sweep < kVelocitySweeps; ++sweep)
-        for (Row& r : rows) {
-            if (r.nt > 0) {
-                const Vec u = rel(r);
-                std::array<double, 2> want{};
-                for (int q = 0; q < r.nt; ++q) want[q] = r.lam_t[q] - r.mt[q] * u.dot(r.t[q]);
-                if (r.mu >= 0.0) {
-                    const double limit = r.mu * r.lam;
-                    const double size = std::sqrt(want[0] * want[0] + want[1] * want[1]);
-                    if (size > limit) {
-                        const double scale = size > 0.0 ? limit / size : 0.0;
-                        want[0] *= scale;
-                        want[1] *= scale;
-                    }
+    auto solve = [&](Row& r) {
+        if (r.nt > 0) {
+            const Vec u = rel(r);
+            std::array<double, 2> want{};
+            for (int q = 0; q < r.nt; ++q) want[q] = r.lam_t[q] - r.mt[q] * u.dot(r.t[q]);
+            if (r.mu >= 0.0) {
+                const double limit = r.mu * r.lam;
+                const double size = std::sqrt(want[0] * want[0] + want[1] * want[1]);
+                if (size > limit) {
+                    const double scale = size > 0.0 ? limit / size : 0.0;
+                    want[0] *= scale;
+                    want[1] *= scale;
                 }
-                Vec P = zero<Vec>();
-                for (int q = 0; q < r.nt; ++q) {
-                    P += (want[q] - r.lam_t[q]) * r.t[q];
-                    r.lam_t[q] = want[q];
-                }
-                apply(r, P);
             }
-            const double un = rel(r).dot(r.n);
-            const double lam = std::max(0.0, r.lam + r.mn * (r.target - un));
-            apply(r, (lam - r.lam) * r.n);
-            r.lam = lam;
+            Vec P = zero<Vec>();
+            for (int q = 0; q < r.nt; ++q) {
+                P += (want[q] - r.lam_t[q]) * r.t[q];
+                r.lam_t[q] = want[q];
+            }
+            apply(r, P, false);
         }
+        const double un = rel(r).dot(r.n);
+        const double lam = std::max(0.0, r.lam + r.mn * (r.target - un));
+        apply(r, (lam - r.lam) * r.n, false);
+        r.lam = lam;
+    };
+    for (int sweep = 0; sweep < kVelocitySweeps; ++sweep)
+        for (Row& r : rows) solve(r);
+    // A pair's first impact starts from no impulse (nothing to warm start from) and its points
+    // share the blow: its rows get more sweeps, so that Newton's law holds between them.
+    for (int sweep = 0; sweep < kImpactSweeps && !impacts_.empty(); ++sweep)
+        for (std::size_t k : impacts_) solve(rows[k]);
 
     // Split impulse: pseudo-velocities that take kBeta of the penetration beyond kSlop away in
     // this step, applied to the poses and forgotten.
@@ -232,7 +217,7 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         for (Row& r : rows) {
             const double goal = kBeta * std::max(0.0, -(r.depth + kSlop)) / h;
             const double lam = std::max(0.0, r.lam_p + r.mn * (goal - rel_pseudo(r)));
-            apply_pseudo(r, lam - r.lam_p);
+            apply(r, (lam - r.lam_p) * r.n, true);
             r.lam_p = lam;
         }
 
@@ -251,19 +236,20 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         c.moment += r.lam * c.m.points[r.k];
         Cached& saved = cache_[static_cast<std::uint64_t>(c.a) << 32 | c.b];
         if (saved.count == Space<D>::kMaxPoints) continue;  // (a pair is listed once)
-        saved.anchor[saved.count] = to_local(B[c.a], c.m.points[r.k]);
+        saved.anchor[saved.count] = to_local(s[r.sa].x, s[r.sa].frame, c.m.points[r.k]);
         saved.lam[saved.count] = r.lam;
         saved.lam_t[saved.count] = P - r.lam * r.n;
         ++saved.count;
     }
-    for (std::size_t q = 0; q < members.size(); ++q) {
+    for (std::size_t q = 0; q < moving; ++q) {
         last_[members[q]] = serial_;
         Body& b = B[members[q]];
         b.v = s[q].v;
         b.w = s[q].w;
         correct(&b, Vec(h * s[q].vp), Spin(h * s[q].wp));
-        slot_[members[q]] = -1;
     }
+    for (std::size_t i : members) slot_[i] = -1;
+    for (const StepContact<D>& c : *contacts) slot_[c.a] = slot_[c.b] = -1;
 }
 
 template class IslandStepper<2>;

@@ -58,8 +58,9 @@ public:
     using Spin = typename Space<D>::Spin;
     using Body = typename Space<D>::Body;
 
-    static constexpr int kVelocitySweeps = 12;
-    static constexpr int kPositionSweeps = 4;
+    static constexpr int kVelocitySweeps = 8;
+    static constexpr int kImpactSweeps = 8;    // more, on the rows of a pair's first impact
+    static constexpr int kPositionSweeps = 3;
     static constexpr double kSlop = 5e-5;   // m of penetration left alone (contacts persist)
     static constexpr double kBeta = 0.8;    // fraction of the rest removed per step
     static constexpr double kMatch = 5e-3;  // m: a point within this of last step's is the same
@@ -75,6 +76,30 @@ public:
 
 private:
     using InvInertia = std::conditional_t<D == 2, double, Mat3>;
+    using Frame = std::conditional_t<D == 2, Vec2, Quat>;  // 2D: (cos, sin) of the angle; 3D: q^-1
+    struct Slot {  // a body of the step's contacts (members first; the others keep their motion)
+        Vec v = Vec::Zero(), vp = Vec::Zero();      // velocity, pseudo-velocity (m/s)
+        Spin w = zero<Spin>(), wp = zero<Spin>();   // spin, pseudo-spin (rad/s)
+        double inv_m = 0.0;                         // 0 for a body that is not a member
+        InvInertia inv_I{};
+        Vec x = Vec::Zero();                        // position at the step's start
+        Frame frame{};                              // where a world point sits on the body
+    };
+    struct Row {  // one contact point
+        std::size_t c = 0;
+        int k = 0;
+        int sa = 0, sb = 0;  // slots
+        Vec ra = Vec::Zero(), rb = Vec::Zero(), n = Vec::Zero();
+        std::array<Vec, 2> t = {Vec::Zero(), Vec::Zero()};
+        int nt = 0;
+        double mn = 0.0;
+        std::array<double, 2> mt{};
+        double target = 0.0;   // normal velocity goal
+        double depth = 0.0;    // signed separation at the step's start
+        double mu = 0.0;
+        double lam = 0.0, lam_p = 0.0;
+        std::array<double, 2> lam_t{};
+    };
     struct Cached {  // one pair's points at its last step
         std::uint64_t serial = 0;  // the step() that wrote it
         int count = 0;
@@ -87,7 +112,10 @@ private:
     std::unordered_map<std::uint64_t, Cached> cache_;
     std::uint64_t serial_ = 0;          // step() calls
     std::vector<std::uint64_t> last_;   // per body: the serial of its last step
-    std::vector<int> slot_;  // body index -> slot in the step's arrays (-1: static for the step)
+    std::vector<int> slot_;  // body index -> slot in the step's arrays (-1: not in the step)
+    std::vector<Slot> slots_;  // (kept between steps: no allocation per step)
+    std::vector<Row> rows_;
+    std::vector<std::size_t> impacts_;  // rows of pairs approaching that carried no impulse
 };
 
 }  // namespace collide

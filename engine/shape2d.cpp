@@ -134,7 +134,7 @@ double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& na
 // Polygon against polygon by separating axes, then clipping the incident edge against the
 // reference face (as in Box2D's b2CollidePolygons): up to two contact points.
 Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, const Pose2& pb,
-                          double margin) {
+                          double margin, Apart apart) {
     thread_local std::vector<Vec2> va, na, vb, nb;  // (kept: no allocation per call)
     world_polygon(A, pa, &va, &na);
     world_polygon(B, pb, &vb, &nb);
@@ -161,7 +161,7 @@ Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, c
     // rounding error, as at the instant of a hit) there is no such line to resolve, the nearest
     // features themselves are in doubt (a corner at the end of a face): keep the separating axis,
     // as for an overlap, so that the normal is the reference face's, as the points are.
-    if (sat > 0) {
+    if (sat > 0 && apart == Apart::exact) {
         Vec2 dir = m.normal;
         const double d = polygon_distance(va, na, vb, nb, &dir);
         if (std::isfinite(d)) m.separation = std::max(d, sat);
@@ -357,7 +357,8 @@ double bounding_radius(const Shape2& s) {
     return 0.0;
 }
 
-Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb, double margin) {
+Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb, double margin,
+                  Apart apart) {
     using K = Shape2::Kind;
     if (a.kind == K::half_plane) return halfplane_shape(a, b, pb, margin);
     if (b.kind == K::half_plane) return flipped(halfplane_shape(b, a, pa, margin));
@@ -374,7 +375,7 @@ Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2
         }
         return m;
     }
-    if (a.kind == K::polygon && b.kind == K::polygon) return polygon_polygon(a.polygon, pa, b.polygon, pb, margin);
+    if (a.kind == K::polygon && b.kind == K::polygon) return polygon_polygon(a.polygon, pa, b.polygon, pb, margin, apart);
     // Disc and polygon, either order.
     const bool poly_a = a.kind == K::polygon;
     const Shape2& poly = poly_a ? a : b;

@@ -76,10 +76,17 @@ struct Manifold2 {
     std::array<double, 2> depths{};  // per point: signed separation along the normal (m)
 };
 
+// How collide() measures two polygons that are apart: `exact`, the distance between their
+// nearest features, with the normal along it; `axis`, the separating axis's separation (a
+// lower bound of the distance) with the reference face's normal, as the contact points are
+// measured: enough for a speculative contact of a time step (engine/island_step.h), and about
+// half the work. Touching or overlapping polygons, and discs, are measured alike either way.
+enum class Apart { exact, axis };
+
 // Contact points are reported for pairs whose separation is below `margin` (m); the
 // separation and normal are reported always.
 Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb,
-                  double margin = 0.0);
+                  double margin = 0.0, Apart apart = Apart::exact);
 
 // The largest distance of the shape's surface from its centre (m): bounds how fast a surface
 // point can move, v + |w| R (conservative advancement).

@@ -316,8 +316,10 @@ Manifold3 halfspace_shape(const Shape3& plane, const Shape3& s, const Pose3& ps,
         const Vec3 p = box.vertex(i);
         d[i] = {plane.normal.dot(p) - plane.offset, p};
     }
-    std::stable_sort(d.begin(), d.end(),
-                     [](const auto& l, const auto& r) { return l.first < r.first; });
+    // Deepest first, ties in vertex order (a stable insertion sort: std::stable_sort would ask
+    // for a buffer on the heap at every call).
+    for (int i = 1; i < 8; ++i)
+        for (int k = i; k > 0 && d[k].first < d[k - 1].first; --k) std::swap(d[k], d[k - 1]);
     m.separation = d[0].first;
     for (int i = 0; i < 4; ++i) {
         if (d[i].first >= margin) break;

@@ -11,6 +11,20 @@
 
 namespace collide {
 
+namespace {
+
+// A pair within the speculative margin, as the step needs it: 2D polygons apart are measured by
+// their separating axis (Apart::axis: the normal the points' depths are measured along); 3D
+// boxes always are.
+Manifold2 step_manifold(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb, double margin) {
+    return collide(a, pa, b, pb, margin, Apart::axis);
+}
+Manifold3 step_manifold(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb, double margin) {
+    return collide(a, pa, b, pb, margin);
+}
+
+}  // namespace
+
 template <int D>
 bool World<D>::may_step(std::size_t i) const {
     return !bodies_[i].is_static && weld_of_[i] < 0 && scene_.stepping != StepMode::never &&
@@ -111,10 +125,8 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
             drift(j, t);
             const std::size_t a = std::min(i, j), b = std::max(i, j);
             const double margin = kSpeculative + (surface_speed(a) + surface_speed(b) + 2.0 * g * h) * h;
-            if (!plane_[a] && !plane_[b] &&
-                (bodies_[b].position - bodies_[a].position).norm() > radius_[a] + radius_[b] + margin)
-                return;  // their bounding circles (spheres) apart
-            const Manifold m = collide(shapes_[a], pose_of(bodies_[a]), shapes_[b], pose_of(bodies_[b]), margin);
+            if (apart(a, b, margin)) return;  // their bounding circles (spheres) apart
+            const Manifold m = step_manifold(shapes_[a], pose_of(bodies_[a]), shapes_[b], pose_of(bodies_[b]), margin);
             if (m.count == 0) return;
             if (!bodies_[j].is_static && !stepped_[j]) {
                 // A moving body not stepped joins when it touches (nearer, its impact is exact).
@@ -149,6 +161,7 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
             continue;
         }
         stepped_[i] = 0;
+        exact_bodies_ = true;
         bodies_[i].v -= gravity() * left(i);
         solved_[i] = 0;
         set_free(i);

@@ -259,6 +259,16 @@ typename World<D>::Manifold World<D>::manifold(std::size_t a, std::size_t b) con
 }
 
 template <int D>
+bool World<D>::apart(std::size_t a, std::size_t b, double gap) const {
+    if (plane_[a] && plane_[b]) return false;
+    if (plane_[a] || plane_[b]) {
+        const std::size_t p = plane_[a] ? a : b, q = plane_[a] ? b : a;
+        return shapes_[p].normal.dot(bodies_[q].position) - shapes_[p].offset - radius_[q] > gap;
+    }
+    return (bodies_[b].position - bodies_[a].position).norm() > radius_[a] + radius_[b] + gap;
+}
+
+template <int D>
 double World<D>::normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const {
     const Body& A = bodies_[a];
     const Body& B = bodies_[b];
@@ -306,23 +316,20 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     ++counters_.predictions;
     const std::size_t a = std::min(i, j), b = std::max(i, j);
     // Too far apart to meet within the substep: the gap between their bounding circles (or a
-    // body's and a plane) exceeds what their speeds, accelerations and spins can close by t1.
+    // body's and a plane) exceeds what their relative motion can close by t1. (The circle about
+    // a body's centre of mass holds it however it turns: spin does not move it.)
     if (weld_of_[a] < 0 && weld_of_[b] < 0 && !(plane_[a] && plane_[b])) {
-        const double horizon = t1 - t;
-        auto reach = [&](std::size_t k) {  // how far a surface point of k can move towards the other
-            const Body& B = bodies_[k];
-            if (B.is_static) return 0.0;
-            const double spin = round_[k] ? 0.0 : spin_bound(B, inv_min_moment_[k]) + magnitude(track_[k].alpha) * horizon;
-            return (B.v.norm() + spin * radius_[k]) * horizon + 0.5 * track_[k].a.norm() * horizon * horizon;
-        };
-        double gap;
+        const double h = t1 - t;
+        double gap, closing;
         if (plane_[a] || plane_[b]) {
             const std::size_t p = plane_[a] ? a : b, q = plane_[a] ? b : a;
             gap = shapes_[p].normal.dot(bodies_[q].position) - shapes_[p].offset - radius_[q];
+            closing = bodies_[q].v.norm() * h + 0.5 * track_[q].a.norm() * h * h;
         } else {
             gap = (bodies_[b].position - bodies_[a].position).norm() - radius_[a] - radius_[b];
+            closing = (bodies_[b].v - bodies_[a].v).norm() * h + 0.5 * (track_[b].a - track_[a].a).norm() * h * h;
         }
-        if (gap > reach(a) + reach(b) + 2.0 * kTouch) return kNever;
+        if (gap > closing + 2.0 * kTouch) return kNever;
     }
     const double v_rest = rest_speed(a, b);
     const Track& ka = track_[a];
@@ -389,9 +396,12 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
 template <int D>
 void World<D>::predict(std::size_t i, double t) {
     if (bodies_[i].is_static) return;
+    // A stepped body meets stepped and static ones at its steps (predict_pair says never).
+    if (stepped_[i] && !exact_bodies_) return;
     double best = kNever;
     std::size_t partner = i;
     for_each_neighbour(i, t, [&](std::size_t j) {
+        if (stepped_[i] && (stepped_[j] || bodies_[j].is_static)) return;
         const double tj = predict_pair(i, j, t, substep_end_);
         if (tj < best) {
             best = tj;
@@ -422,8 +432,7 @@ void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
         if (meet_at_steps(i, j)) return;
         drift(j, t);
         const std::size_t a = std::min(i, j), b = std::max(i, j);
-        if (!plane_[a] && !plane_[b] && weld_of_[a] < 0 && weld_of_[b] < 0 &&
-            (bodies_[b].position - bodies_[a].position).norm() > radius_[a] + radius_[b] + 2.0 * kTouch)
+        if (weld_of_[a] < 0 && weld_of_[b] < 0 && apart(a, b, 2.0 * kTouch))
             return;  // their bounding circles (spheres) apart: not touching
         const Manifold m = manifold(a, b);
         if (m.separation > kTouch || m.count == 0) return;
@@ -679,8 +688,10 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
         bool any_rest = false, any_stepped = false;
         double speed = 0.0, size = 0.0;
         std::size_t moving = 0;
+        exact_bodies_ = false;
         for (std::size_t i = 0; i < bodies_.size(); ++i) {
             if (bodies_[i].is_static) continue;
+            exact_bodies_ = exact_bodies_ || !stepped_[i];
             any_rest = any_rest || (island_[i] != 0 && !asleep_[i]);
             any_stepped = any_stepped || (stepped_[i] && !asleep_[i]);
             speed += bodies_[i].v.norm() + track_[i].a.norm() * h;

@@ -263,6 +263,9 @@ private:
     double normal_speed(std::size_t a, std::size_t b, const Vec& p, const Vec& n) const;
     double rest_speed(std::size_t i, std::size_t j) const;
     bool passed(std::size_t i, std::size_t j) const;  // let through by the page's listing
+    // Their bounding circles (spheres), or one's and a plane, further apart than gap: they do
+    // not touch within it. (Never for two planes.)
+    bool apart(std::size_t a, std::size_t b, double gap) const;
     double friction_limit(std::size_t a, std::size_t b) const;
 
     // Prediction (the time of impact: engine/toi.h).
@@ -348,6 +351,10 @@ private:
     // gravity impulse of the time left, see "Stepped islands").
     std::vector<char> solved_;
     std::vector<double> until_;    // s: the end of a solved body's step
+    // Some body moves by exact events (not static, not stepped; awake or asleep): only then do
+    // stepped bodies predict impacts (with those bodies: they meet the rest at their steps).
+    // Set at each substep's start, and when a stepped body leaves its island.
+    bool exact_bodies_ = true;
     bool restep_ = false;          // something joined, woke or was pushed: a step is taken now
     std::vector<std::size_t> reseed_;  // ... these bodies: their islands are stepped again
     std::vector<double> still_;    // s a stepped body has been slower than kStepSleepSpeed
