@@ -168,9 +168,13 @@ std::string annotations_json(const Scene& scene, const Figure* figure) {
     return out.str();
 }
 
+Figure make_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings) {
+    return collision_figure(context, shots.scene, shots.view, settings, shots.moments);
+}
+
 Figure write_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings,
                     const PictureOut& out, int number) {
-    Figure fig = collision_figure(context, shots.scene, shots.view, settings, shots.moments);
+    Figure fig = make_figure(context, shots, settings);
     const std::string suffix = number > 1 ? "-" + std::to_string(number) : "";
     render::write_file_atomic(out.dir + "/annotations" + suffix + ".json", annotations_json(shots.scene, &fig));
     // A thumbnail (lesson indexes): the first figure's collision panel, 480 pixels wide.

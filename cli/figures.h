@@ -64,6 +64,9 @@ struct VariantRow {
     Moments moments;
 };
 
+// The figure of a collision (figure.png's image), and its panels; write_figure writes it.
+Figure make_figure(render::GlContext& context, const CollisionShots& shots, const render::RenderSettings& settings);
+
 // before.png, at.png and after.png: the moments as the frames' renderer draws them (with the
 // trails up to then; at the instant the impulse instead of the velocities).
 void write_stills(render::Renderer& frames, const CollisionShots& shots, const PictureOut& out);

@@ -73,10 +73,6 @@ int main(int argc, char** argv) {
         "Example: collide solve lessons/solve/rod-on-ground.toml --format markdown\n"
         "File format: see README.md, section 'collide solve'.");
 
-    if (argc == 1) {  // bare `collide`: show what it can do
-        std::cout << app.help();
-        return 0;
-    }
     std::string scene_file;
     collide::StepOptions step_options;
     CLI::App* step = app.add_subcommand(
@@ -252,6 +248,10 @@ int main(int argc, char** argv) {
         "Example: collide compare lessons/scenes/compare-slow-bounce.toml --box2d-defaults\n"
         "See README.md, section 'collide compare'.");
 
+    if (argc == 1) {  // bare `collide`: show what it can do
+        std::cout << app.help();
+        return 0;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

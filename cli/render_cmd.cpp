@@ -201,9 +201,8 @@ struct Loaded {
     std::vector<double> times;  // s: the scene sampled at the frame rate
 };
 
-Loaded load_stage(const RenderRequest& rq) {
-    Loaded in;
-    in.scene = load_scenario(rq.scenario, &in.view, &in.lesson);
+Loaded loaded_from(const RenderRequest& rq, RenderSource source) {
+    Loaded in{std::move(source.scene), std::move(source.view), std::move(source.lesson), {}};
     Scene timing = in.scene;
     timing.output_dt = 1.0 / rq.frame.fps;
     in.times = output_times(timing);
@@ -211,6 +210,8 @@ Loaded load_stage(const RenderRequest& rq) {
         throw InputError(kCommand, {}, "--fps", "more than 10^6 frames: lower --fps or the duration");
     return in;
 }
+
+Loaded load_stage(const RenderRequest& rq) { return loaded_from(rq, load_render_source(rq.scenario)); }
 
 // 2. Run: the scene, once (everything below reads this run), and what a lesson computes from
 // it: the answers to its questions (one the run cannot answer is bad input, found before
@@ -284,7 +285,8 @@ void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
     }
 }
 
-Analysis analyse_stage(const Loaded& in, const SceneRun& run) {
+// `variants`: also a lesson's variants (variants.png; each is run once more).
+Analysis analyse_stage(const Loaded& in, const SceneRun& run, bool variants = true) {
     Analysis out;
     const std::vector<CollisionPick> picks = lesson_picks(in);
     if (picks.empty()) {
@@ -313,7 +315,7 @@ Analysis analyse_stage(const Loaded& in, const SceneRun& run) {
     }
     if (!out.moments) return out;
     out.worked = worked_example(in.scene, out.moments->instant);
-    if (in.lesson && !in.lesson->variants.empty()) analyse_variants(in, *out.moments, &out);
+    if (variants && in.lesson && !in.lesson->variants.empty()) analyse_variants(in, *out.moments, &out);
     return out;
 }
 
@@ -530,6 +532,24 @@ RenderReport render_scenario(const RenderRequest& rq, std::ostream& err) {
     Analysis analysis = analyse_stage(in, ran.run);
     const Written written = write_stage(rq, in, ran, analysis, err);
     return report_of(rq, std::move(in), std::move(ran), std::move(analysis), written);
+}
+
+RenderSource load_render_source(const std::string& scenario) {
+    RenderSource source;
+    source.scene = load_scenario(scenario, &source.view, &source.lesson);
+    return source;
+}
+
+std::optional<std::vector<std::uint8_t>> figure_png(const RenderRequest& rq, RenderSource source) {
+    const Loaded in = loaded_from(rq, std::move(source));
+    const SceneRun run = run_scene(in.scene, in.times, nullptr, figure_keeps(in));
+    const Analysis a = analyse_stage(in, run, false);
+    if (!a.moments) return std::nullopt;
+    std::unique_ptr<render::GlContext> context = render::create_gl_context(rq.backend);
+    const render::RenderSettings settings = frame_settings(rq.frame, in.scene, in.view, &a.worked->formula);
+    const Figure figure = make_figure(*context, CollisionShots{in.scene, in.view, run, *a.moments}, settings);
+    return render::encode_png(figure.figure.width, figure.figure.height, figure.figure.rgba.data(),
+                              rq.frame.quality.png);
 }
 
 std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {

@@ -12,6 +12,7 @@
 //   DIR/animation.mp4 or .gif        with --format mp4 or gif (needs ffmpeg)
 #pragma once
 
+#include <cstdint>
 #include <iosfwd>
 #include <optional>
 #include <stdexcept>
@@ -96,6 +97,21 @@ struct Interrupted : std::runtime_error {
 // variants.png, lesson.md, the video).
 // Throws InputError (bad input: nothing written), Interrupted, or std::runtime_error.
 RenderReport render_scenario(const RenderRequest& request, std::ostream& err);
+
+// What a render draws: a scene, its [view] table and its lesson, if it is one.
+struct RenderSource {
+    Scene scene;
+    SceneView view;
+    std::optional<Lesson> lesson;
+};
+// Read from a scenario file, a lesson file or a lesson id (load_scenario). Throws InputError.
+RenderSource load_render_source(const std::string& scenario);
+
+// figure.png alone, as render_scenario writes it for `request` (the same run and the same
+// collision; no frames and no other file), drawn from `source` instead of request.scenario
+// (the Python module's collide.render_figure, whose scene may be a table in memory): the PNG's
+// bytes, or nullopt when the run has no collision. Throws InputError or std::runtime_error.
+std::optional<std::vector<std::uint8_t>> figure_png(const RenderRequest& request, RenderSource source);
 
 // A variant's "kinetic energy lost" cell: the loss, or the gain marked as such (no passive
 // impact gains energy: engine/diagnostics.h gains_energy).

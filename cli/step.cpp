@@ -298,30 +298,50 @@ std::vector<Table::Cell> table_row(const Scene& s, double t, const std::vector<B
 
 // ---- The run ----
 
-template <int D>
-void write_run(const Scene& s, const StepOptions& options, std::ostream& out) {
+// Runs the scene once, calling visit(t, bodies, events) at every output instant with the
+// bodies there and the collisions since the previous instant.
+template <int D, class Visit>
+void run_steps(const Scene& s, Visit visit) {
     typename Stepping<D>::World world(s);
     std::vector<typename Stepping<D>::Event> events;
+    for (double t : output_times(s)) {
+        events.clear();
+        world.advance_to(t, &events);
+        visit(t, world.bodies(), events);
+    }
+}
+
+template <int D>
+void write_run(const Scene& s, const StepOptions& options, std::ostream& out) {
     const bool table = !options.events && !options.json;
     Table rows;  // 2D and 3D: written at the end, when the column widths are known
     if (table && D == 1) table_header_1d(s, out);
     if (table && D > 1) rows = table_columns<D>(s);
-    for (double t : output_times(s)) {
-        events.clear();
-        world.advance_to(t, &events);
+    run_steps<D>(s, [&](double t, const auto& bodies, const auto& events) {
         if (options.events) {
             const std::vector<bool> gains = energy_gains(s, events);
             for (std::size_t k = 0; k < events.size(); ++k)
                 out << (options.json ? event_json(s, events[k], gains[k]) : event_text(s, events[k], gains[k])) << "\n";
         } else if (options.json) {
-            out << state_json(s, t, world.bodies()) << "\n";
+            out << state_json(s, t, bodies) << "\n";
         } else if constexpr (D == 1) {
-            table_row_1d(s, t, world.bodies(), out);
+            table_row_1d(s, t, bodies, out);
         } else {
-            rows.row(table_row(s, t, world.bodies()));
+            rows.row(table_row(s, t, bodies));
         }
-    }
+    });
     if (table && D > 1) rows.write(out);
+}
+
+template <int D>
+StepJson json_run(const Scene& s) {
+    StepJson out;
+    run_steps<D>(s, [&](double t, const auto& bodies, const auto& events) {
+        const std::vector<bool> gains = energy_gains(s, events);
+        for (std::size_t k = 0; k < events.size(); ++k) out.events.push_back(event_json(s, events[k], gains[k]));
+        out.states.push_back(state_json(s, t, bodies));
+    });
+    return out;
 }
 
 }  // namespace
@@ -392,6 +412,12 @@ void write_steps(const Scene& s, const StepOptions& options, std::ostream& out) 
     if (s.dimension == 1) write_run<1>(s, options, out);
     else if (s.dimension == 2) write_run<2>(s, options, out);
     else write_run<3>(s, options, out);
+}
+
+StepJson step_json(const Scene& s) {
+    if (s.dimension == 1) return json_run<1>(s);
+    if (s.dimension == 2) return json_run<2>(s);
+    return json_run<3>(s);
 }
 
 }  // namespace collide

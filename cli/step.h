@@ -20,6 +20,14 @@ struct StepOptions {
 // Writes the run of `scene` to out. Throws std::runtime_error when the world fails.
 void write_steps(const Scene& scene, const StepOptions& options, std::ostream& out);
 
+// The lines of `collide step --json` (one state per output instant) and of
+// `collide step --events --json` (one per collision), from one run of `scene` (the Python
+// module's collide.run). Throws std::runtime_error when the world fails.
+struct StepJson {
+    std::vector<std::string> states, events;
+};
+StepJson step_json(const Scene& scene);
+
 // The output instants t = k output_dt, k = 0 .. K, with the last one at the duration exactly.
 std::vector<double> output_times(const Scene& scene);
 

@@ -18,8 +18,13 @@
 
 #include "scenario/toml_reader.h"
 
+// The source tree's lessons/ and the install's path from bin/ to share/collide/lessons
+// (scenario/CMakeLists.txt).
 #ifndef COLLIDE_LESSONS_DIR
 #define COLLIDE_LESSONS_DIR "lessons"
+#endif
+#ifndef COLLIDE_LESSONS_FROM_BINDIR
+#define COLLIDE_LESSONS_FROM_BINDIR "../share/collide/lessons"
 #endif
 
 namespace collide {
@@ -573,9 +578,21 @@ Lesson lesson_with_values(const Lesson& L, const std::map<std::string, double>& 
     return out;
 }
 
-std::string lessons_dir() {
+std::string lessons_dir(const std::string& installed) {
     if (const char* env = std::getenv("COLLIDE_LESSONS")) return env;
+    std::error_code ec;
+    if (!installed.empty() && fs::is_directory(installed, ec)) return installed;
     return COLLIDE_LESSONS_DIR;
+}
+
+std::string lessons_dir() {
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);  // Linux: the running program
+    return lessons_dir(ec ? std::string() : installed_lessons_dir(exe.string()));
+}
+
+std::string installed_lessons_dir(const std::string& exe) {
+    return (fs::path(exe).parent_path() / COLLIDE_LESSONS_FROM_BINDIR).lexically_normal().string();
 }
 
 std::vector<Lesson> load_lessons(const std::string& dir) {

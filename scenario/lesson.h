@@ -193,8 +193,17 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
 // naming the changed key when there is no such body or the changed lesson is refused.
 Lesson lesson_with_values(const Lesson& lesson, const std::map<std::string, double>& values);
 
-// The directory of the bundled lessons: $COLLIDE_LESSONS when set, else the source tree's.
+// The directory of the bundled lessons, the first of: $COLLIDE_LESSONS when set; `installed`
+// when it is a directory (an installed program's share/collide/lessons); the source tree's
+// lessons/ (the programs and tests of a build tree).
+std::string lessons_dir(const std::string& installed);
+// The same for the running program: lessons_dir(installed_lessons_dir(its executable)), so that
+// an installed `collide` finds its own lessons from any directory.
 std::string lessons_dir();
+// Where a program installed at `exe` (e.g. /usr/bin/collide) finds the lessons installed with
+// it: its directory, then the install's path from bin/ to share/collide/lessons
+// (/usr/bin/../share/collide/lessons).
+std::string installed_lessons_dir(const std::string& exe);
 // Every lesson in `dir` (its *.toml files), in their order. Throws InputError on a bad file.
 std::vector<Lesson> load_lessons(const std::string& dir);
 // A lesson file for a command-line argument: an existing file, or a lesson id in dir.

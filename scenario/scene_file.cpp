@@ -242,7 +242,11 @@ SceneView read_view(const TableReader& root, int dim) {
 
 Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view,
                        const std::vector<std::string>& also_allowed) {
-    const toml::table table = parse_toml_text(text, name);
+    return parse_scene_table(parse_toml_text(text, name), name, view, also_allowed);
+}
+
+Scene parse_scene_table(const toml::table& table, const std::string& name, SceneView* view,
+                        const std::vector<std::string>& also_allowed) {
     const TableReader root(table, name, "");
     if (!root.has("scene") && (root.has("a") || root.has("dimension")))
         root.fail("", "this is a collision file (dimension, [a], [b] at the top): run it with "

@@ -47,5 +47,9 @@ constexpr double kOverlapTolerance = 1e-9;  // m
 // [[question]]).
 Scene parse_scene_text(const std::string& text, const std::string& name, SceneView* view = nullptr,
                        const std::vector<std::string>& also_allowed = {});
+// The same for a table built in memory rather than read from a file (the Python module's
+// dicts): its values carry no line or column, so the messages name `name` and the key.
+Scene parse_scene_table(const toml::table& table, const std::string& name, SceneView* view = nullptr,
+                        const std::vector<std::string>& also_allowed = {});
 
 }  // namespace collide

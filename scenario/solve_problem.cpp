@@ -192,7 +192,10 @@ void resolve_geometry(const TableReader& root, SolveProblem* P) {
 }  // namespace
 
 SolveProblem parse_solve_text(const std::string& text, const std::string& name) {
-    const toml::table table = parse_toml_text(text, name);
+    return parse_solve_table(parse_toml_text(text, name), name);
+}
+
+SolveProblem parse_solve_table(const toml::table& table, const std::string& name) {
     const TableReader root(table, name, "");
     if (root.has("scene") || root.has("body"))
         root.fail("", "this is a scenario file ([scene], [[body]]): run it with 'collide step'; "

@@ -3,6 +3,8 @@
 
 #include <string>
 
+#include <toml++/toml.h>
+
 #include "engine/body.h"
 #include "engine/response.h"
 #include "engine/routh.h"
@@ -36,5 +38,8 @@ struct SolveProblem {
 // Parses and validates; throws InputError naming file, line, column and key.
 SolveProblem parse_solve_file(const std::string& path);
 SolveProblem parse_solve_text(const std::string& text, const std::string& name);
+// The same for a table built in memory rather than read from a file (the Python module's
+// dicts): its values carry no line or column, so the messages name `name` and the key.
+SolveProblem parse_solve_table(const toml::table& table, const std::string& name);
 
 }  // namespace collide

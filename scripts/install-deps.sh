@@ -1,30 +1,48 @@
 #!/usr/bin/env bash
 # Installs every Debian 12 package the build needs. Idempotent; run as root (or with sudo).
 # The list grows with the project: see ../shared/STACK.md for how each is found from CMake.
+# Usage: scripts/install-deps.sh              everything: build, tests, benchmarks, CI
+#        scripts/install-deps.sh --package    only what building the Debian packages needs
+#                                             (scripts/package.sh)
 set -euo pipefail
 
-packages=(
+# Building the command, its libraries and the Python module, and packaging them.
+build=(
   cmake g++ make pkg-config         # toolchain
   libeigen3-dev                     # linear algebra (double precision)
   libtomlplusplus-dev               # input files
   nlohmann-json3-dev                # JSON output
   libcli11-dev                      # command line
-  libgtest-dev                      # tests
-  libbenchmark-dev                  # collide-bench
   libosmesa6-dev                    # renderer: offscreen OpenGL (render/context)
   libegl-dev                        # renderer: the second context, EGL surfaceless (--backend egl)
   libpng-dev                        # renderer: PNG frames
   libimgui-dev                      # renderer: overlays and labels (Dear ImGui 1.86)
   libfreetype-dev                   # renderer: font rasterisation beside ImGui
   fonts-dejavu-core                 # renderer: the label font (DejaVu Sans, Greek, sub/superscripts)
-  ffmpeg                            # collide render --format mp4|gif (optional for the build)
   libbox2d-dev                      # Box2D 2.4.1: the 2D reference of `collide compare`
-  libbullet-dev                     # Bullet 3.24: collide-bench's 3D peer (optional for the build)
   libglfw3-dev                      # collide gui: its window (optional for the build)
+  python3-dev pybind11-dev python3-numpy  # the Python module collide (optional for the build)
+  help2man                          # the man page, from the --help texts (optional for the build)
+  dpkg-dev file                     # cpack -G DEB: dpkg-shlibdeps computes the packages' Depends
+)
+# The tests, benchmarks and CI besides.
+develop=(
+  libgtest-dev                      # tests
+  libbenchmark-dev                  # collide-bench
+  ffmpeg                            # collide render --format mp4|gif (optional for the build)
+  libbullet-dev                     # Bullet 3.24: collide-bench's 3D peer (optional for the build)
   xvfb xauth                        # collide gui's tests: a screen without a display (xvfb-run)
   clang libclang-rt-14-dev          # scripts/test-sanitize.sh: clang 14, its sanitizers and libFuzzer
   llvm-14                           # llvm-symbolizer: file and line in sanitizer reports
+  python3-pytest                    # the Python module's tests (tests/python)
+  jupyter-nbconvert python3-ipykernel python3-matplotlib  # the example notebook, run in the tests
 )
+
+case ${1:-} in
+  "") packages=("${build[@]}" "${develop[@]}") ;;
+  --package) packages=("${build[@]}") ;;
+  *) echo "usage: $0 [--package]" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -63,6 +63,25 @@ TEST(Step, CradleEventsJson) {
     EXPECT_EQ(events[1]["b"], "third");
 }
 
+// step_json (the Python module's collide.run): the lines of --json and of --events --json,
+// from one run, in 1D, 2D and 3D.
+TEST(Step, StepJsonIsTheJsonAndEventsLines) {
+    const std::string dir = std::string(COLLIDE_SOURCE_DIR) + "/lessons/scenes/";
+    for (const char* file : {"cradle-1d.toml", "billiards-2d.toml", "dropped-box-3d.toml"}) {
+        const Scene s = parse_scene_file(dir + file);
+        const StepJson run = step_json(s);
+        std::ostringstream states, events;
+        write_steps(s, {true, false}, states);
+        write_steps(s, {true, true}, events);
+        std::string joined_states, joined_events;
+        for (const std::string& line : run.states) joined_states += line + "\n";
+        for (const std::string& line : run.events) joined_events += line + "\n";
+        EXPECT_EQ(joined_states, states.str()) << file;
+        EXPECT_EQ(joined_events, events.str()) << file;
+        EXPECT_FALSE(run.events.empty()) << file;
+    }
+}
+
 TEST(Step, TableHasOneRowPerOutputStep) {
     std::ostringstream out;
     write_steps(cradle("sequential"), {}, out);
