@@ -59,6 +59,19 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
     b->w += alpha * dt;
 }
 
+// The gap between two bodies' bounding circles (spheres), or between one's and a plane (m): no
+// closer than their surfaces. (The circle about a centre of mass holds the body however it
+// turns.) Not for two planes.
+template <class Body, class Shape>
+double bounding_gap(const std::vector<Body>& bodies, const std::vector<Shape>& shapes, const std::vector<bool>& plane,
+                    const std::vector<double>& radius, std::size_t a, std::size_t b) {
+    if (plane[a] || plane[b]) {
+        const std::size_t p = plane[a] ? a : b, q = plane[a] ? b : a;
+        return shapes[p].normal.dot(bodies[q].position) - shapes[p].offset - radius[q];
+    }
+    return (bodies[b].position - bodies[a].position).norm() - radius[a] - radius[b];
+}
+
 }  // namespace
 
 // ---- Construction and motion ----
@@ -260,12 +273,7 @@ typename World<D>::Manifold World<D>::manifold(std::size_t a, std::size_t b) con
 
 template <int D>
 bool World<D>::apart(std::size_t a, std::size_t b, double gap) const {
-    if (plane_[a] && plane_[b]) return false;
-    if (plane_[a] || plane_[b]) {
-        const std::size_t p = plane_[a] ? a : b, q = plane_[a] ? b : a;
-        return shapes_[p].normal.dot(bodies_[q].position) - shapes_[p].offset - radius_[q] > gap;
-    }
-    return (bodies_[b].position - bodies_[a].position).norm() > radius_[a] + radius_[b] + gap;
+    return !(plane_[a] && plane_[b]) && bounding_gap(bodies_, shapes_, plane_, radius_, a, b) > gap;
 }
 
 template <int D>
@@ -320,16 +328,12 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     // a body's centre of mass holds it however it turns: spin does not move it.)
     if (weld_of_[a] < 0 && weld_of_[b] < 0 && !(plane_[a] && plane_[b])) {
         const double h = t1 - t;
-        double gap, closing;
-        if (plane_[a] || plane_[b]) {
-            const std::size_t p = plane_[a] ? a : b, q = plane_[a] ? b : a;
-            gap = shapes_[p].normal.dot(bodies_[q].position) - shapes_[p].offset - radius_[q];
-            closing = bodies_[q].v.norm() * h + 0.5 * track_[q].a.norm() * h * h;
-        } else {
-            gap = (bodies_[b].position - bodies_[a].position).norm() - radius_[a] - radius_[b];
-            closing = (bodies_[b].v - bodies_[a].v).norm() * h + 0.5 * (track_[b].a - track_[a].a).norm() * h * h;
-        }
-        if (gap > closing + 2.0 * kTouch) return kNever;
+        const std::size_t q = plane_[a] ? b : a;  // with a plane: the body that is not one
+        const double closing = plane_[a] || plane_[b]
+                                   ? bodies_[q].v.norm() * h + 0.5 * track_[q].a.norm() * h * h
+                                   : (bodies_[b].v - bodies_[a].v).norm() * h +
+                                         0.5 * (track_[b].a - track_[a].a).norm() * h * h;
+        if (bounding_gap(bodies_, shapes_, plane_, radius_, a, b) > closing + 2.0 * kTouch) return kNever;
     }
     const double v_rest = rest_speed(a, b);
     const Track& ka = track_[a];
