@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
@@ -386,6 +388,26 @@ struct Impact {
         return 0.0;
     }
 
+    // log2(v) to within 1e-7, for step lengths and estimates (v > 0 finite): v = m 2^e with
+    // 1/sqrt(2) <= m < sqrt(2) (from the bits of v), ln m = 2 atanh(z) = 2 (z + z^3/3 + z^5/5 +
+    // z^7/7 + ...), z = (m - 1)/(m + 1), |z| < 0.172.
+    static double fast_log2(double v) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &v, sizeof bits);
+        int e = static_cast<int>((bits >> 52) & 0x7ff);
+        if (e == 0) return fast_log2(v * 0x1p64) - 64.0;  // subnormal
+        e -= 1023;
+        bits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
+        double m;
+        std::memcpy(&m, &bits, sizeof m);  // 1 <= m < 2
+        if (m > 1.4142135623730951) {
+            m *= 0.5;
+            ++e;
+        }
+        const double z = (m - 1.0) / (m + 1.0), z2 = z * z;
+        return e + 2.8853900817779268 * z * (1.0 + z2 * (1.0 / 3.0 + z2 * (0.2 + z2 / 7.0)));
+    }
+
     static double horner(const double* x, double t) {
         double v = x[kOrder];
         for (int k = kOrder - 1; k >= 0; --k) v = v * t + x[k];
@@ -542,6 +564,8 @@ struct Impact {
         constexpr int kMaxSteps = 500;  // beyond: jammed (see routh())
         const double uscale = u.norm(), Pscale = -un0 / K(0, 0);
         const double tol[3] = {kTol * uscale, kTol * Pscale, kTol * uscale * Pscale};
+        const double inv_tol2[3] = {1.0 / (tol[0] * tol[0]), 1.0 / (tol[1] * tol[1]),
+                                    1.0 / (tol[2] * tol[2])};
         Series s;
         double g[kOrder + 1];
         for (int step = 0; step < kMaxSteps; ++step) {
@@ -561,19 +585,17 @@ struct Impact {
             // at h (a last coefficient small by chance).
             const auto worst = [&](int k) {
                 const auto sq = [&](Row r) { return s[r][k] * s[r][k]; };
-                return std::max({(sq(kW1) + sq(kW2) + sq(kUn)) / (tol[0] * tol[0]),
-                                 (sq(kPn) + sq(kPt1) + sq(kPt2)) / (tol[1] * tol[1]),
-                                 mu * mu * sq(kLoss) / (tol[2] * tol[2])});
+                return std::max({(sq(kW1) + sq(kW2) + sq(kUn)) * inv_tol2[0],
+                                 (sq(kPn) + sq(kPt1) + sq(kPt2)) * inv_tol2[1],
+                                 mu * mu * sq(kLoss) * inv_tol2[2]});
             };
+            // The term before, squared and over its tolerance, is before h^(2N-2) at h, so
+            //   h = min(last^(-1/(2N)), before^(-1/(2N-2))),
+            // by base-2 logarithms (fast_log2(): h to 1e-8 of itself).
             const double last = worst(kOrder), before = worst(kOrder - 1);
-            double h = last > 0.0 ? std::pow(last, -0.5 / kOrder) : kNever;
-            if (h < kNever) {
-                // The term before, squared and over its tolerance, at h: before h^(2N-2), and
-                // h^(2N) = 1 / last.
-                if (before > last * h * h) h = std::pow(before, -0.5 / (kOrder - 1));
-            } else if (before > 0.0) {
-                h = std::pow(before, -0.5 / (kOrder - 1));
-            }
+            const double h = std::exp2(std::min(last > 0.0 ? fast_log2(last) * (-0.5 / kOrder) : kNever,
+                                                before > 0.0 ? fast_log2(before) * (-0.5 / (kOrder - 1))
+                                                             : kNever));
             if (!(h < kNever)) {
                 jammed = true;
                 return false;
