@@ -916,7 +916,9 @@ struct Impact {
                 jammed = true;
                 return false;
             }
-            const double t = event_series(s, g) ? first_root(g, h) : restitution_end(s, h);
+            // (restitution_end(), finding no end, leaves the state at the step's end.)
+            const bool by_series = event_series(s, g) != nullptr;
+            const double t = by_series ? first_root(g, h) : restitution_end(s, h);
             if (!compressing) {  // the approach resuming: -u_n reaching 0 from below
                 for (int k = 0; k <= kOrder; ++k) g[k] = -s[kUn][k];
                 const double t_back = first_root(g, h);
@@ -927,7 +929,7 @@ struct Impact {
                 }
             }
             if (t < 0.0) {
-                load(s, h);
+                if (by_series) load(s, h);
                 continue;
             }
             load(s, t);
