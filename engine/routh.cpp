@@ -524,9 +524,10 @@ struct Impact {
     // The slip stops at th* (q -> 0 as y -> 0) when alpha > 0, i.e. F(th*) < 0. Integrated term
     // by term from the stop, what remains of the slip at y (t = y^alpha) is
     //   R_n = r t sum_k B_k y^k/(alpha+k),
-    //   R_t = -mu r t sum_k (s* Bc_k + p* Bs_k) y^k/(alpha+k),  Bc = B cos(x_now y), Bs = B sin(x_now y),
-    //   R_D = r^2 t^2 sum_k BD_k y^k/(2 alpha+k),                BD = E B,
-    // with the rates dR_n/dt = (r/alpha) B(y), dR_t/dt = -(mu r/alpha)(s* Bc(y) + p* Bs(y)).
+    //   R_t = -mu r t sum_k (s* Bc_k + p* Bs_k) y^k/(alpha+k),
+    //   R_D = r^2 t^2 sum_k BD_k y^k/(2 alpha+k),
+    // where Bc = B cos(x_now y), Bs = B sin(x_now y), BD = E B; their rates are
+    // dR_n/dt = (r/alpha) B(y), dR_t/dt = -(mu r/alpha)(s* Bc(y) + p* Bs(y)).
     // The series converge while |x_now| is below the distance from th* to the next (complex)
     // zero of G. They are taken to the order where their last two terms (at y = 1, the largest)
     // are within the tolerances of the Taylor steps, and refused if no order up to kEndOrder is.
@@ -580,10 +581,12 @@ struct Impact {
         double t_star = 0.0;
         if (m0 > 0.0) {
             static constexpr std::array<double, 16> kGrid = {  // tan(i pi/32)
-                0.0, 0.09849140335716425, 0.19891236737965800, 0.30334668360734239,
-                0.41421356237309503, 0.53451113595079159, 0.66817863791929890, 0.82067879082866024,
-                1.0, 1.21850352558797255, 1.49660576266548898, 1.87086841178938664,
-                2.41421356237309492, 3.29655820893832213, 5.02733949212584761, 10.15317038760883958};
+                0.0,                 0.09849140335716425, 0.19891236737965800,
+                0.30334668360734239, 0.41421356237309503, 0.53451113595079159,
+                0.66817863791929890, 0.82067879082866024, 1.0,
+                1.21850352558797255, 1.49660576266548898, 1.87086841178938664,
+                2.41421356237309492, 3.29655820893832213, 5.02733949212584761,
+                10.15317038760883958};
             int i = 1;
             double slope;
             while (i < 16 && M(kGrid[i], &slope) > 0.0) ++i;
@@ -683,7 +686,8 @@ struct Impact {
             }
             const double top = std::max({std::abs(V[kProbe - 2]), std::abs(V[kProbe - 1]),
                                          std::abs(V[kProbe])});
-            const double log_ratio = top > 0.0 ? fast_log2(top / std::abs(V0)) / (kProbe - 1) : -kNever;
+            const double log_ratio =
+                top > 0.0 ? fast_log2(top / std::abs(V0)) / (kProbe - 1) : -kNever;
             const double log_tol = fast_log2(tolP * alpha / (q0 * -V0));
             if (log_ratio * (kEndOrder - 1) > log_tol) {
                 set_x_ok(std::abs(x0) * std::exp2(log_tol / (kEndOrder - 1) - log_ratio));
@@ -817,7 +821,8 @@ struct Impact {
         SlipEnd f;
         if (!slip_end_series(tol, &f)) return -1;
         {
-            // K_nt.s(x) = a cos x + b sin x, largest at x = atan2(b, a) if it lies between 0 and x0.
+            // K_nt.s(x) = a cos x + b sin x, largest at x = atan2(b, a) if that is between 0
+            // and x0.
             const Eigen::Vector2d knt(K(0, 1), K(0, 2));
             const double a = knt.dot(f.s), b = knt.dot(f.p), x0 = f.x0;
             double top = std::max(a, a * std::cos(x0) + b * std::sin(x0));
@@ -909,9 +914,10 @@ struct Impact {
             //   h = min(last^(-1/(2N)), before^(-1/(2N-2))),
             // by base-2 logarithms (fast_log2(): h to 1e-8 of itself).
             const double last = worst(kOrder), before = worst(kOrder - 1);
-            const double h = std::exp2(std::min(last > 0.0 ? fast_log2(last) * (-0.5 / kOrder) : kNever,
-                                                before > 0.0 ? fast_log2(before) * (-0.5 / (kOrder - 1))
-                                                             : kNever));
+            const double log_h_last = last > 0.0 ? fast_log2(last) * (-0.5 / kOrder) : kNever;
+            const double log_h_before =
+                before > 0.0 ? fast_log2(before) * (-0.5 / (kOrder - 1)) : kNever;
+            const double h = std::exp2(std::min(log_h_last, log_h_before));
             if (!(h < kNever)) {
                 jammed = true;
                 return false;
