@@ -53,6 +53,8 @@ struct RouthDetail {
     double restitution_work = 0.0;      // J, W_r = integral_P_c^P_f u_n dP_n (>= 0)
     double energy_change = 0.0;         // J, integral of u . dP = kinetic energy after - before
     bool jammed = false;                // 3D only: integration gave up (see routh.cpp)
+    int slip_steps = 0;                 // 3D only: Taylor steps taken on the turning slip
+    bool slip_end_in_closed_form = false;  // 3D only: the slip's end taken from its series
 };
 
 // Impact with Coulomb friction mu and restitution e by the given law. Separating or resting
@@ -62,5 +64,15 @@ Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, doubl
                 RestitutionLaw law, RouthDetail* detail = nullptr);
 Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
                 RestitutionLaw law, RouthDetail* detail = nullptr);
+
+// The 3D integration's settings, for tests that check it against itself: the tolerance of its
+// steps (relative to the impact's scales, see routh.cpp) and whether the slip's end is taken in
+// closed form. routh() above uses these defaults.
+struct RouthIntegration {
+    double tolerance = 1e-11;
+    bool closed_form_end = true;
+};
+Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
+                RestitutionLaw law, const RouthIntegration& how, RouthDetail* detail = nullptr);
 
 }  // namespace collide
