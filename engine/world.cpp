@@ -216,6 +216,7 @@ void World<D>::set_body(std::size_t i, const Body& body) {
     for (std::size_t j = 0; j < bodies_.size(); ++j)
         if (island_[j] != 0 || j == i) set_free(j);
     heap_.clear();
+    open_ = false;  // a new substep starts here
 }
 
 // ---- Broad phase (engine/broad_phase.h): each body's swept box ----
@@ -670,100 +671,45 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
     std::vector<Event<D>> scratch;
     if (!events) events = &scratch;
     std::uint64_t handled = 0;
-    // The shortest substep a fast body asks for: a thousandth of the advance (or 1 us), so
-    // that one body at an absurd speed cannot make an advance millions of grid rebuilds.
-    // (Longer substeps only widen the swept boxes: the impacts found are the same.)
-    const double shortest = std::max(1e-6, 1e-3 * (t_end - time_));
-    while (time_ < t_end) {
-        const double t0 = time_;
-        // Substep: bodies move about four radii each (the grid stays tight: longer substeps
-        // mean larger swept boxes, shorter ones more rebuilds), and at most kRestStep while
-        // anything rests or falls.
-        double h = t_end - t0;
-        // Nothing awake: nothing moves and nothing can happen until t_end.
-        bool awake = false;
-        for (std::size_t i = 0; i < bodies_.size() && !awake; ++i)
-            awake = !bodies_[i].is_static && !asleep_[i];
-        if (!awake) {
-            time_ = t_end;
-            for (std::size_t i = 0; i < bodies_.size(); ++i) track_[i].t = t_end;
-            break;
+    for (;;) {
+        if (!open_) {
+            if (!(time_ < t_end)) break;
+            // Nothing awake: nothing moves and nothing can happen until t_end.
+            bool awake = false;
+            for (std::size_t i = 0; i < bodies_.size() && !awake; ++i)
+                awake = !bodies_[i].is_static && !asleep_[i];
+            if (!awake) {
+                time_ = t_end;
+                for (std::size_t i = 0; i < bodies_.size(); ++i) track_[i].t = t_end;
+                break;
+            }
+            begin_substep(events, on_impact);
         }
-        bool any_rest = false, any_stepped = false;
-        double speed = 0.0, size = 0.0;
-        std::size_t moving = 0;
-        exact_bodies_ = false;
-        for (std::size_t i = 0; i < bodies_.size(); ++i) {
-            if (bodies_[i].is_static) continue;
-            exact_bodies_ = exact_bodies_ || !stepped_[i];
-            any_rest = any_rest || (island_[i] != 0 && !asleep_[i]);
-            any_stepped = any_stepped || (stepped_[i] && !asleep_[i]);
-            speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
-            size += radius_[i];
-            ++moving;
-        }
-        if (moving > 0 && speed > 0.0) h = std::min(h, std::max(shortest, 4.0 * size / speed));
-        // Stepped islands: a substep never crosses a step's end; at a step's start they are solved.
-        bool step_now = false;
-        if (any_stepped) {
-            step_now = !(step_end_ - t0 > 1e-9 * kIslandStep);
-            h = std::min(h, step_now ? kIslandStep : step_end_ - t0);
-            if (any_rest) h = std::min(h, kRestStep);
-        } else if (any_rest || gravity().norm() > 0.0) {
-            h = std::min(h, kRestStep);
-        }
-        const double t1 = (t_end - t0 <= h) ? t_end : t0 + h;
-        substep_end_ = t1;
-        ++counters_.substeps;
-
-        build_grid(t0, t1);
-        heap_.clear();
-        // Resting contacts are found afresh each substep; then every body predicts its next impact.
-        // Sleeping islands keep their (zero) motion and are neither re-solved nor predicted.
-        std::vector<std::size_t> all;
-        for (std::size_t i = 0; i < bodies_.size(); ++i)
-            if (!bodies_[i].is_static && !asleep_[i] && !stepped_[i] && (island_[i] != 0 || gravity().norm() > 0.0))
-                all.push_back(i);
-        for (auto it = members_.begin(); it != members_.end();)
-            it = asleep_[it->second.front()] ? std::next(it) : members_.erase(it);
-        for (std::size_t i : all) set_free(i);
-        if (!all.empty()) settle(all, t0);
-        // Then the stepped islands' step, if one starts now (or settling brought bodies to them).
-        if (step_now || restep_) {
-            const std::size_t recorded = events->size();
-            step_islands(t0, events, !step_now);
-            if (on_impact && events->size() > recorded) on_impact(t0);
-        }
-        std::unordered_set<std::size_t> predicted(all.begin(), all.end());
-        for (std::size_t i = 0; i < bodies_.size(); ++i)
-            if (!asleep_[i] && !predicted.count(i)) predict(i, t0);
-
-        double now = t0;
-        std::uint64_t pops_at_now = 0;
-        while (!heap_.empty()) {
+        // The substep's impacts up to t_end.
+        const double stop = std::min(t_end, substep_end_);
+        while (!heap_.empty() && !(heap_.front().t > stop)) {
             std::pop_heap(heap_.begin(), heap_.end(), std::greater<Pending>());
             const Pending p = heap_.back();
             heap_.pop_back();
-            if (p.t > t1) break;
-            if (p.t > now) {
-                now = p.t;
-                pops_at_now = 0;
+            if (p.t > now_) {
+                now_ = p.t;
+                pops_at_now_ = 0;
             }
             // Never hang: an instant that keeps producing work without time moving on is a
             // failure to report (see "Known limits" in world.h).
-            if (++pops_at_now > kMaxWorkPerInstant)
-                throw std::runtime_error("the simulation is stuck at t = " + std::to_string(now) + " s between " +
+            if (++pops_at_now_ > kMaxWorkPerInstant)
+                throw std::runtime_error("the simulation is stuck at t = " + std::to_string(now_) + " s between " +
                                          scene_.bodies[p.i].name + " and " + scene_.bodies[p.j].name +
                                          " (a known limit of resting contact, see engine/world.h)");
             const bool valid_i = track_[p.i].version == p.vi;
             const bool valid_j = track_[p.j].version == p.vj;
             if (!valid_i) continue;  // i predicted again when it changed
             if (!valid_j) {
-                predict(p.i, now);
+                predict(p.i, now_);
                 continue;
             }
-            if (now > stall_time_) {
-                stall_time_ = now;
+            if (now_ > stall_time_) {
+                stall_time_ = now_;
                 stalls_.clear();
                 stalled_.clear();
             }
@@ -776,15 +722,84 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
             // to the next substep's contact search instead of being predicted again and again.
             // (Round-off impulses of resting neighbours do not count as progress.)
             const std::size_t recorded = events->size();
-            if (!resolve(p.i, p.j, now, events)) {
+            if (!resolve(p.i, p.j, now_, events)) {
                 const std::uint64_t key = static_cast<std::uint64_t>(std::min(p.i, p.j)) << 32 | std::max(p.i, p.j);
                 if (++stalls_[key] > 8) stalled_.insert(key);
             }
-            if (on_impact && events->size() > recorded) on_impact(now);
+            if (on_impact && events->size() > recorded) on_impact(now_);
         }
-        for (std::size_t i = 0; i < bodies_.size(); ++i) drift(i, t1);
-        time_ = t1;
+        if (t_end < substep_end_) {
+            // Paused inside the substep: every body at t_end along its motion, the world's own
+            // state untouched (the next advance goes on from here).
+            time_ = t_end;
+            bodies_now_ = bodies_at(t_end);
+            break;
+        }
+        for (std::size_t i = 0; i < bodies_.size(); ++i) drift(i, substep_end_);
+        time_ = substep_end_;
+        open_ = false;
+        heap_.clear();
     }
+}
+
+template <int D>
+void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on_impact) {
+    const double t0 = time_;
+    // Substep: bodies move about four radii each (the grid stays tight: longer substeps mean
+    // larger swept boxes, shorter ones more rebuilds), and at most kRestStep while anything
+    // rests or falls. Chosen from the bodies alone, never from where an advance stops.
+    double h = kLongestSubstep;
+    bool any_rest = false, any_stepped = false;
+    double speed = 0.0, size = 0.0;
+    std::size_t moving = 0;
+    exact_bodies_ = false;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (bodies_[i].is_static) continue;
+        exact_bodies_ = exact_bodies_ || !stepped_[i];
+        any_rest = any_rest || (island_[i] != 0 && !asleep_[i]);
+        any_stepped = any_stepped || (stepped_[i] && !asleep_[i]);
+        speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
+        size += radius_[i];
+        ++moving;
+    }
+    if (moving > 0 && speed > 0.0) h = std::min(h, std::max(kShortestSubstep, 4.0 * size / speed));
+    // Stepped islands: a substep never crosses a step's end; at a step's start they are solved.
+    bool step_now = false;
+    if (any_stepped) {
+        step_now = !(step_end_ - t0 > 1e-9 * kIslandStep);
+        h = std::min(h, step_now ? kIslandStep : step_end_ - t0);
+        if (any_rest) h = std::min(h, kRestStep);
+    } else if (any_rest || gravity().norm() > 0.0) {
+        h = std::min(h, kRestStep);
+    }
+    const double t1 = t0 + h;
+    substep_end_ = t1;
+    open_ = true;
+    now_ = t0;
+    pops_at_now_ = 0;
+    ++counters_.substeps;
+
+    build_grid(t0, t1);
+    heap_.clear();
+    // Resting contacts are found afresh each substep; then every body predicts its next impact.
+    // Sleeping islands keep their (zero) motion and are neither re-solved nor predicted.
+    std::vector<std::size_t> all;
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!bodies_[i].is_static && !asleep_[i] && !stepped_[i] && (island_[i] != 0 || gravity().norm() > 0.0))
+            all.push_back(i);
+    for (auto it = members_.begin(); it != members_.end();)
+        it = asleep_[it->second.front()] ? std::next(it) : members_.erase(it);
+    for (std::size_t i : all) set_free(i);
+    if (!all.empty()) settle(all, t0);
+    // Then the stepped islands' step, if one starts now (or settling brought bodies to them).
+    if (step_now || restep_) {
+        const std::size_t recorded = events->size();
+        step_islands(t0, events, !step_now);
+        if (on_impact && events->size() > recorded) on_impact(t0);
+    }
+    std::unordered_set<std::size_t> predicted(all.begin(), all.end());
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!asleep_[i] && !predicted.count(i)) predict(i, t0);
 }
 
 template class World<2>;

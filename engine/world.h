@@ -165,7 +165,7 @@ public:
     double time() const { return time_; }
     const Scene& scene() const { return scene_; }
     // Every body's state at time().
-    const std::vector<Body>& bodies() const { return bodies_; }
+    const std::vector<Body>& bodies() const { return open_ ? bodies_now_ : bodies_; }
 
     // Called during advance_to each time an impact was resolved and its events appended, with
     // its instant; bodies_at(t) then gives every body there, after the impulses.
@@ -173,8 +173,10 @@ public:
 
     // Moves to time t (>= time()), resolving every impact on the way; appends the events in
     // time order. Throws std::runtime_error if more than kMaxEventsPerAdvance happen.
-    // (Where advance_to is asked to stop shapes its substeps: a run sampled at other instants
-    // can differ from this one by round-off.)
+    // Where advance_to is asked to stop does not shape the run: substeps are chosen from the
+    // bodies alone, and an advance that ends inside one pauses there (bodies() is then each
+    // body's state at t along its motion, the substep's predictions and forces kept), so a
+    // run sampled at other instants is the same run, event for event and bit for bit.
     void advance_to(double t, std::vector<Event<D>>* events, const ImpactHook& on_impact = nullptr);
 
     // Every body at time t along its current motion, the world itself unchanged: valid from
@@ -210,6 +212,13 @@ public:
     static constexpr double kTouch = 1e-10;     // m: a gap this small is contact
     static constexpr double kZenoTime = 1e-12;  // s: see "Resting contact"
     static constexpr double kRestStep = 1e-3;   // s: longest substep while anything rests
+    // s: the substeps of bodies moving freely without gravity (about four radii each) are at
+    // most this long, and at least the shorter one (a body at an absurd speed cannot make a
+    // run millions of grid rebuilds; longer substeps only widen the swept boxes). Each
+    // substep's start looks for touching contacts (gaps under kTouch): the longer the
+    // substeps of slow bodies, the closer their impacts come to the exact instant.
+    static constexpr double kLongestSubstep = 1.0;
+    static constexpr double kShortestSubstep = 1e-5;
     static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
     static constexpr std::uint64_t kMaxWorkPerInstant = 100000;   // predictions popped at one t
     // Stepped islands (see above).
@@ -221,6 +230,9 @@ public:
     static constexpr double kStepSleepTime = 0.5;       // s
 
 private:
+    // advance_to's start of a substep at time_: its length, the grid, resting forces, the stepped
+    // islands' step, every prediction.
+    void begin_substep(std::vector<Event<D>>* events, const ImpactHook& on_impact);
     struct Track {                  // per body: its own clock and current free motion
         double t = 0.0;             // s: the time bodies_[i] is at
         Vec a;                      // m/s^2 (gravity plus resting forces)
@@ -341,6 +353,13 @@ private:
     std::uint32_t next_island_ = 1;
     double time_ = 0.0;
     double substep_end_ = 0.0;
+    // An advance that ended inside a substep (time_ < substep_end_): the next one goes on with
+    // its predictions (heap_), from the event loop's instant `now_`; bodies_now_ is every body
+    // at time_ (bodies_ stay where the substep's events left each of them).
+    bool open_ = false;
+    double now_ = 0.0;
+    std::uint64_t pops_at_now_ = 0;
+    std::vector<Body> bodies_now_;
     Counters counters_;
 
     BroadPhase<D> grid_;

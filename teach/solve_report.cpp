@@ -78,7 +78,11 @@ private:
     F Vp(const Vec3& v) const { return d == 1 ? paren(v.x()) : vec(v, d); }
     // After an operator: a negative 2D spin in parentheses.
     F Wp(const Vec3& w) const { return d == 2 ? paren(w.z()) : spin(w, d); }
-    static F paren(double x) { return x < 0 ? f("(") + num(x) + f(")") : num(x); }
+    // (On the printed number: a round-off -1e-20 prints as 0, without parentheses.)
+    static F paren(double x) {
+        const F n = num(x);
+        return n.txt.rfind('-', 0) == 0 ? f("(") + n + f(")") : n;
+    }
     const SolveBody& body(char c) const { return c == 'a' ? P.a : P.b; }
     bool is_static(char c) const { return body(c).b3.is_static; }
 
