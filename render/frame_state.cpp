@@ -67,9 +67,10 @@ ImpactMark impact_mark_of(const Event<D>& e) {
 }
 
 double motion_label_floor(std::vector<double> sizes) {
-    if (sizes.size() <= kQuietBodies) return 0.0;
+    if (sizes.size() <= kFewBodies) return 0.0;
     std::sort(sizes.begin(), sizes.end(), std::greater<double>());
-    return std::max(kShownMotionFraction * sizes.front(), sizes[kMaxMotionLabels - 1]);
+    const double fraction = kShownMotionFraction * sizes.front();
+    return sizes.size() <= kQuietBodies ? fraction : std::max(fraction, sizes[kMaxMotionLabels - 1]);
 }
 
 TableRows table_rows(const std::vector<std::size_t>& moving, const std::vector<double>& kinetic,

@@ -62,16 +62,19 @@ std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts);
 // same point. The others draw their impulse arrow only.
 constexpr std::size_t kDetailedImpacts = 3;
 
-// Velocity and spin labels in a frame of more than kQuietBodies moving bodies: only for the
-// bodies whose speed (or spin) is at least kShownMotionFraction of the frame's largest and
-// among the kMaxMotionLabels largest (their arrows are drawn all the same: a pile of 40 boxes
-// settling turns them all a little). Fewer bodies: every one is labelled.
+// Velocity and spin labels in a frame of more than kFewBodies moving bodies: only for the
+// bodies whose speed (or spin) is at least kShownMotionFraction of the frame's largest (a
+// tower's resting boxes do not get "ω = 9.03×10⁻⁴ rad/s" beside the falling ones), and with
+// more than kQuietBodies, only the kMaxMotionLabels largest of those (their arrows are drawn
+// all the same: a pile of 40 boxes settling turns them all a little). Up to kFewBodies: every
+// one is labelled (a lesson's two or three bodies, a body at rest included).
+constexpr std::size_t kFewBodies = 4;
 constexpr std::size_t kQuietBodies = 8;
 constexpr double kShownMotionFraction = 0.1;
 constexpr std::size_t kMaxMotionLabels = 6;
 // The smallest speed (or spin) labelled in a frame whose moving bodies' speeds (or spins) are
-// `sizes`: 0 (every one) for up to kQuietBodies of them, else the larger of
-// kShownMotionFraction of the largest and the kMaxMotionLabels-th largest.
+// `sizes`: 0 (every one) for up to kFewBodies of them; else kShownMotionFraction of the
+// largest, and beyond kQuietBodies at least the kMaxMotionLabels-th largest.
 double motion_label_floor(std::vector<double> sizes);
 // Whether a value of `size` is labelled (`floor` from motion_label_floor).
 inline bool motion_labelled(double size, double floor) { return size >= floor; }

@@ -102,10 +102,13 @@ TEST(TableRows, OthersAtRestSaySo) {
     EXPECT_EQ(r.others_spin, 0.0);
 }
 
-// Velocity and spin labels (render::motion_label_floor): all of up to eight bodies; beyond,
-// those at least a tenth of the largest and among the six largest.
-TEST(MotionLabels, EightBodiesAreAllLabelledMoreOnlyTheSixLargest) {
-    EXPECT_EQ(motion_label_floor({0.0, 0.001, 5.0, 1.0, 0, 0, 0, 0}), 0.0);
+// Velocity and spin labels (render::motion_label_floor): all of up to four bodies; of up to
+// eight, those at least a tenth of the largest; beyond, also only the six largest.
+TEST(MotionLabels, FourBodiesAreAllLabelledMoreOnlyTheLargest) {
+    EXPECT_EQ(motion_label_floor({0.0, 0.001, 5.0, 1.0}), 0.0);
+    // The tower at 0.7 s: the spins of its seven moving bodies (rad/s).
+    EXPECT_DOUBLE_EQ(motion_label_floor({10.0, 9.03e-4, 3.64, 7.35, 0.0037, 2.52, 0.0693}), 1.0);
+    EXPECT_EQ(motion_label_floor({0.0, 0.001, 5.0, 1.0, 0, 0, 0, 0}), 0.5);
     std::vector<double> speeds = {9, 8, 7, 6, 5, 4, 3, 2, 1, 0.5};
     EXPECT_EQ(motion_label_floor(speeds), 4.0);  // the sixth largest
     speeds = {10, 9, 0.5, 0.4, 0.3, 0.2, 0.1, 0.05, 0.01};
