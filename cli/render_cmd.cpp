@@ -20,7 +20,7 @@
 
 #include "cli/figures.h"
 #include "cli/scene_run.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "render/context.h"
 #include "render/frame_sink.h"
 #include "render/frame_state.h"

@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "teach/notation.h"
 
 namespace collide {
