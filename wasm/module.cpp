@@ -27,6 +27,7 @@
 #include "engine/record.h"
 #include "teach/event_problem.h"
 #include "teach/html.h"
+#include "teach/notation.h"
 #include "teach/solve.h"
 #include "teach/step_output.h"
 
@@ -176,8 +177,12 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
         const Solution solution = solve(problem);
         std::ostringstream json;
         write_json(problem, solution, json);
-        ordered_json w{{"t", collision->t}, {"a", problem.a.name}, {"b", problem.b.name},
-                       {"html", html::worked_html(problem, solution, world_note(scene, *collision, solution.P))}};
+        std::string html;
+        {
+            const notation::StudentNumbers student;  // as on the lesson page: 4 figures, no noise
+            html = html::worked_html(problem, solution, world_note(scene, *collision, solution.P));
+        }
+        ordered_json w{{"t", collision->t}, {"a", problem.a.name}, {"b", problem.b.name}, {"html", html}};
         // The solve JSON as `collide solve --format json` prints it, spliced in unchanged.
         worked = w.dump();
         worked.pop_back();
