@@ -291,11 +291,11 @@
     run.events.forEach(function (e) {
       if (e.t > st.t + 1e-12 || e.t < st.t - 0.15) return;
       var p = d === 1 ? toCanvas(e.point, 0) : toCanvas(e.point[0], e.point[1]);
-      if (d === 1) p[1] -= 50;
+      if (d === 1) p[1] -= 150;  // above the blocks and their velocity arrows
       var P = d === 1 ? [e.impulse, 0] : e.impulse, n = d === 1 ? [e.normal, 0] : e.normal;
-      arrow(ctx, p, [p[0] + n[0] * 60, p[1] - n[1] * 60], palette.normal, 2.5);
+      if (d > 1) arrow(ctx, p, [p[0] + n[0] * 60, p[1] - n[1] * 60], palette.normal, 2.5);  // 1D: n is +x
       arrow(ctx, p, [p[0] + P[0] * view.pscale, p[1] - P[1] * view.pscale], palette.impulse, 3.5);
-      label(ctx, 'P = ' + vec(e.impulse) + ' N\u00b7s on ' + e.b, [p[0] + 10, p[1] - 22], palette.impulse);
+      label(ctx, 'P = ' + vec(e.impulse) + ' N\u00b7s on ' + e.b, [p[0] + 10, p[1] - 20], palette.impulse);
     });
     legend.forEach(function (l, k) {
       ctx.fillStyle = fillOf(l.i); ctx.fillRect(12, 12 + k * 22, 14, 14);
