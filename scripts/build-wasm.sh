@@ -20,6 +20,10 @@ command -v emcmake >/dev/null || {
 # Node 20 does not look in Debian's /usr/share/nodejs, where node-acorn puts acorn, which
 # emscripten's JavaScript optimizer needs (../shared/STACK.md, "Emscripten").
 export NODE_PATH=/usr/share/nodejs${NODE_PATH:+:$NODE_PATH}
-emcmake cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE_WERROR=ON "${args[@]}" >/dev/null
+# Configured once (the build itself re-runs CMake when a CMakeLists.txt changes): the native
+# build runs this script every time, and emcmake takes seconds even when nothing changed.
+if [[ ! -f $dir/CMakeCache.txt || ${#args[@]} -gt 0 ]]; then
+  emcmake cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DCOLLIDE_WERROR=ON "${args[@]}" >/dev/null
+fi
 cmake --build "$dir" -j "$(nproc)"
 ls -l "$dir/collide-engine.js" | awk '{print "build-wasm: " $NF " (" $5 " bytes)"}'
