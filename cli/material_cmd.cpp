@@ -157,7 +157,12 @@ std::string palette_json() {
 
 std::string engine_js_path(const std::string& installed) {
     std::error_code ec;
-    if (const char* env = std::getenv("COLLIDE_ENGINE_JS"); env && *env) return env;
+    if (const char* env = std::getenv("COLLIDE_ENGINE_JS"); env && *env) {
+        if (!fs::is_regular_file(env, ec))
+            throw InputError("", {}, "COLLIDE_ENGINE_JS", std::string("'") + env + "' is not a file (the WebAssembly "
+                             "module collide-engine.js: scripts/build-wasm.sh builds it)");
+        return env;
+    }
     if (!installed.empty() && fs::is_regular_file(installed, ec)) return installed;
     if (fs::is_regular_file(COLLIDE_ENGINE_JS_BUILD, ec)) return COLLIDE_ENGINE_JS_BUILD;
     return "";
@@ -496,6 +501,8 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             }
         }
         if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
+        // The WebAssembly module, for the pages' Try-it panels (README.md, "The Try-it panel").
+        const std::string engine_js = engine_js_path();
         StagedDirectory staged(opt.out_dir, opt.force);
         // The options, read once as collide render reads them: every lesson renders with them,
         // and with an MP4 when ffmpeg is installed.
@@ -513,8 +520,6 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
         const fs::path& tmp = staged.begin();
         const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
 
-        // The WebAssembly module, for the pages' Try-it panels (README.md, "The Try-it panel").
-        const std::string engine_js = engine_js_path();
         std::vector<Built> built;
         for (std::size_t k = 0; k < lessons.size(); ++k) {
             const Lesson& L = lessons[k];

@@ -35,7 +35,7 @@ struct MaterialOptions {
 };
 
 // Where `collide material` finds the WebAssembly module collide-engine.js for the Try-it
-// panels, the first of: $COLLIDE_ENGINE_JS when set; `installed` when it is a file (an
+// panels, the first of: $COLLIDE_ENGINE_JS when set (InputError when it is not a file); `installed` when it is a file (an
 // installed program's share/collide/collide-engine.js); the build tree's BUILD/wasm/
 // collide-engine.js (scripts/build-wasm.sh, or the build itself when emscripten is
 // installed). "" when there is none: the pages have no panel and the summary says how to
