@@ -12,7 +12,7 @@
 #include "scenario/lesson.h"
 #include "teach/notation.h"
 #include "scenario/scene_file.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "scenario/toml_reader.h"
 #include "compare/box2d_world.h"
 #include "compare/match.h"

@@ -9,7 +9,7 @@
 #include "scenario/input_error.h"
 #include "scenario/scene_file.h"
 #include "cli/scene_run.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 
 namespace collide {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "scenario/scene_file.h"
 #include "teach/notation.h"
 

@@ -16,7 +16,7 @@
 #include "cli/render_cmd.h"
 #include "scenario/scene_file.h"
 #include "teach/solve.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 
 namespace {
 

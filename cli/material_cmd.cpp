@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <cstdlib>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -131,6 +132,50 @@ document.getElementById('print-answers').addEventListener('change', function (e)
 </script>
 )";
 
+// ---- The Try-it panels ----
+
+// The figures' colours (render/style.h) for the panel's canvas, as CSS colours in JSON.
+std::string palette_json() {
+    const render::Palette c;
+    const auto css = [](render::Colour x) {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "#%02x%02x%02x", x & 0xFFu, (x >> 8) & 0xFFu, (x >> 16) & 0xFFu);
+        return std::string("\"") + buf + "\"";
+    };
+    std::string fills, darks;
+    for (int k = 0; k < render::Palette::kFills; ++k) {
+        fills += (k ? "," : "") + css(c.fills[k]);
+        darks += (k ? "," : "") + css(c.darks[k]);
+    }
+    return "{\"background\":" + css(c.background) + ",\"ink\":" + css(c.ink) + ",\"muted\":" + css(c.muted) +
+           ",\"grid\":" + css(c.grid) + ",\"static_fill\":" + css(c.static_fill) + ",\"hatch\":" + css(c.hatch) +
+           ",\"velocity\":" + css(c.velocity) + ",\"spin\":" + css(c.spin) + ",\"impulse\":" + css(c.impulse) +
+           ",\"normal\":" + css(c.normal) + ",\"fills\":[" + fills + "],\"darks\":[" + darks + "]}";
+}
+
+}  // namespace
+
+std::string engine_js_path(const std::string& installed) {
+    std::error_code ec;
+    if (const char* env = std::getenv("COLLIDE_ENGINE_JS"); env && *env) {
+        if (!fs::is_regular_file(env, ec))
+            throw InputError("", {}, "COLLIDE_ENGINE_JS", std::string("'") + env + "' is not a file (the WebAssembly "
+                             "module collide-engine.js: scripts/build-wasm.sh builds it)");
+        return env;
+    }
+    if (!installed.empty() && fs::is_regular_file(installed, ec)) return installed;
+    if (fs::is_regular_file(COLLIDE_ENGINE_JS_BUILD, ec)) return COLLIDE_ENGINE_JS_BUILD;
+    return "";
+}
+
+std::string engine_js_path() {
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);  // Linux: the running program
+    return engine_js_path(ec ? std::string() : (exe.parent_path() / COLLIDE_ENGINE_JS_FROM_BINDIR).lexically_normal().string());
+}
+
+namespace {
+
 // ---- Pages ----
 
 // The stylesheet is assets/site/style.css, compiled in (cmake/embed.cmake).
@@ -146,6 +191,7 @@ const char* kPageTail = "</main>\n</body>\n</html>\n";
 
 struct Built {
     Lesson lesson;
+    bool try_it = false;  // the site has collide-engine.js: the page gets its Try-it panel
     RenderReport report;
     bool thumb = false;
     std::vector<int> figure_widths;  // pixels, of report.figures' PNG files
@@ -395,6 +441,10 @@ std::string lesson_page(const Built& b, const Built* prev, const Built* next) {
         }
         o << "</table>\n";
     }
+    if (b.try_it) {
+        const double fps = r.t.size() > 1 && r.t[1] > r.t[0] ? 1.0 / (r.t[1] - r.t[0]) : 30.0;
+        o << html::try_it_html(L, fps, "../");
+    }
     if (r.penalty) o << penalty_html(*r.penalty);
     if (!L.teacher_notes.empty())
         o << "<section class=\"teacher\">\n<h2>For the teacher</h2>\n" << paragraphs(L.teacher_notes) << "</section>\n";
@@ -451,6 +501,8 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             }
         }
         if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
+        // The WebAssembly module, for the pages' Try-it panels (README.md, "The Try-it panel").
+        const std::string engine_js = engine_js_path();
         StagedDirectory staged(opt.out_dir, opt.force);
         // The options, read once as collide render reads them: every lesson renders with them,
         // and with an MP4 when ffmpeg is installed.
@@ -475,7 +527,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             request.scenario = L.file;
             request.out_dir = (tmp / L.id).string();
             std::ostringstream notes;  // "no collision" notes: not an error for a lesson page
-            Built b{L, render_scenario(request, notes), false, {}, 0};
+            Built b{L, !engine_js.empty(), render_scenario(request, notes), false, {}, 0};
             // The thumbnail: the figure's collision panel (collide render writes it), else the
             // first frame.
             const fs::path lesson_dir = tmp / L.id;
@@ -516,12 +568,20 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                 err << line << std::flush;
             }
         }
-        for (std::size_t k = 0; k < built.size(); ++k)
+        for (std::size_t k = 0; k < built.size(); ++k) {
+            if (built[k].try_it)
+                render::write_file_atomic((tmp / built[k].lesson.id / "try-it-lesson.js").string(),
+                                          html::try_it_data_js(built[k].lesson, palette_json()));
             render::write_file_atomic((tmp / built[k].lesson.id / "index.html").string(),
                                       lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr,
                                                   k + 1 < built.size() ? &built[k + 1] : nullptr));
+        }
         render::write_file_atomic((tmp / "index.html").string(), index_page(built));
         render::write_file_atomic((tmp / "style.css").string(), std::string(assets::site_style_css));
+        if (!engine_js.empty()) {
+            fs::copy_file(engine_js, tmp / "collide-engine.js", fs::copy_options::overwrite_existing);
+            render::write_file_atomic((tmp / "try-it.js").string(), std::string(assets::site_try_it_js));
+        }
 
         staged.commit();
         if (!opt.quiet) {
@@ -531,6 +591,9 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                           video ? "" : " (no ffmpeg: pages link the PNG frames instead of a video)");
             out << line;
+            if (engine_js.empty())
+                out << "no Try-it panels: the WebAssembly module collide-engine.js is not built (scripts/build-wasm.sh "
+                       "builds it where this command finds it, " COLLIDE_ENGINE_JS_BUILD "; or set COLLIDE_ENGINE_JS)\n";
         }
         return 0;
     } catch (const Interrupted&) {  // the staged directory is gone with its scope

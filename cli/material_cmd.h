@@ -8,7 +8,12 @@
 //                              numbers), a table of the first collision, plots of energy and
 //                              momentum against time (SVG), questions with answers that open
 //                              on click (printed: a space to write in, or the teacher's copy)
+//                              and, when the WebAssembly module is built, a Try-it panel
+//                              (teach/html.h try_it_html)
 //   DIR/ID/...                 everything `collide render ID` writes (frames, data, Markdown)
+//   DIR/collide-engine.js      the WebAssembly module (engine_js_path), and the panels'
+//   DIR/try-it.js              script (assets/site/try-it.js), DIR/ID/try-it-lesson.js the
+//                              lesson for it (try_it_data_js): only when the module is built
 // The site is built in a temporary directory beside DIR and renamed into place at the end:
 // DIR is complete or untouched.
 #pragma once
@@ -28,6 +33,16 @@ struct MaterialOptions {
     bool quiet = false;                // no progress, no summary
     bool force = false;                // replace a DIR that is not empty
 };
+
+// Where `collide material` finds the WebAssembly module collide-engine.js for the Try-it
+// panels, the first of: $COLLIDE_ENGINE_JS when set (InputError when it is not a file); `installed` when it is a file (an
+// installed program's share/collide/collide-engine.js); the build tree's BUILD/wasm/
+// collide-engine.js (scripts/build-wasm.sh, or the build itself when emscripten is
+// installed). "" when there is none: the pages have no panel and the summary says how to
+// build it.
+std::string engine_js_path(const std::string& installed);
+// The same for the running program (installed: its directory/../share/collide/).
+std::string engine_js_path();
 
 // Returns the exit code: 0 done, 2 bad input (nothing written), 1 any other failure.
 int run_material(const MaterialOptions& options, std::ostream& out, std::ostream& err);

@@ -20,7 +20,7 @@
 
 #include "cli/figures.h"
 #include "cli/scene_run.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "render/context.h"
 #include "render/frame_sink.h"
 #include "render/frame_state.h"
@@ -118,14 +118,7 @@ WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
     }
     // The formula is for one contact point. When the world resolved several points at this
     // instant (a face on a face, a resting stack), its impulse differs: say so, with its value.
-    const double scale = std::max({w.solution.P.norm(), c.impulse.norm(), 1e-300});
-    // (The page's listing is left alone: its J is not what B receives, erratum 7, as its steps say.)
-    if ((w.solution.P - c.impulse).norm() > 1e-6 * scale && scene.model != Model::page_listing) {
-        const int d = scene.dimension;
-        std::string P = d == 1 ? notation::num_text(c.impulse.x()) : notation::vec(c.impulse, d).txt;
-        w.formula.note = "The world resolved several contact points here; its total impulse is P = " + P +
-                         " N\u00B7s";
-    }
+    w.formula.note = world_note(scene, c, w.solution.P);
     return w;
 }
 

@@ -5,7 +5,7 @@
 #include <type_traits>
 #include <variant>
 
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "teach/notation.h"
 
 namespace collide {
@@ -156,28 +156,15 @@ void after_impulses(const Event<D>& e, std::vector<BodyState>* bodies) {
 
 // The events of `pick`: those of its pair in the pick.order-th recorded instant where that
 // pair collides, as [first, end) within it; false when the run has no such collision.
-template <class Recording>
-bool find_pick(const Recording& rec, const CollisionPick& pick, std::size_t* which, std::size_t* first,
+template <int D>
+bool find_pick(const Recording<D>& rec, const CollisionPick& pick, std::size_t* which, std::size_t* first,
                std::size_t* end) {
-    int seen = 0;
-    for (std::size_t i = 0; i < rec.instants.size(); ++i) {
-        const auto& in = rec.instants[i];
-        std::size_t f = in.end, l = in.end;
-        for (std::size_t k = in.first; k < in.end; ++k) {
-            const auto& e = rec.events[k];
-            if ((e.a == pick.a && e.b == pick.b) || (e.a == pick.b && e.b == pick.a)) {
-                if (f == in.end) f = k;
-                l = k + 1;
-            }
-        }
-        if (f != in.end && ++seen == pick.order) {
-            *which = i;
-            *first = f;
-            *end = l;
-            return true;
-        }
-    }
-    return false;
+    const std::optional<PairCollision> c = find_pair_collision(rec, pick.a, pick.b, pick.order);
+    if (!c) return false;
+    *which = c->instant;
+    *first = c->first;
+    *end = c->end;
+    return true;
 }
 
 template <int D>

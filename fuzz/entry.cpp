@@ -11,7 +11,7 @@
 #include "teach/answers.h"
 #include "scenario/scene_file.h"
 #include "teach/solve.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 
 namespace collide::fuzz {
 

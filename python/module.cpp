@@ -1,7 +1,7 @@
 // collide._collide: the Python module's C++ half (pybind11). Each function calls what the
 // command calls and returns what it prints, so Python and `collide` cannot disagree:
 //   solve_json      collide solve --format json          (teach/solve.h write_json)
-//   run_json        collide step --json, --events --json (cli/step.h step_json: one run)
+//   run_json        collide step --json, --events --json (teach/step_output.h step_json: one run)
 //   figure_png      collide render's figure.png          (cli/render_cmd.h figure_png)
 // python/collide/__init__.py turns the JSON into dicts and NumPy arrays. A scene or a
 // collision comes as a file name (or a lesson id) or as a dict with the file's tables, read
@@ -20,7 +20,7 @@
 
 #include "cli/render_cmd.h"
 #include "cli/render_request.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 #include "scenario/input_error.h"
 #include "scenario/lesson.h"
 #include "scenario/scene_file.h"

@@ -46,10 +46,12 @@ public:
     const std::string& message() const { return message_; }
 
     // "FILE:LINE:COL: key: message" (parts that are unknown are left out), on one line.
+    // Without a file, "LINE:COL: key: message" (text that came from no file: the WebAssembly
+    // module's, wasm/).
     static std::string format(const std::string& file, SourcePos pos, const std::string& key,
                               const std::string& message) {
         std::string s = file;
-        if (pos.line > 0) s += ":" + std::to_string(pos.line);
+        if (pos.line > 0) s += (s.empty() ? "" : ":") + std::to_string(pos.line);
         if (pos.line > 0 && pos.column > 0) s += ":" + std::to_string(pos.column);
         if (!s.empty()) s += ": ";  // no file: a command-line option, named by its key
         if (!key.empty()) s += key + ": ";

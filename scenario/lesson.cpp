@@ -248,6 +248,7 @@ LessonVary parse_vary_entry(const TableReader& v, const toml::table& file, const
     const std::string table_name = V.body == "scene" ? "[scene]" : "body '" + V.body + "'";
     if (!old) v.fail("key", table_name + " has no key '" + V.key + "' (vary a number the table gives)");
     if (!old->is_number()) v.fail("key", "'" + V.key + "' of " + table_name + " is not a number");
+    V.lesson_value = old->value<double>().value_or(0.0);
     if (!v.has("range")) v.fail("range", "missing key 'range' ([lo, hi], the values drawn from)");
     const std::vector<double> r = *v.numbers("range", 2, "a range [lo, hi] of two numbers");
     V.lo = r[0];
@@ -646,8 +647,13 @@ Scene load_scenario(const std::string& arg, SceneView* view, std::optional<Lesso
     const std::string file = resolve_lesson(arg, lessons_dir());
     std::string name;
     const std::string text = read_input_file(file, &name);
+    return parse_scenario_text(text, name, file, view, lesson);
+}
+
+Scene parse_scenario_text(const std::string& text, const std::string& name, const std::string& path, SceneView* view,
+                          std::optional<Lesson>* lesson) {
     if (parse_toml_text(text, name).contains("lesson")) {
-        Lesson L = load_lesson(file);
+        Lesson L = parse_lesson_text(text, name, path);
         if (view) *view = L.view;
         Scene scene = L.scene;
         if (lesson) *lesson = std::move(L);

@@ -106,6 +106,7 @@ struct LessonVary {
     std::string body;        // a body's name, or "scene"
     std::string key;         // e.g. "mass"
     double lo = 0.0, hi = 0.0, step = 1.0;
+    double lesson_value = 0.0;  // the lesson's own value: what the table gives the key
     SourcePos pos;           // of the entry (for errors found when a draw is run)
     std::string where;       // "vary[K]"
 
@@ -214,6 +215,10 @@ std::string resolve_lesson(const std::string& id_or_file, const std::string& dir
 // lessons_dir()). `lesson` receives the lesson when it is one. Throws InputError.
 Scene load_scenario(const std::string& arg, SceneView* view = nullptr,
                     std::optional<Lesson>* lesson = nullptr);
+// The same from a file's text (`name` in messages, `path` kept as Lesson::file): a lesson when
+// it has a [lesson] table, else a scenario (the WebAssembly module's run(), wasm/).
+Scene parse_scenario_text(const std::string& text, const std::string& name, const std::string& path,
+                          SceneView* view = nullptr, std::optional<Lesson>* lesson = nullptr);
 
 // `collide lessons`: a table (order, id, dimension, duration, title), or with json one object
 // per line: {"id": .., "order": .., "title": .., "section": .., "dimension": .., "duration": ..}.

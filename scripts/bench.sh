@@ -5,7 +5,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/install-deps.sh >/dev/null
-common=(-DCOLLIDE_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=Release)
+common=(-DCOLLIDE_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=Release -DCOLLIDE_WASM=OFF)
 scripts/build.sh -B build-bench "${common[@]}" -DCOLLIDE_NATIVE=OFF >/dev/null
 scripts/build.sh -B build-bench-native "${common[@]}" -DCOLLIDE_NATIVE=ON >/dev/null
 for dir in build-bench build-bench-native; do

@@ -36,6 +36,8 @@ develop=(
   llvm-14                           # llvm-symbolizer: file and line in sanitizer reports
   python3-pytest                    # the Python module's tests (tests/python)
   jupyter-nbconvert python3-ipykernel python3-matplotlib  # the example notebook, run in the tests
+  emscripten node-acorn             # the WebAssembly module collide-engine.js (wasm/; acorn for em++'s optimizer)
+  nodejs chromium                   # its tests: under Node and in headless Chromium (tests/wasm)
 )
 
 case ${1:-} in

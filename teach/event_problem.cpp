@@ -1,10 +1,12 @@
 #include "teach/event_problem.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <map>
 #include <utility>
 
 #include "engine/diagnostics.h"
+#include "teach/notation.h"
 
 namespace collide {
 
@@ -179,6 +181,35 @@ SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c) {
     p.a = solve_body(scene, c.a, c.before_a);
     p.b = solve_body(scene, c.b, c.before_b);
     return p;
+}
+
+template <int D>
+std::optional<PairCollision> find_pair_collision(const Recording<D>& rec, std::size_t a, std::size_t b, int order) {
+    int seen = 0;
+    for (std::size_t i = 0; i < rec.instants.size(); ++i) {
+        const auto& in = rec.instants[i];
+        std::size_t f = in.end, l = in.end;
+        for (std::size_t k = in.first; k < in.end; ++k) {
+            const auto& e = rec.events[k];
+            if ((e.a == a && e.b == b) || (e.a == b && e.b == a)) {
+                if (f == in.end) f = k;
+                l = k + 1;
+            }
+        }
+        if (f != in.end && ++seen == order) return PairCollision{i, f, l};
+    }
+    return std::nullopt;
+}
+template std::optional<PairCollision> find_pair_collision(const Recording<1>&, std::size_t, std::size_t, int);
+template std::optional<PairCollision> find_pair_collision(const Recording<2>&, std::size_t, std::size_t, int);
+template std::optional<PairCollision> find_pair_collision(const Recording<3>&, std::size_t, std::size_t, int);
+
+std::string world_note(const Scene& scene, const CollisionInstant& c, const Vec3& formula_impulse) {
+    const double scale = std::max({formula_impulse.norm(), c.impulse.norm(), 1e-300});
+    if ((formula_impulse - c.impulse).norm() <= 1e-6 * scale || scene.model == Model::page_listing) return "";
+    const int d = scene.dimension;
+    const std::string P = d == 1 ? notation::num_text(c.impulse.x()) : notation::vec(c.impulse, d).txt;
+    return "The world resolved several contact points here; its total impulse is P = " + P + " N\u00B7s";
 }
 
 }  // namespace collide

@@ -4,10 +4,12 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "scenario/solve_problem.h"
+#include "engine/record.h"
 #include "engine/scene.h"
 #include "engine/world.h"
 #include "engine/world1d.h"
@@ -56,5 +58,22 @@ CollisionInstant with_roles(const CollisionInstant& c, std::size_t a, std::size_
 // pair's restitution and friction (Scene::pair_restitution / pair_friction), the scene's
 // model; angular momentum about the origin.
 SolveProblem collision_problem(const Scene& scene, const CollisionInstant& c);
+
+// The `order`-th recorded instant (from 1) at which bodies a and b collide (either way round):
+// its index in rec.instants, and the range [first, end) of rec.events from that pair's first
+// event there to its last. nullopt when the recorded instants have no such collision. (A
+// lesson's [[figure]]: the figures of `collide render`, the site's Try-it panel.)
+struct PairCollision {
+    std::size_t instant = 0, first = 0, end = 0;
+};
+template <int D>
+std::optional<PairCollision> find_pair_collision(const Recording<D>& rec, std::size_t a, std::size_t b, int order);
+
+// What the worked example of collision `c` says beside the one-point formula's `solution`
+// when the world resolved several contact points at that instant (a face on a face, a
+// resting stack) and its total impulse differs: "The world resolved several contact points
+// here; its total impulse is P = ..."; "" otherwise. (The page's listing model is left
+// alone: its J is not what B receives, erratum 7, as its steps say.)
+std::string world_note(const Scene& scene, const CollisionInstant& c, const Vec3& formula_impulse);
 
 }  // namespace collide

@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
+#include "scenario/lesson.h"
 #include "teach/notation.h"
 #include "teach/solve.h"
 
@@ -180,6 +183,89 @@ std::string worked_html(const SolveProblem& P, const Solution& S, const std::str
     }
     if (!world_note.empty()) o << "<p class=\"note\">" << math(world_note) << "</p>\n";
     return o.str();
+}
+
+namespace {
+
+// The unit of a [[vary]] key, as a slider's label shows it ("" for a pure number).
+std::string vary_unit(const std::string& key) {
+    if (key == "mass") return "kg";
+    if (key == "v" || key == "speed") return "m/s";
+    if (key == "w") return "rad/s";
+    if (key == "angle") return "rad";
+    if (key == "position" || key == "x" || key == "length" || key == "width" || key == "height" ||
+        key == "radius" || key == "size")
+        return "m";
+    if (key == "inertia") return "kg m^2";
+    if (key == "duration" || key == "output_dt") return "s";
+    return "";
+}
+
+// A slider's label in our notation: "m of A (kg)", "e (the scene)".
+std::string vary_label(const LessonVary& v) {
+    static const char* const symbols[][2] = {{"mass", "m"}, {"v", "v"}, {"w", "ω"}, {"angle", "θ"},
+                                             {"restitution", "e"}, {"friction", "μ"}, {"position", "x"}};
+    std::string symbol = v.key;
+    for (const auto& s : symbols)
+        if (v.key == s[0]) symbol = s[1];
+    const std::string unit = vary_unit(v.key);
+    if (v.body == "scene") return symbol + (symbol == v.key ? "" : " (" + v.key + ")");
+    return symbol + " of " + v.body + (unit.empty() ? "" : " (" + unit + ")");
+}
+
+std::string number_attr(double x) {
+    std::ostringstream o;
+    o.precision(17);
+    o << x;
+    return o.str();
+}
+
+}  // namespace
+
+std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
+    const int d = L.scene.dimension;
+    std::ostringstream o;
+    o << "<section class=\"tryit noprint\" id=\"try-it\" aria-labelledby=\"tryit-heading\" data-fps=\"" << number_attr(fps)
+      << "\" data-dimension=\"" << d << "\">\n<h2 id=\"tryit-heading\">Try it</h2>\n"
+      << "<p class=\"note\">The same engine as the figures, compiled to WebAssembly and running in this page: "
+      << (L.vary.empty() ? "play the run frame by frame" : "move a slider and it runs the lesson again with your numbers")
+      << ", and works out the collision " << (L.figures.empty() ? "of the first impact" : "of the figure above")
+      << " step by step. Nothing is sent anywhere.</p>\n";
+    o << "<p class=\"tryit-status note\" role=\"status\">Loading the engine…</p>\n";
+    if (!L.vary.empty()) {
+        o << "<div class=\"tryit-inputs\" role=\"group\" aria-label=\"The lesson's inputs\">\n";
+        for (std::size_t k = 0; k < L.vary.size(); ++k) {
+            const LessonVary& v = L.vary[k];
+            const std::string id = "tryit-in-" + std::to_string(k + 1);
+            o << "<div class=\"tryit-input\"><label for=\"" << id << "\">" << math(vary_label(v)) << "</label>"
+              << "<input type=\"range\" id=\"" << id << "\" data-name=\"" << escape(v.name()) << "\" min=\""
+              << number_attr(v.lo) << "\" max=\"" << number_attr(v.hi) << "\" step=\"" << number_attr(v.step)
+              << "\" value=\"" << number_attr(v.lesson_value) << "\" data-lesson=\"" << number_attr(v.lesson_value)
+              << "\"><output for=\"" << id << "\">" << escape(notation::num_text(v.lesson_value)) << "</output></div>\n";
+        }
+        o << "<button type=\"button\" class=\"tryit-reset\">The lesson's values</button>\n</div>\n";
+    }
+    if (d < 3)
+        o << "<canvas class=\"tryit-scene\" width=\"960\" height=\"" << (d == 1 ? 300 : 480)
+          << "\" role=\"img\" aria-label=\"The run with these inputs\"></canvas>\n";
+    o << "<div class=\"player tryit-player\" role=\"group\" aria-label=\"Try-it playback\">\n"
+         "<button type=\"button\" data-act=\"play\">Play / pause</button>\n"
+         "<button type=\"button\" data-act=\"step\" aria-label=\"One frame forward\">step &#9654;</button>\n"
+         "<span class=\"speeds\">speed <button type=\"button\" data-rate=\"0.25\" aria-pressed=\"false\">0.25&times;</button>\n"
+         "<button type=\"button\" data-rate=\"1\" aria-pressed=\"true\">1&times;</button></span>\n"
+         "<span class=\"time\" aria-live=\"off\"></span>\n</div>\n";
+    o << "<canvas class=\"tryit-plot\" width=\"960\" height=\"220\" role=\"img\" aria-label=\"Energy against time\"></canvas>\n";
+    o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
+    o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
+         "<div class=\"tryit-worked\"></div></details>\n";
+    o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
+    o << "</section>\n";
+    return o.str();
+}
+
+std::string try_it_data_js(const Lesson& L, const std::string& palette) {
+    return "// The Try-it panel's data (teach/html.h try_it_data_js): the lesson's file and the figures' colours.\n"
+           "window.collideTryIt = {\"lesson\": " + nlohmann::json(L.source).dump() + ",\n\"palette\": " + palette + "};\n";
 }
 
 }  // namespace collide::html

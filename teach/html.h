@@ -8,6 +8,7 @@
 namespace collide {
 struct SolveProblem;
 struct Solution;
+struct Lesson;
 }  // namespace collide
 
 namespace collide::html {
@@ -35,5 +36,19 @@ struct Series {
 // faint red vertical lines at `collisions`, the largest and smallest values labelled.
 std::string svg_plot(const std::string& title, const std::vector<double>& t, const std::vector<Series>& series,
                      const std::vector<double>& collisions, double duration, const std::string& x_unit = "s");
+
+// The "Try it" panel of a lesson page (collide material, when the site has the WebAssembly
+// module collide-engine.js; README.md "The Try-it panel"): a slider for each of the lesson's
+// [[vary]] inputs (its range and step, set at the lesson's own value), a canvas that plays the
+// run (1D and 2D; 3D lessons: numbers and a plot only), play / pause / 0.25x / step, the
+// impulse, energy and momentum of the page's collision and its worked example, all recomputed
+// by the engine in the page (assets/site/try-it.js, with `root`collide-engine.js); `fps` is the
+// frames' rate. The data the script needs is try_it_data_js's, in the page's folder as
+// try-it-lesson.js. A query string such as ?A.mass=3 sets the inputs.
+std::string try_it_html(const Lesson& lesson, double fps, const std::string& root);
+// try-it-lesson.js: the lesson's file as text (the engine reads it as `collide` does) and the
+// figures' colours (`palette`, a JSON object: render/style.h), as `window.collideTryIt`. A
+// script rather than text in the page: a page opened from file:// cannot fetch a file.
+std::string try_it_data_js(const Lesson& lesson, const std::string& palette);
 
 }  // namespace collide::html

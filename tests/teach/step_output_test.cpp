@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/scene_file.h"
-#include "cli/step.h"
+#include "teach/step_output.h"
 
 namespace collide {
 namespace {

@@ -1,4 +1,4 @@
-#include "cli/step.h"
+#include "teach/step_output.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,209 @@
+// collide-engine.js: the engine as WebAssembly (embind), for the site's lesson pages and Node.
+// Each function calls what the command calls and returns what it prints, so the page and
+// `collide` cannot disagree (the Python module, python/module.cpp, does the same):
+//   solve_answer  collide solve --format json            (teach/solve.h write_json)
+//   run_answer    collide step --json, --events --json   (teach/step_output.h step_json: one run)
+//   lesson_answer a lesson page's Try-it panel: the lesson with the student's values
+//                 (lesson_with_values), run once (engine/record.h) at the page's frame rate,
+//                 its states and events as `collide step --json` prints them, its figure's
+//                 collision worked out (teach/event_problem.h, solve.h, html.h worked_html) as
+//                 `collide material` and `collide solve --format json` show it, and what the
+//                 page needs to draw the bodies
+// Each returns {ok, text}: the JSON, or the reader's message without a file name
+// ("LINE:COL: key: message"); api.js turns a refusal into a thrown Error.
+#include <exception>
+#include <map>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <emscripten/bind.h>
+#include <nlohmann/json.hpp>
+
+#include "scenario/input_error.h"
+#include "scenario/lesson.h"
+#include "scenario/solve_problem.h"
+#include "engine/record.h"
+#include "teach/event_problem.h"
+#include "teach/html.h"
+#include "teach/notation.h"
+#include "teach/solve.h"
+#include "teach/step_output.h"
+
+namespace collide {
+namespace {
+
+struct Answer {
+    bool ok = true;
+    std::string text;
+};
+
+// The name the readers are given; messages leave it out (the text came from no file).
+const char* const kTextName = "<text>";
+
+// Runs f, turning a refusal into the message `collide` prints after its file name.
+template <class F>
+Answer answering(F f) {
+    try {
+        return {true, f()};
+    } catch (const InputError& e) {
+        return {false, InputError::format("", e.pos(), e.key(), e.message())};
+    } catch (const std::exception& e) {
+        return {false, e.what()};
+    }
+}
+
+std::string join(const std::vector<std::string>& lines) {
+    std::string s = "[";
+    for (std::size_t k = 0; k < lines.size(); ++k) s += (k ? "," : "") + lines[k];
+    return s + "]";
+}
+
+Answer solve_answer(const std::string& text) {
+    return answering([&] {
+        const SolveProblem problem = parse_solve_text(text, kTextName);
+        std::ostringstream out;
+        write_json(problem, solve(problem), out);
+        return out.str();
+    });
+}
+
+Answer run_answer(const std::string& text) {
+    return answering([&] {
+        const StepJson run = step_json(parse_scenario_text(text, kTextName, ""));
+        return "{\"states\":" + join(run.states) + ",\"events\":" + join(run.events) + "}";
+    });
+}
+
+
+// ---- The Try-it panel ----
+
+using nlohmann::ordered_json;
+
+// What the page draws of each body: its name, whether it is static, its shape (1D: a block of
+// `length`; 2D: a disc's radius, a polygon's vertices in the body's frame, a half plane's
+// normal and offset; 3D: only the names, the page shows numbers and plots).
+ordered_json bodies_json(const Scene& scene) {
+    ordered_json out = ordered_json::array();
+    for (const SceneBody& b : scene.bodies) {
+        ordered_json j{{"name", b.name}, {"static", b.is_static()}, {"shape", b.shape}};
+        if (scene.dimension == 1) j["length"] = b.length;
+        if (scene.dimension == 2) {
+            const Shape2& s = b.shape2;
+            if (s.kind == Shape2::Kind::disc) {
+                j["kind"] = "disc";
+                j["radius"] = s.radius;
+            } else if (s.kind == Shape2::Kind::polygon) {
+                j["kind"] = "polygon";
+                ordered_json v = ordered_json::array();
+                for (int k = 0; k < s.polygon.count; ++k)
+                    v.push_back({s.polygon.vertices[k].x(), s.polygon.vertices[k].y()});
+                j["vertices"] = v;
+            } else {
+                j["kind"] = "half_plane";
+                j["normal"] = {s.normal.x(), s.normal.y()};
+                j["offset"] = s.offset;
+            }
+        }
+        out.push_back(j);
+    }
+    return out;
+}
+
+// The collision the lesson's page works out: its first [[figure]], else the run's first
+// collision (as `collide render` picks it, cli/render_cmd.cpp), with the figure's roles.
+template <int D>
+std::optional<CollisionInstant> page_collision(const Lesson& lesson, const Recording<D>& rec) {
+    if (rec.events.empty()) return std::nullopt;
+    std::size_t a = rec.events.front().a, b = rec.events.front().b;
+    int order = 1;
+    if (!lesson.figures.empty()) {
+        a = lesson.figures.front().ia;
+        b = lesson.figures.front().ib;
+        order = lesson.figures.front().collision;
+    }
+    const std::optional<PairCollision> c = find_pair_collision(rec, a, b, order);
+    if (!c) return std::nullopt;
+    return with_roles(collision_instant(rec.events[c->first]), a, b);
+}
+
+// `values`: a JSON object {"A.mass": 3, ...} (lesson_with_values' names); `fps`: the
+// page's frame rate (the states are sampled at 1/fps, as the site's frames).
+std::string lesson_json(const std::string& text, const std::string& values, double fps) {
+    const Lesson original = parse_lesson_text(text, kTextName, "");
+    std::map<std::string, double> changed;
+    const nlohmann::json v = nlohmann::json::parse(values.empty() ? "{}" : values);
+    if (!v.is_object()) throw InputError("", {}, "values", "expected an object {\"A.mass\": 3, ...}");
+    for (const auto& [name, x] : v.items()) {
+        if (!x.is_number()) throw InputError("", {}, name, "expected a number");
+        changed[name] = x.get<double>();
+    }
+    const Lesson lesson = changed.empty() ? original : lesson_with_values(original, changed);
+    const Scene& scene = lesson.scene;
+    if (!(fps > 0 && fps <= 1000)) throw InputError("", {}, "fps", "expected 0 < fps <= 1000");
+    Scene timing = scene;
+    timing.output_dt = 1.0 / fps;
+    RecordOptions options;
+    for (const LessonFigure& f : lesson.figures) options.keep.push_back({f.ia, f.ib, f.collision});
+    const AnyRecording any = record_any(scene, output_times(timing), options);
+
+    std::string states = "[", events = "[";
+    std::optional<CollisionInstant> collision;
+    std::visit([&](const auto& rec) {
+        for (std::size_t k = 0; k < rec.times.size(); ++k)
+            states += (k ? "," : "") + state_json(scene, rec.times[k], rec.states[k]);
+        const std::vector<bool> gains = energy_gains(scene, rec.events);
+        for (std::size_t k = 0; k < rec.events.size(); ++k)
+            events += (k ? "," : "") + event_json(scene, rec.events[k], gains[k]);
+        collision = page_collision(lesson, rec);
+    }, any);
+    states += "]";
+    events += "]";
+
+    ordered_json out;
+    out["dimension"] = scene.dimension;
+    out["duration"] = scene.duration;
+    out["gravity"] = {scene.gravity.x(), scene.gravity.y(), scene.gravity.z()};
+    out["bodies"] = bodies_json(scene);
+    ordered_json vary = ordered_json::array();
+    for (const LessonVary& w : original.vary)
+        vary.push_back({{"name", w.name()}, {"lo", w.lo}, {"hi", w.hi}, {"step", w.step}, {"value", w.lesson_value}});
+    out["vary"] = vary;
+    out["values"] = changed;
+    std::string worked = "null";
+    if (collision) {
+        const SolveProblem problem = collision_problem(scene, *collision);
+        const Solution solution = solve(problem);
+        std::ostringstream json;
+        write_json(problem, solution, json);
+        std::string html;
+        {
+            const notation::StudentNumbers student;  // as on the lesson page: 4 figures, no noise
+            html = html::worked_html(problem, solution, world_note(scene, *collision, solution.P));
+        }
+        ordered_json w{{"t", collision->t}, {"a", problem.a.name}, {"b", problem.b.name}, {"html", html}};
+        // The solve JSON as `collide solve --format json` prints it, spliced in unchanged.
+        worked = w.dump();
+        worked.pop_back();
+        worked += ",\"solve\":" + json.str() + "}";
+    }
+    std::string s = out.dump();
+    s.pop_back();
+    return s + ",\"worked\":" + worked + ",\"states\":" + states + ",\"events\":" + events + "}";
+}
+
+Answer lesson_answer(const std::string& text, const std::string& values, double fps) {
+    return answering([&] { return lesson_json(text, values, fps); });
+}
+
+}  // namespace
+}  // namespace collide
+
+EMSCRIPTEN_BINDINGS(collide_engine) {
+    using namespace emscripten;
+    value_object<collide::Answer>("Answer").field("ok", &collide::Answer::ok).field("text", &collide::Answer::text);
+    function("solve_answer", &collide::solve_answer);
+    function("run_answer", &collide::run_answer);
+    function("lesson_answer", &collide::lesson_answer);
+}
