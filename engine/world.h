@@ -214,10 +214,11 @@ public:
     static constexpr double kRestStep = 1e-3;   // s: longest substep while anything rests
     // s: the substeps of bodies moving freely without gravity (about four radii each) are at
     // most this long, and at least the shorter one (a body at an absurd speed cannot make a
-    // run millions of grid rebuilds; longer substeps only widen the swept boxes). Each
-    // substep's start looks for touching contacts (gaps under kTouch): the longer the
-    // substeps of slow bodies, the closer their impacts come to the exact instant.
-    static constexpr double kLongestSubstep = 1.0;
+    // run millions of grid rebuilds; longer substeps only widen the swept boxes). Not longer:
+    // a tumbling body's pose at a sample or a time-of-impact guess is integrated from the
+    // substep's start. Each substep's start takes gaps under kTouch for contact, so two bodies
+    // closing at speed u meet within kTouch / u of the exact instant.
+    static constexpr double kLongestSubstep = 0.01;
     static constexpr double kShortestSubstep = 1e-5;
     static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
     static constexpr std::uint64_t kMaxWorkPerInstant = 100000;   // predictions popped at one t

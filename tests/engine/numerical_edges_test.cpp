@@ -73,15 +73,16 @@ TEST(NumericalEdges, MassRatiosFromOneMillionthToOneMillion) {
 
 // ---- Near-zero approach speed and grazing contacts -------------------------------------------
 
-// Discs closing at 1e-9 m/s over a 1e-9 m gap: they meet at t = 1 s and, equal masses and
-// e = 1, exchange velocities exactly. Rectangles face to face closing at 1e-7 m/s (e = 0.5,
+// Discs closing at 1e-9 m/s over a 1e-9 m gap: they meet at t = 1 s (within kTouch / 1e-9 m/s
+// = 0.1 s: a substep that starts with them closer than kTouch takes them for touching) and,
+// equal masses and e = 1, exchange velocities exactly. Rectangles face to face closing at 1e-7 m/s (e = 0.5,
 // both corners at once): no spin, and the centres part at u_n' = -e u_n to 1e-12 of it.
 TEST(NumericalEdges, NearZeroApproachSpeed) {
     Scene s = empty_scene(2);
     s.bodies = {disc("a", 0.1, 1.0, Vec2(0, 0), Vec2(1e-9, 0)), disc("b", 0.1, 1.0, Vec2(0.2 + 1e-9, 0))};
     const auto e = run<2>(s, 2.0);
     ASSERT_EQ(e.size(), 1u);
-    EXPECT_NEAR(e[0].t, 1.0, 1e-6);
+    EXPECT_NEAR(e[0].t, 1.0, World2::kTouch / 1e-9);
     EXPECT_NEAR(e[0].after_a.v.x(), 0.0, 1e-21);
     EXPECT_NEAR(e[0].after_b.v.x(), 1e-9, 1e-21);
 
