@@ -508,12 +508,18 @@ private:
             const Vec3 c = after - before;
             return c.norm() <= 1e-9 * std::max(before.norm(), after.norm()) ? Vec3(Vec3::Zero()) : c;
         };
-        row("momentum", V(s.p_before), V(s.p_after), V(change(s.p_before, s.p_after)), "kg·m/s");
+        // And a total kept to round-off prints its after-value as its before-value: 0.37635 J
+        // kept is not "before 0.3764, after 0.3763, change 0".
+        const auto after = [&](const Vec3& before, const Vec3& after) {
+            return change(before, after).isZero(0.0) ? before : after;
+        };
+        row("momentum", V(s.p_before), V(after(s.p_before, s.p_after)), V(change(s.p_before, s.p_after)),
+            "kg·m/s");
         if (d >= 2)
-            row("angular momentum about o = " + vec(P.about, d).txt, W(s.L_before), W(s.L_after),
+            row("angular momentum about o = " + vec(P.about, d).txt, W(s.L_before), W(after(s.L_before, s.L_after)),
                 W(change(s.L_before, s.L_after)), "kg·m²/s");
         const double dke = change(Vec3(s.ke_before, 0, 0), Vec3(s.ke_after, 0, 0)).x();
-        row("kinetic energy", num(s.ke_before), num(s.ke_after), num(dke), "J");
+        row("kinetic energy", num(s.ke_before), num(dke == 0.0 ? s.ke_before : s.ke_after), num(dke), "J");
         std::vector<std::string> notes;
         if (s.ke_before > 0) {
             char percent[32];  // three significant figures: a reader's number
