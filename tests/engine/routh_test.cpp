@@ -90,6 +90,22 @@ double final_impulse(RestitutionLaw law, double e, double un0, double a1, double
 // stronge: W_r = (P_f - P_c)^2/(2m) = e^2 m vn^2/2 = -e^2 W_c). The slip
 // u_x = vt - 3 mu P_n/m stays positive when vt > 3 mu (1 + e) vn: one slip phase,
 // P = (-mu, 1)(1 + e) m vn.
+// A random 3D impact of the tests below: two random bodies touching at a random point, and a
+// random normal turned against their relative velocity there (u . n <= 0; the callers decide
+// how fast an approach they need). Draws the bodies, the point and the normal, in that order.
+struct RandomImpact3 {
+    ImpactBody3 a, b;
+    Vec3 n, u;  // u: the contact point's relative velocity
+};
+RandomImpact3 random_impact3(collide_test::Random& rng) {
+    const Body3 A = rng.body3(), B = rng.body3();
+    const Vec3 p = rng.vec3(-1, 1);
+    RandomImpact3 r{at_contact(A, p), at_contact(B, p), rng.unit3(), Vec3::Zero()};
+    r.u = relative_velocity(r.a, r.b);
+    if (r.u.dot(r.n) > 0.0) r.n = -r.n;
+    return r;
+}
+
 TEST(Routh, SlideThroughoutClosedForm2D) {
     const double m = 2.0, R = 0.3, vt = 3.0, vn = 2.0, e = 0.5, mu = 0.1;
     ImpactBody2 disc;
@@ -294,11 +310,9 @@ TEST(Routh, MuZeroIsFrictionlessForEveryLaw) {
             EXPECT_NEAR_ABS_REL(r.vb, f.vb, kAtol, kRtol);
             EXPECT_NEAR(r.wa, f.wa, kAtol + kRtol * std::abs(f.wa));
         }
-        const Body3 A = rng.body3(), B = rng.body3();
-        const Vec3 p = rng.vec3(-1, 1);
-        const ImpactBody3 a = at_contact(A, p), b = at_contact(B, p);
-        Vec3 n = rng.unit3();
-        if (relative_velocity(a, b).dot(n) > 0.0) n = -n;
+        const RandomImpact3 draw = random_impact3(rng);
+        const ImpactBody3 &a = draw.a, &b = draw.b;
+        const Vec3& n = draw.n;
         const Response3 f3 = frictionless(a, b, n, e);
         for (RestitutionLaw law : kLaws) {
             const Response3 r = routh(a, b, n, e, 0.0, law);
@@ -391,12 +405,9 @@ TEST(Routh, RandomRough3D) {
     collide_test::Random rng(605);
     int approaching = 0, stopped = 0;
     for (int i = 0; i < 3000; ++i) {
-        const Body3 A = rng.body3(), B = rng.body3();
-        const Vec3 p = rng.vec3(-1, 1);
-        const ImpactBody3 a = at_contact(A, p), b = at_contact(B, p);
-        Vec3 n = rng.unit3();
-        const Vec3 u = relative_velocity(a, b);
-        if (u.dot(n) > 0.0) n = -n;
+        const RandomImpact3 draw = random_impact3(rng);
+        const ImpactBody3 &a = draw.a, &b = draw.b;
+        const Vec3 &n = draw.n, &u = draw.u;
         if (!(u.dot(n) < 0.0)) continue;
         ++approaching;
         const double e = rng.uniform(0, 1), mu = rng.uniform(0, 1.5);
@@ -446,12 +457,9 @@ TEST(Routh, TurningSlip3DMatchesAFineIntegration) {
     collide_test::Random rng(611);
     int compared = 0, turned = 0;
     for (int i = 0; i < 200 && compared < 12; ++i) {
-        const Body3 A = rng.body3(), B = rng.body3();
-        const Vec3 p = rng.vec3(-1, 1);
-        const ImpactBody3 a = at_contact(A, p), b = at_contact(B, p);
-        Vec3 n = rng.unit3();
-        const Vec3 u0 = relative_velocity(a, b);
-        if (u0.dot(n) > 0.0) n = -n;
+        const RandomImpact3 draw = random_impact3(rng);
+        const ImpactBody3 &a = draw.a, &b = draw.b;
+        const Vec3 &n = draw.n, &u0 = draw.u;
         if (!(u0.dot(n) < -0.1 * u0.norm())) continue;
         const double e = rng.uniform(0.2, 1), mu = rng.uniform(0.05, 0.3);
         const Mat3 K = collision_matrix(a, b);
@@ -521,12 +529,9 @@ TEST(Routh, SlipEndInClosedFormMatchesATighterIntegration) {
     reference.closed_form_end = false;
     int stopped = 0, stopped_closed = 0, closed_one_phase = 0;
     for (int i = 0; i < 3000; ++i) {
-        const Body3 A = rng.body3(), B = rng.body3();
-        const Vec3 p = rng.vec3(-1, 1);
-        const ImpactBody3 a = at_contact(A, p), b = at_contact(B, p);
-        Vec3 n = rng.unit3();
-        const Vec3 u = relative_velocity(a, b);
-        if (u.dot(n) > 0.0) n = -n;
+        const RandomImpact3 draw = random_impact3(rng);
+        const ImpactBody3 &a = draw.a, &b = draw.b;
+        const Vec3 &n = draw.n, &u = draw.u;
         if (!(u.dot(n) < 0.0)) continue;
         const double e = rng.uniform(0, 1), mu = rng.uniform(0, 1.5);
         for (RestitutionLaw law : kLaws) {
