@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/rotation.h"
+
 namespace collide {
 
 namespace {
@@ -31,7 +33,10 @@ Vec2 to_local(const Vec2& x, const Vec2& cs, const Vec2& p) {
     return Vec2(cs.x() * d.x() + cs.y() * d.y(), -cs.y() * d.x() + cs.x() * d.y());
 }
 Vec3 to_local(const Vec3& x, const Quat& q_inv, const Vec3& p) { return q_inv * (p - x); }
-Vec2 frame_of(const Body2& b) { return Vec2(std::cos(b.angle), std::sin(b.angle)); }
+Vec2 frame_of(const Body2& b) {
+    const SinCos sc = sin_cos(b.angle);
+    return Vec2(sc.cos, sc.sin);
+}
 Quat frame_of(const Body3& b) { return b.orientation.conjugate(); }
 
 // The pseudo-velocities' correction of a pose over h (2D: angle; 3D: the small rotation w h).
@@ -42,7 +47,7 @@ void correct(Body2* b, const Vec2& dx, double dtheta) {
 void correct(Body3* b, const Vec3& dx, const Vec3& dtheta) {
     b->position += dx;
     const double angle = dtheta.norm();
-    if (angle > 0.0) b->orientation = (Quat(Eigen::AngleAxisd(angle, dtheta / angle)) * b->orientation).normalized();
+    if (angle > 0.0) b->orientation = (exp_map(dtheta) * b->orientation).normalized();
 }
 
 }  // namespace

@@ -11,6 +11,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include "engine/trig.h"
+
 namespace collide {
 
 using Vec2 = Eigen::Vector2d;
@@ -31,7 +33,10 @@ inline Vec3 lift(const Vec3& v) { return v; }
 inline Vec3 lift_spin(double w) { return Vec3(0.0, 0.0, w); }
 inline Vec3 lift_spin(const Vec3& w) { return w; }
 inline Vec3 lift_line(double x) { return Vec3(x, 0.0, 0.0); }
-inline Quat lift_angle(double angle) { return Quat(Eigen::AngleAxisd(angle, Vec3::UnitZ())); }
+inline Quat lift_angle(double angle) {
+    const SinCos half = sin_cos(0.5 * angle);
+    return Quat(half.cos, 0.0, 0.0, half.sin);
+}
 
 // Cross-product matrix [r]x, so that [r]x a = r x a.
 inline Mat3 skew(const Vec3& r) {

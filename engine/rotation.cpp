@@ -2,16 +2,11 @@
 
 #include <cmath>
 
+#include "engine/trig.h"
+
 namespace collide {
 
 namespace {
-
-// Rotation by the vector phi (axis phi/|phi|, angle |phi|) as a quaternion.
-Quat exp_map(const Vec3& phi) {
-    const double angle = phi.norm();
-    if (angle < 1e-300) return Quat::Identity();
-    return Quat(Eigen::AngleAxisd(angle, phi / angle));
-}
 
 // One implicit midpoint step of length h for (q, Lb):
 //   Lb' = Lb + h (Lm x Ib^-1 Lm),  Lm = (Lb + Lb')/2;  q' = q exp(h Ib^-1 Lm)
@@ -31,6 +26,16 @@ void midpoint_step(const Mat3& inv_Ib, double h, Quat* q, Vec3* Lb) {
 }
 
 }  // namespace
+
+// q = (cos(|phi|/2), sin(|phi|/2) phi/|phi|); the sine and cosine from engine/trig.h, so that
+// every build turns bodies alike to the last bit.
+Quat exp_map(const Vec3& phi) {
+    const double angle = phi.norm();
+    if (angle < 1e-300) return Quat::Identity();
+    const SinCos half = sin_cos(0.5 * angle);
+    const Vec3 v = (half.sin / angle) * phi;
+    return Quat(half.cos, v.x(), v.y(), v.z());
+}
 
 void rotate_free(Body3* body, double dt, const RotationSettings& settings) {
     if (body->is_static || dt == 0.0) return;

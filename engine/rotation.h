@@ -17,6 +17,9 @@ struct RotationSettings {
     double max_angle_per_step = 0.005;  // rad turned per substep (sets the substep count)
 };
 
+// The rotation by the vector phi (axis phi/|phi|, angle |phi| rad) as a unit quaternion.
+Quat exp_map(const Vec3& phi);
+
 // Turns the body for dt seconds with no torque: updates orientation and w (world frame).
 // Static bodies and bodies at rest are left alone.
 void rotate_free(Body3* body, double dt, const RotationSettings& settings = {});

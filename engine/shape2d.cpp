@@ -5,6 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
+#include "engine/trig.h"
+
 namespace collide {
 
 namespace {
@@ -12,7 +14,8 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
 Mat2 rotation(double angle) {
-    const double c = std::cos(angle), s = std::sin(angle);
+    const SinCos sc = sin_cos(angle);  // engine/trig.h: the same in every build
+    const double c = sc.cos, s = sc.sin;
     Mat2 R;
     R << c, -s, s, c;
     return R;

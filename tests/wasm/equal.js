@@ -3,19 +3,13 @@
 // lessons/scenes/), collide-engine.js's solve(text) and run(text) against `collide solve
 // --format json` and `collide step --json` / `--events --json`: the same keys in the same order,
 // the same strings and booleans, every number within 1e-12 relative (below 1 in SI units,
-// within 1e-12 absolute: a resting domino's round-off velocity of 4e-8 m/s differs in its
-// eighth digit), event times within 1e-12 s. And every malformed file of tests/bad-input/: the
+// within 1e-12 absolute), event times within 1e-12 s. And every malformed file of tests/bad-input/: the
 // module throws the command's message without its file name.
 //
-// Two 3D scenes are held to less (LOOSE below), and their largest differences are printed:
-// a tumbling box (47 contacts) and the tower (238), where the last-bit rounding of the C
-// libraries (emscripten's musl against glibc; most likely sin and cos of the rotations) grows
-// with every contact, to 9e-11 in the box's numbers and 3e-12 s in its event times. The
-// tower is held to 1e-12 up to its first impact (0.155 s, what lesson 21 asks about) and that
-// instant's events; after that its collapse is chaotic (stepped boxes on boxes): the last bits
-// grow to about 5e-3 m/s in velocities and the two runs record 236 and 237 collisions. There
-// only the sample instants are compared, and the largest difference is printed. Every 1D and
-// 2D scene and lesson and every collision file is held to 1e-12.
+// Both builds compute alike to the last bit (the engine's own sine and cosine, engine/trig.h;
+// Eigen's SIMD code off, engine/CMakeLists.txt), so even the tower's chaotic collapse (lesson
+// 21, stepped boxes on boxes) is the same run in both; the count of numbers that differ at all
+// is printed (0 expected; the test holds them to the tolerances above).
 //
 // Usage: node equal.js COLLIDE MODULE SOURCE_DIR
 'use strict';
@@ -29,13 +23,6 @@ if (!source) {
   process.exit(2);
 }
 const REL = 1e-12, TIME = 1e-12;
-// The scenes that drift beyond 1e-12 (above): each number within `abs` more, event times within
-// `time` s; still the same keys, states, events, bodies and pairs. A `chaotic` scene is held to
-// 1e-12 up to `until` s, and after it only its sample instants are compared.
-const LOOSE = {
-  'lessons/scenes/dropped-box-3d.toml': { abs: 1e-9, time: 1e-10 },
-  'lessons/21-tower.toml': { chaotic: true, until: 0.156 },
-};
 
 function tomlFiles(dir) {
   return fs.readdirSync(path.join(source, dir)).filter(f => f.endsWith('.toml')).sort().map(f => path.join(dir, f));
@@ -46,26 +33,25 @@ function cli(args) {
   return { code: r.status, out: r.stdout, err: r.stderr };
 }
 
-// The differences between two parsed JSON values, as "where: what" lines. `loose`: {abs, time}
-// for the scenes of LOOSE; `worst` collects the largest differences.
-function differences(a, b, where, out, key, loose, worst) {
+// The differences between two parsed JSON values, as "where: what" lines; `count` tallies the
+// numbers compared and those not bit-identical.
+function differences(a, b, where, out, key, count) {
   if (typeof a === 'number' && typeof b === 'number') {
     const d = Math.abs(a - b), time = key === 't' && where.startsWith('events');
-    const ok = time ? d <= (loose ? loose.time : TIME)
-                    : d <= REL * Math.max(Math.abs(a), Math.abs(b), 1) + (loose ? loose.abs : 0);
-    if (worst) worst[time ? 'time' : 'value'] = Math.max(worst[time ? 'time' : 'value'], d);
+    const ok = time ? d <= TIME : d <= REL * Math.max(Math.abs(a), Math.abs(b), 1);
+    if (count) { count.numbers++; if (!Object.is(a, b)) count.unequal++; }
     if (!ok) out.push(`${where}: ${a} (module) vs ${b} (collide), difference ${d}`);
     return;
   }
   if (Array.isArray(a) && Array.isArray(b)) {
     if (a.length !== b.length) { out.push(`${where}: ${a.length} entries (module) vs ${b.length} (collide)`); return; }
-    a.forEach((x, i) => differences(x, b[i], `${where}[${i}]`, out, key, loose, worst));
+    a.forEach((x, i) => differences(x, b[i], `${where}[${i}]`, out, key, count));
     return;
   }
   if (a && b && typeof a === 'object' && typeof b === 'object' && !Array.isArray(a) && !Array.isArray(b)) {
     const ka = Object.keys(a), kb = Object.keys(b);
     if (ka.join(',') !== kb.join(',')) { out.push(`${where}: keys ${ka} (module) vs ${kb} (collide)`); return; }
-    ka.forEach(k => differences(a[k], b[k], `${where}.${k}`, out, k, loose, worst));
+    ka.forEach(k => differences(a[k], b[k], `${where}.${k}`, out, k, count));
     return;
   }
   if (a !== b) out.push(`${where}: ${JSON.stringify(a)} (module) vs ${JSON.stringify(b)} (collide)`);
@@ -81,7 +67,7 @@ function fileLess(stderr, file) {
 function lines(text) { return text.split('\n').filter(l => l.trim() !== '').map(l => JSON.parse(l)); }
 
 require(path.resolve(modulePath))().then(m => {
-  let failures = 0, checked = { solve: 0, run: 0, states: 0, events: 0, errors: 0, both_refused: 0, both_accepted: 0 };
+  let failures = 0, count = { numbers: 0, unequal: 0 }, checked = { solve: 0, run: 0, states: 0, events: 0, errors: 0, both_refused: 0, both_accepted: 0 };
   const fail = (file, what) => { failures++; console.log(`FAIL ${file}: ${what}`); };
 
   // Collision files: solve(text) against `collide solve --format json`.
@@ -92,7 +78,7 @@ require(path.resolve(modulePath))().then(m => {
     let mine;
     try { mine = JSON.parse(m.solve(text)); } catch (e) { fail(rel, `solve threw: ${e.message}`); continue; }
     const diff = [];
-    differences(mine, JSON.parse(c.out), 'solve', diff, '');
+    differences(mine, JSON.parse(c.out), 'solve', diff, '', count);
     diff.slice(0, 5).forEach(d => fail(rel, d));
     checked.solve++;
   }
@@ -104,30 +90,10 @@ require(path.resolve(modulePath))().then(m => {
     if (states.code !== 0 || events.code !== 0) { fail(rel, `collide step failed: ${states.err}${events.err}`); continue; }
     let mine;
     try { mine = JSON.parse(m.run(text)); } catch (e) { fail(rel, `run threw: ${e.message}`); continue; }
-    const diff = [], loose = LOOSE[rel], worst = { value: 0, time: 0 };
+    const diff = [];
     differences(Object.keys(mine), ['states', 'events'], 'run', diff, '');
-    let ourStates = mine.states, theirStates = lines(states.out);
-    let ourEvents = mine.events, theirEvents = lines(events.out);
-    if (loose && loose.chaotic) {
-      // Exact up to `until`; after it the same sample instants, the rest printed.
-      const upTo = list => (Array.isArray(list) ? list.filter(x => x.t <= loose.until) : list);
-      const after = [], worstAfter = { value: 0, time: 0 };
-      const tail = list => list.filter(x => x.t > loose.until);
-      differences(tail(ourStates).map(x => x.t), tail(theirStates).map(x => x.t), 'states after', diff, '');
-      differences(tail(ourStates), tail(theirStates), 'states after', after, '', { abs: Infinity, time: Infinity },
-                  worstAfter);
-      console.log(`${rel}: held to 1e-12 up to ${loose.until} s (${upTo(theirStates).length} states, ` +
-                  `${upTo(theirEvents).length} events); after it (chaotic) ${tail(ourEvents).length} collisions ` +
-                  `(module) and ${tail(theirEvents).length} (collide), states differing by up to ` +
-                  `${worstAfter.value.toExponential(2)}`);
-      ourStates = upTo(ourStates); theirStates = upTo(theirStates);
-      ourEvents = upTo(ourEvents); theirEvents = upTo(theirEvents);
-    }
-    const strictLoose = loose && !loose.chaotic ? loose : undefined;
-    differences(ourStates, theirStates, 'states', diff, '', strictLoose, worst);
-    differences(ourEvents, theirEvents, 'events', diff, '', strictLoose, worst);
-    if (strictLoose) console.log(`${rel}: held to ${loose.abs} and ${loose.time} s (LOOSE): largest differences ` +
-                           `${worst.value.toExponential(2)}, event times ${worst.time.toExponential(2)} s`);
+    differences(mine.states, lines(states.out), 'states', diff, '', count);
+    differences(mine.events, lines(events.out), 'events', diff, '', count);
     diff.slice(0, 5).forEach(d => fail(rel, d));
     if (diff.length > 5) fail(rel, `... ${diff.length - 5} more differences`);
     checked.run++;
@@ -155,6 +121,7 @@ require(path.resolve(modulePath))().then(m => {
   console.log(`equal.js: ${checked.solve} collision files, ${checked.run} scenarios and lessons ` +
               `(${checked.states} states, ${checked.events} events), ${checked.errors} refusals with the same message ` +
               `(${checked.both_accepted} malformed lessons only \`collide render\` refuses: accepted by both); ` +
+              `${count.numbers} numbers compared, ${count.unequal} not bit-identical; ` +
               `${failures ? failures + ' FAILURES' : 'all equal'}`);
   process.exit(failures ? 1 : 0);
 }, e => { console.error(`equal.js: the module did not load: ${e}`); process.exit(1); });
