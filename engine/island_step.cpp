@@ -15,16 +15,9 @@ namespace {
 double inv_inertia(const Body2& b) { return b.inv_inertia(); }
 Mat3 inv_inertia(const Body3& b) { return b.is_static ? Mat3::Zero() : b.inv_inertia_world(); }
 
-// (r x n) I^-1 (r x n): a lever arm's share of 1 / (effective mass) along n.
-double turning_share(const Vec2& r, const Vec2& n, double inv_I) {
-    const double c = cross(r, n);
-    return c * c * inv_I;
-}
-double turning_share(const Vec3& r, const Vec3& n, const Mat3& inv_I) {
-    const Vec3 c = r.cross(n);
-    return c.dot(inv_I * c);
-}
-
+// The product of two spins (2D: numbers; 3D: vectors).
+double spin_dot(double a, double b) { return a * b; }
+double spin_dot(const Vec3& a, const Vec3& b) { return a.dot(b); }
 
 // A point in the body's own frame, from the frame kept in its slot (2D: the angle's cosine and
 // sine, found once per body and step; 3D: the inverse orientation).
@@ -82,21 +75,34 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
             if (slot_[i] < 0) add_slot(i, false);
     const std::size_t moving = members.size();
 
-    auto rel = [&](const Row& r) {
-        return Vec(s[r.sb].v + spin_cross(s[r.sb].w, r.rb) - (s[r.sa].v + spin_cross(s[r.sa].w, r.ra)));
+    // The relative velocity of a row's bodies along one of its axes (pseudo: of their
+    // pseudo-velocities), and an impulse p along it: +p on b, -p on a.
+    auto speed = [&](const Row& r, const Axis& x, bool pseudo) {
+        const Slot& A = s[r.sa];
+        const Slot& Bs = s[r.sb];
+        return pseudo ? (Bs.vp - A.vp).dot(x.d) + spin_dot(Bs.wp, x.rb_d) - spin_dot(A.wp, x.ra_d)
+                      : (Bs.v - A.v).dot(x.d) + spin_dot(Bs.w, x.rb_d) - spin_dot(A.w, x.ra_d);
     };
-    auto rel_pseudo = [&](const Row& r) {
-        const Vec u = s[r.sb].vp + spin_cross(s[r.sb].wp, r.rb) - (s[r.sa].vp + spin_cross(s[r.sa].wp, r.ra));
-        return u.dot(r.n);
-    };
-    // P on b, -P on a, into the velocities (pseudo = false) or the pseudo-velocities.
-    auto apply = [&](const Row& r, const Vec& P, bool pseudo) {
+    auto push = [&](const Row& r, const Axis& x, double p, bool pseudo) {
         Slot& A = s[r.sa];
         Slot& Bs = s[r.sb];
-        (pseudo ? A.vp : A.v) -= P * A.inv_m;
-        (pseudo ? A.wp : A.w) -= A.inv_I * lever(r.ra, P);
-        (pseudo ? Bs.vp : Bs.v) += P * Bs.inv_m;
-        (pseudo ? Bs.wp : Bs.w) += Bs.inv_I * lever(r.rb, P);
+        (pseudo ? A.vp : A.v) -= (p * A.inv_m) * x.d;
+        (pseudo ? A.wp : A.w) -= p * x.turn_a;
+        (pseudo ? Bs.vp : Bs.v) += (p * Bs.inv_m) * x.d;
+        (pseudo ? Bs.wp : Bs.w) += p * x.turn_b;
+    };
+    auto axis = [&](const Row& r, const Vec& d, const Vec& ra, const Vec& rb) {
+        const Slot& A = s[r.sa];
+        const Slot& Bs = s[r.sb];
+        Axis x;
+        x.d = d;
+        x.ra_d = lever(ra, d);
+        x.rb_d = lever(rb, d);
+        x.turn_a = A.inv_I * x.ra_d;  // (inv_I is 0 for a body that does not move)
+        x.turn_b = Bs.inv_I * x.rb_d;
+        const double k = A.inv_m + Bs.inv_m + spin_dot(x.ra_d, x.turn_a) + spin_dot(x.rb_d, x.turn_b);
+        x.mass = k > 0.0 ? 1.0 / k : 0.0;
+        return x;
     };
 
     // Rows, their goals from the velocities before the step, and last step's impulses.
@@ -130,25 +136,16 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
             r.k = k;
             r.sa = sa;
             r.sb = sb;
-            r.n = c.m.normal;
-            r.ra = c.m.points[k] - A.x;
-            r.rb = c.m.points[k] - Bs.x;
+            const Vec ra = c.m.points[k] - A.x, rb = c.m.points[k] - Bs.x;
+            r.n = axis(r, c.m.normal, ra, rb);
             r.depth = c.m.depths[k];
             r.mu = c.mu;
-            double kn = A.inv_m + Bs.inv_m;
-            if (a_moves) kn += turning_share(r.ra, r.n, A.inv_I);
-            if (b_moves) kn += turning_share(r.rb, r.n, Bs.inv_I);
-            r.mn = kn > 0.0 ? 1.0 / kn : 0.0;
             if (r.mu != 0.0) {
-                r.nt = tangents(r.n, &r.t);
-                for (int q = 0; q < r.nt; ++q) {
-                    double kt = A.inv_m + Bs.inv_m;
-                    if (a_moves) kt += turning_share(r.ra, r.t[q], A.inv_I);
-                    if (b_moves) kt += turning_share(r.rb, r.t[q], Bs.inv_I);
-                    r.mt[q] = kt > 0.0 ? 1.0 / kt : 0.0;
-                }
+                std::array<Vec, 2> t;
+                r.nt = tangents(c.m.normal, &t);
+                for (int q = 0; q < r.nt; ++q) r.t[q] = axis(r, t[q], ra, rb);
             }
-            const double un = rel(r).dot(r.n);
+            const double un = speed(r, r.n, false);
             c.approach = std::min(c.approach, un);
             const double gap = std::max(r.depth, 0.0);
             r.target = -gap / h;
@@ -169,7 +166,7 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
                 }
                 if (best >= 0) {
                     r.lam = before->lam[best];
-                    for (int q = 0; q < r.nt; ++q) r.lam_t[q] = before->lam_t[best].dot(r.t[q]);
+                    for (int q = 0; q < r.nt; ++q) r.lam_t[q] = before->lam_t[best].dot(r.t[q].d);
                 }
             }
             rows.push_back(r);
@@ -180,17 +177,15 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
     for (std::size_t q = 0; q < moving; ++q)
         if (s[q].inv_m > 0.0) s[q].v += h * g;
     for (const Row& r : rows) {
-        Vec P = r.lam * r.n;
-        for (int q = 0; q < r.nt; ++q) P += r.lam_t[q] * r.t[q];
-        apply(r, P, false);
+        push(r, r.n, r.lam, false);
+        for (int q = 0; q < r.nt; ++q) push(r, r.t[q], r.lam_t[q], false);
     }
 
     // Velocity sweeps: friction (within the cone of the present normal impulse), then normal.
     auto solve = [&](Row& r) {
         if (r.nt > 0) {
-            const Vec u = rel(r);
             std::array<double, 2> want{};
-            for (int q = 0; q < r.nt; ++q) want[q] = r.lam_t[q] - r.mt[q] * u.dot(r.t[q]);
+            for (int q = 0; q < r.nt; ++q) want[q] = r.lam_t[q] - r.t[q].mass * speed(r, r.t[q], false);
             if (r.mu >= 0.0) {
                 const double limit = r.mu * r.lam;
                 const double size = std::sqrt(want[0] * want[0] + want[1] * want[1]);
@@ -200,16 +195,14 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
                     want[1] *= scale;
                 }
             }
-            Vec P = zero<Vec>();
             for (int q = 0; q < r.nt; ++q) {
-                P += (want[q] - r.lam_t[q]) * r.t[q];
+                push(r, r.t[q], want[q] - r.lam_t[q], false);
                 r.lam_t[q] = want[q];
             }
-            apply(r, P, false);
         }
-        const double un = rel(r).dot(r.n);
-        const double lam = std::max(0.0, r.lam + r.mn * (r.target - un));
-        apply(r, (lam - r.lam) * r.n, false);
+        const double un = speed(r, r.n, false);
+        const double lam = std::max(0.0, r.lam + r.n.mass * (r.target - un));
+        push(r, r.n, lam - r.lam, false);
         r.lam = lam;
     };
     for (int sweep = 0; sweep < kVelocitySweeps; ++sweep)
@@ -224,8 +217,8 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
     for (int sweep = 0; sweep < kPositionSweeps; ++sweep)
         for (Row& r : rows) {
             const double goal = kBeta * std::max(0.0, -(r.depth + kSlop)) / h;
-            const double lam = std::max(0.0, r.lam_p + r.mn * (goal - rel_pseudo(r)));
-            apply(r, (lam - r.lam_p) * r.n, true);
+            const double lam = std::max(0.0, r.lam_p + r.n.mass * (goal - speed(r, r.n, true)));
+            push(r, r.n, lam - r.lam_p, true);
             r.lam_p = lam;
         }
 
@@ -237,8 +230,8 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
     }
     for (const Row& r : rows) {
         StepContact<D>& c = (*contacts)[r.c];
-        Vec P = r.lam * r.n;
-        for (int q = 0; q < r.nt; ++q) P += r.lam_t[q] * r.t[q];
+        Vec P = r.lam * r.n.d;
+        for (int q = 0; q < r.nt; ++q) P += r.lam_t[q] * r.t[q].d;
         c.impulse += P;
         c.weight += r.lam;
         c.moment += r.lam * c.m.points[r.k];
@@ -246,7 +239,7 @@ void IslandStepper<D>::step(std::vector<StepContact<D>>* contacts, const std::ve
         if (saved.count == Space<D>::kMaxPoints) continue;  // (a pair is listed once)
         saved.anchor[saved.count] = to_local(s[r.sa].x, s[r.sa].frame, c.m.points[r.k]);
         saved.lam[saved.count] = r.lam;
-        saved.lam_t[saved.count] = P - r.lam * r.n;
+        saved.lam_t[saved.count] = P - r.lam * r.n.d;
         ++saved.count;
     }
     for (std::size_t q = 0; q < moving; ++q) {

@@ -85,15 +85,25 @@ private:
         Vec x = Vec::Zero();                        // position at the step's start
         Frame frame{};                              // where a world point sits on the body
     };
+    // One direction of a point's impulse (its normal or a tangent), worked out once per step so
+    // that a sweep costs a few dot products: d; the moments r x d of the lever arms; what a unit
+    // impulse along d does to each body's spin, I^-1 (r x d) (0 for a body that does not move);
+    // and the effective mass along d, 1 / (1/ma + 1/mb + (ra x d).Ia^-1(ra x d) + the same of b).
+    // Then the relative velocity along d is (vb - va).d + wb.(rb x d) - wa.(ra x d), and an
+    // impulse p d on b (-p d on a) adds p/mb d to vb and p Ib^-1(rb x d) to wb.
+    struct Axis {
+        Vec d = Vec::Zero();
+        Spin ra_d = zero<Spin>(), rb_d = zero<Spin>();   // ra x d, rb x d
+        Spin turn_a = zero<Spin>(), turn_b = zero<Spin>();  // Ia^-1 (ra x d), Ib^-1 (rb x d)
+        double mass = 0.0;
+    };
     struct Row {  // one contact point
         std::size_t c = 0;
         int k = 0;
         int sa = 0, sb = 0;  // slots
-        Vec ra = Vec::Zero(), rb = Vec::Zero(), n = Vec::Zero();
-        std::array<Vec, 2> t = {Vec::Zero(), Vec::Zero()};
+        Axis n;
+        std::array<Axis, 2> t;
         int nt = 0;
-        double mn = 0.0;
-        std::array<double, 2> mt{};
         double target = 0.0;   // normal velocity goal
         double depth = 0.0;    // signed separation at the step's start
         double mu = 0.0;
