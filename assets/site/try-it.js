@@ -96,7 +96,7 @@
     var changed = Object.keys(values);
     status.textContent = (changed.length ? 'With ' + changed.map(function (k) { return k + ' = ' + num(values[k]); }).join(', ')
                                           : 'With the lesson\u2019s own values') +
-                         ': answered by the engine in ' + ms.toFixed(0) + ' ms.';
+                         ': answered by the engine in ' + (ms < 1 ? 'under 1' : ms.toFixed(0)) + ' ms.';
     prepare();
     frame = Math.min(frame, run.states.length - 1);
     showNumbers();
