@@ -258,6 +258,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
 
     // Collisions: r vectors, the normal, the impulses, the contact point.
     std::vector<std::size_t> role_a, role_b;
+    std::vector<bool> labelled(n, false);  // bodies with a velocity, spin or impulse label
     if (decor.impacts) {
         for (const ImpactMark& im : frame.impacts) {
             if (im.a >= n || im.b >= n) continue;
@@ -315,6 +316,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          im.point + Vec3(kP.x(), kP.y(), 0), components(on_b, dim), c.impulse);
                 pending.insert(pending.begin(), {k, tip, unit(tip - p), "P = " + format_number(shown) + " N s",
                                                  {shown}, c.impulse, false});
+                labelled[im.a] = labelled[im.b] = true;
             }
             Annotation dot;
             dot.kind = Mark::contact;
@@ -335,6 +337,8 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
             spins.push_back(std::abs(frame.bodies[i].w.z()));
         }
         const double speed_floor = motion_label_floor(speeds), spin_floor = motion_label_floor(spins);
+        const std::size_t budget = motion_label_budget(speeds.size());
+        std::size_t speed_labels = 0, spin_labels = 0;
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
             const BodyState& s = frame.bodies[i];
@@ -345,9 +349,12 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          components(s.v, dim), c.velocity);
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
-                if (motion_labelled(xy(s.v).norm(), speed_floor))
+                if (motion_labelled(xy(s.v).norm(), speed_floor) && speed_labels < budget) {
                     pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
                                        {shown}, c.velocity, false});
+                    ++speed_labels;
+                    labelled[i] = true;
+                }
             }
             const double w = s.w.z();
             if (max_spin_ > 0 && std::abs(w) > 1e-9 * max_spin_ && std::abs(w) > 1e-9) {
@@ -363,9 +370,12 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.colour = c.spin;
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
-                if (motion_labelled(std::abs(w), spin_floor))
+                if (motion_labelled(std::abs(w), spin_floor) && spin_labels < budget) {
                     pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
                                        "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
+                    ++spin_labels;
+                    labelled[i] = true;
+                }
             }
         }
     }
@@ -519,7 +529,11 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         const ImVec2 d = unit(q - p), side = ImVec2(-d.y, d.x) * style_.px(4.0f);
         labels->avoid({p + side, q + side, q - side, p - side});
     }
-    // Body names: inside the body when they fit, else above it.
+    // Body names: inside the body when they fit, else above it (with many bodies only on those
+    // with a label: kManyBodies).
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < n; ++i) moving += !scene_.bodies[i].is_static() && decor.in_focus(i);
+    const bool many = moving > kManyBodies;
     for (std::size_t i = 0; i < n; ++i) {
         if (kind(i) == Kind::plane || kind(i) == Kind::none) continue;
         // At a single collision the bodies are tagged a and b, as in the formulas.
@@ -551,7 +565,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                     ? above
                                     : below);
             fixed_label(body_item[i], ImVec2(std::round(at.x), std::round(at.y)), name, c.ink, true);
-        } else {
+        } else if (!many || labelled[i]) {
             pending.push_back({body_item[i], ImVec2(centre.x, s_lo.y), ImVec2(0, -1), name,
                                {}, c.ink, true});
         }

@@ -72,6 +72,17 @@ constexpr std::size_t kFewBodies = 4;
 constexpr std::size_t kQuietBodies = 8;
 constexpr double kShownMotionFraction = 0.1;
 constexpr std::size_t kMaxMotionLabels = 6;
+// How many velocity (or spin) labels a frame of `moving` moving bodies gets at most: every one
+// that motion_labelled() admits up to kQuietBodies, else kMaxMotionLabels (in scene order among
+// equals: a bin's 100 boxes falling together all have the sixth largest speed).
+inline std::size_t motion_label_budget(std::size_t moving) {
+    return moving > kQuietBodies ? kMaxMotionLabels : moving;
+}
+// With more than kManyBodies moving bodies (a bin of boxes) a body's name is shown only where
+// it fits inside the body, or where the body carries a velocity, spin or impulse label (which
+// body that number is about): a name beside each of 100 boxes buries the frame, and the data
+// table names the bodies that move most. A row of 15 dominoes keeps every name.
+constexpr std::size_t kManyBodies = 20;
 // The smallest speed (or spin) labelled in a frame whose moving bodies' speeds (or spins) are
 // `sizes`: 0 (every one) for up to kFewBodies of them; else kShownMotionFraction of the
 // largest, and beyond kQuietBodies at least the kMaxMotionLabels-th largest.

@@ -236,6 +236,12 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         spins.push_back(frame.bodies[i].w.norm());
     }
     const double speed_floor = motion_label_floor(speeds), spin_floor = motion_label_floor(spins);
+    const std::size_t budget = motion_label_budget(speeds.size());
+    std::size_t speed_labels = 0, spin_labels = 0;
+    std::vector<bool> labelled(n, false);  // bodies with a velocity, spin or impulse label
+    const auto label_body = [&](int body) {
+        if (body >= 0 && static_cast<std::size_t>(body) < n) labelled[static_cast<std::size_t>(body)] = true;
+    };
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         const int of = static_cast<int>(k);
@@ -245,6 +251,7 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
             if (!a.faint) {
                 const double P = norm_of(a.value);
                 impacts.push_back({of, tip, toward(p, tip), "P = " + format_number(P) + " N s", {P}, c.impulse, false});
+                label_body(a.body);
             }
             break;
         case Mark::normal:
@@ -257,17 +264,23 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::velocity: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double v = norm_of(a.value);
-            if (motion_labelled(v, speed_floor))
+            if (motion_labelled(v, speed_floor) && speed_labels < budget) {
                 motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
                                   c.velocity, false});
+                ++speed_labels;
+                label_body(a.body);
+            }
             break;
         }
         case Mark::spin: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double w = norm_of(a.value);
-            if (motion_labelled(w, spin_floor))
+            if (motion_labelled(w, spin_floor) && spin_labels < budget) {
                 motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
                                   c.spin, false});
+                ++spin_labels;
+                label_body(a.body);
+            }
             break;
         }
         default:
@@ -284,10 +297,12 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     for (const Annotation& a : items)
         if (a.kind == Mark::body) middle += cam.project(a.from).x, ++named;
     if (named > 0) middle /= static_cast<float>(named);
+    const bool many = speeds.size() > kManyBodies;  // names only on labelled bodies (kManyBodies)
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         if (a.kind != Mark::body) continue;
         const std::size_t i = static_cast<std::size_t>(a.body);
+        if (many && !labelled[i]) continue;
         const ImVec2 centre = cam.project(a.from);
         const float side = centre.x < middle - 0.5f ? -1.0f : 1.0f;
         ImVec2 edge = centre;  // the outline's extreme point on that side, at the centre's height

@@ -117,5 +117,19 @@ TEST(MotionLabels, FourBodiesAreAllLabelledMoreOnlyTheLargest) {
     EXPECT_FALSE(motion_labelled(3.9, 4.0));
 }
 
+// Beyond eight moving bodies at most six labels of a kind, also when many bodies share the
+// sixth largest value (a bin's boxes falling together): every one of them passes the floor.
+TEST(MotionLabels, ManyEqualValuesGetSixLabelsAtMost) {
+    EXPECT_EQ(motion_label_budget(3), 3u);
+    EXPECT_EQ(motion_label_budget(kQuietBodies), kQuietBodies);
+    EXPECT_EQ(motion_label_budget(kQuietBodies + 1), kMaxMotionLabels);
+    const std::vector<double> falling(100, 2.94);
+    const double floor = motion_label_floor(falling);
+    std::size_t labels = 0;
+    for (double v : falling)
+        if (motion_labelled(v, floor) && labels < motion_label_budget(falling.size())) ++labels;
+    EXPECT_EQ(labels, kMaxMotionLabels);
+}
+
 }  // namespace
 }  // namespace collide::render
