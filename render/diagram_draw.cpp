@@ -328,19 +328,23 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         }
     }
 
-    // Velocities and spins (labelled as motion_labelled() says).
+    // Velocities and spins (labelled as motion_labels() says).
     if (decor.velocities) {
         std::vector<double> speeds, spins;
+        std::vector<bool> in_impact(n, false), first;
+        for (const ImpactMark& im : frame.impacts)
+            if (im.a < n && im.b < n) in_impact[im.a] = in_impact[im.b] = true;
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
             speeds.push_back(xy(frame.bodies[i].v).norm());
             spins.push_back(std::abs(frame.bodies[i].w.z()));
+            first.push_back(in_impact[i]);
         }
-        const double speed_floor = motion_label_floor(speeds), spin_floor = motion_label_floor(spins);
-        const std::size_t budget = motion_label_budget(speeds.size());
-        std::size_t speed_labels = 0, spin_labels = 0;
+        const std::vector<bool> speed_label = motion_labels(speeds, first), spin_label = motion_labels(spins, first);
+        std::size_t m = 0;  // the body's entry in speeds and spins
         for (std::size_t i = 0; i < n; ++i) {
             if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
+            const std::size_t entry = m++;
             const BodyState& s = frame.bodies[i];
             const ImVec2 from = to_screen(s.x);
             const ImVec2 tip = to_screen(s.x + k_velocity_ * s.v);
@@ -349,10 +353,9 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          components(s.v, dim), c.velocity);
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
-                if (motion_labelled(xy(s.v).norm(), speed_floor) && speed_labels < budget) {
+                if (speed_label[entry]) {
                     pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
                                        {shown}, c.velocity, false});
-                    ++speed_labels;
                     labelled[i] = true;
                 }
             }
@@ -370,10 +373,9 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.colour = c.spin;
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
-                if (motion_labelled(std::abs(w), spin_floor) && spin_labels < budget) {
+                if (spin_label[entry]) {
                     pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
                                        "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
-                    ++spin_labels;
                     labelled[i] = true;
                 }
             }

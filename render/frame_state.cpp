@@ -73,6 +73,26 @@ double motion_label_floor(std::vector<double> sizes) {
     return sizes.size() <= kQuietBodies ? fraction : std::max(fraction, sizes[kMaxMotionLabels - 1]);
 }
 
+std::vector<bool> motion_labels(const std::vector<double>& sizes, const std::vector<bool>& first) {
+    const double floor = motion_label_floor(sizes);
+    std::vector<std::size_t> order(sizes.size());
+    for (std::size_t k = 0; k < order.size(); ++k) order[k] = k;
+    const auto is_first = [&](std::size_t k) { return k < first.size() && first[k]; };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        if (is_first(a) != is_first(b)) return is_first(a);
+        return sizes[a] > sizes[b];
+    });
+    std::vector<bool> out(sizes.size(), false);
+    std::size_t given = 0;
+    const std::size_t budget = motion_label_budget(sizes.size());
+    for (std::size_t k : order)
+        if (given < budget && motion_labelled(sizes[k], floor)) {
+            out[k] = true;
+            ++given;
+        }
+    return out;
+}
+
 TableRows table_rows(const std::vector<std::size_t>& moving, const std::vector<double>& kinetic,
                      const FrameState& frame, std::size_t rows) {
     TableRows out;

@@ -78,6 +78,11 @@ constexpr std::size_t kMaxMotionLabels = 6;
 inline std::size_t motion_label_budget(std::size_t moving) {
     return moving > kQuietBodies ? kMaxMotionLabels : moving;
 }
+// Which moving bodies get a velocity (or spin) label: `sizes` their speeds (or spins) and
+// `first` the bodies of the frame's collisions, one entry each, in scene order. Those that
+// motion_labelled() admits, at most motion_label_budget() of them: the bodies of a collision
+// first, then the largest, in scene order among equals.
+std::vector<bool> motion_labels(const std::vector<double>& sizes, const std::vector<bool>& first);
 // With more than kManyBodies moving bodies (a bin of boxes) a body's name is shown only where
 // it fits inside the body, or where the body carries a velocity, spin or impulse label (which
 // body that number is about): a name beside each of 100 boxes buries the frame, and the data

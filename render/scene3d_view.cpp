@@ -228,16 +228,24 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     // Impacts first (each impulse, its normal, its r vectors), then velocities and spins, then
     // the names, as before the list existed.
     std::vector<LabelRequest> impacts, motion;
-    // Velocity and spin labels as motion_labelled() says.
+    // Velocity and spin labels as motion_labels() says.
     std::vector<double> speeds, spins;
+    std::vector<bool> in_impact(n, false), first;
+    std::vector<long> entry(n, -1);  // a body's entry in speeds and spins
+    for (const ImpactMark& im : frame.impacts)
+        if (im.a < n && im.b < n) in_impact[im.a] = in_impact[im.b] = true;
     for (std::size_t i = 0; i < n; ++i) {
         if (I.scene.bodies[i].is_static() || !I.solids.bodies[i].drawn() || !decor.in_focus(i)) continue;
+        entry[i] = static_cast<long>(speeds.size());
         speeds.push_back(frame.bodies[i].v.norm());
         spins.push_back(frame.bodies[i].w.norm());
+        first.push_back(in_impact[i]);
     }
-    const double speed_floor = motion_label_floor(speeds), spin_floor = motion_label_floor(spins);
-    const std::size_t budget = motion_label_budget(speeds.size());
-    std::size_t speed_labels = 0, spin_labels = 0;
+    const std::vector<bool> speed_label = motion_labels(speeds, first), spin_label = motion_labels(spins, first);
+    const auto gets = [&](const std::vector<bool>& label, int body) {
+        return body >= 0 && static_cast<std::size_t>(body) < n && entry[static_cast<std::size_t>(body)] >= 0 &&
+               label[static_cast<std::size_t>(entry[static_cast<std::size_t>(body)])];
+    };
     std::vector<bool> labelled(n, false);  // bodies with a velocity, spin or impulse label
     const auto label_body = [&](int body) {
         if (body >= 0 && static_cast<std::size_t>(body) < n) labelled[static_cast<std::size_t>(body)] = true;
@@ -264,10 +272,9 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::velocity: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double v = norm_of(a.value);
-            if (motion_labelled(v, speed_floor) && speed_labels < budget) {
+            if (gets(speed_label, a.body)) {
                 motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
                                   c.velocity, false});
-                ++speed_labels;
                 label_body(a.body);
             }
             break;
@@ -275,10 +282,9 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::spin: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double w = norm_of(a.value);
-            if (motion_labelled(w, spin_floor) && spin_labels < budget) {
+            if (gets(spin_label, a.body)) {
                 motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
                                   c.spin, false});
-                ++spin_labels;
                 label_body(a.body);
             }
             break;

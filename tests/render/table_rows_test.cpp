@@ -117,18 +117,31 @@ TEST(MotionLabels, FourBodiesAreAllLabelledMoreOnlyTheLargest) {
     EXPECT_FALSE(motion_labelled(3.9, 4.0));
 }
 
-// Beyond eight moving bodies at most six labels of a kind, also when many bodies share the
-// sixth largest value (a bin's boxes falling together): every one of them passes the floor.
-TEST(MotionLabels, ManyEqualValuesGetSixLabelsAtMost) {
+// Beyond eight moving bodies at most six labels of a kind, also when many share a value (a
+// bin's boxes falling together all equal the sixth largest): a collision's bodies first, then
+// the largest, in scene order among equals.
+TEST(MotionLabels, ACollisionsBodiesFirstThenTheLargestAtMostSix) {
     EXPECT_EQ(motion_label_budget(3), 3u);
     EXPECT_EQ(motion_label_budget(kQuietBodies), kQuietBodies);
     EXPECT_EQ(motion_label_budget(kQuietBodies + 1), kMaxMotionLabels);
+    const auto chosen = [](const std::vector<bool>& labels) {
+        std::vector<std::size_t> out;
+        for (std::size_t k = 0; k < labels.size(); ++k)
+            if (labels[k]) out.push_back(k);
+        return out;
+    };
     const std::vector<double> falling(100, 2.94);
-    const double floor = motion_label_floor(falling);
-    std::size_t labels = 0;
-    for (double v : falling)
-        if (motion_labelled(v, floor) && labels < motion_label_budget(falling.size())) ++labels;
-    EXPECT_EQ(labels, kMaxMotionLabels);
+    std::vector<bool> first(100, false);
+    EXPECT_EQ(chosen(motion_labels(falling, first)), (std::vector<std::size_t>{0, 1, 2, 3, 4, 5}));
+    first[57] = first[93] = true;  // the pair of the frame's collision
+    EXPECT_EQ(chosen(motion_labels(falling, first)), (std::vector<std::size_t>{0, 1, 2, 3, 57, 93}));
+    // Distinct values: the largest six; a collision's body below the floor stays unlabelled.
+    std::vector<double> speeds = {0.5, 9, 1, 8, 2, 7, 3, 6, 4, 5, 0.01};
+    std::vector<bool> in(11, false);
+    in[10] = true;
+    EXPECT_EQ(chosen(motion_labels(speeds, in)), (std::vector<std::size_t>{1, 3, 5, 7, 8, 9}));
+    // Up to four bodies every one, at rest too.
+    EXPECT_EQ(chosen(motion_labels({0.0, 1.0, 0.001}, {})), (std::vector<std::size_t>{0, 1, 2}));
 }
 
 }  // namespace
