@@ -39,8 +39,7 @@ void correct(Body2* b, const Vec2& dx, double dtheta) {
 }
 void correct(Body3* b, const Vec3& dx, const Vec3& dtheta) {
     b->position += dx;
-    const double angle = dtheta.norm();
-    if (angle > 0.0) b->orientation = (exp_map(dtheta) * b->orientation).normalized();
+    if (dtheta.squaredNorm() > 0.0) b->orientation = (exp_map(dtheta) * b->orientation).normalized();
 }
 
 }  // namespace

@@ -53,8 +53,7 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
     const double h = dt / n;
     for (int k = 0; k < n; ++k) {
         const Vec3 phi = (b->w + alpha * ((k + 0.5) * h)) * h;
-        const double angle = phi.norm();
-        if (angle > 0.0) b->orientation = (exp_map(phi) * b->orientation).normalized();
+        if (phi.squaredNorm() > 0.0) b->orientation = (exp_map(phi) * b->orientation).normalized();
     }
     b->w += alpha * dt;
 }
