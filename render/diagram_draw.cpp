@@ -330,21 +330,12 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
 
     // Velocities and spins (labelled as motion_labels() says).
     if (decor.velocities) {
-        std::vector<double> speeds, spins;
-        std::vector<bool> in_impact(n, false), first;
-        for (const ImpactMark& im : frame.impacts)
-            if (im.a < n && im.b < n) in_impact[im.a] = in_impact[im.b] = true;
+        // (A 2D body's |v| and |ω| are those of its 3D form: z and the in-plane spin are 0.)
+        std::vector<bool> counted(n, false);
+        for (std::size_t i = 0; i < n; ++i) counted[i] = !scene_.bodies[i].is_static() && decor.in_focus(i);
+        const FrameMotionLabels labels_of = motion_labels(frame, counted);
         for (std::size_t i = 0; i < n; ++i) {
-            if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
-            speeds.push_back(xy(frame.bodies[i].v).norm());
-            spins.push_back(std::abs(frame.bodies[i].w.z()));
-            first.push_back(in_impact[i]);
-        }
-        const std::vector<bool> speed_label = motion_labels(speeds, first), spin_label = motion_labels(spins, first);
-        std::size_t m = 0;  // the body's entry in speeds and spins
-        for (std::size_t i = 0; i < n; ++i) {
-            if (scene_.bodies[i].is_static() || !decor.in_focus(i)) continue;
-            const std::size_t entry = m++;
+            if (!counted[i]) continue;
             const BodyState& s = frame.bodies[i];
             const ImVec2 from = to_screen(s.x);
             const ImVec2 tip = to_screen(s.x + k_velocity_ * s.v);
@@ -353,7 +344,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                                          components(s.v, dim), c.velocity);
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
-                if (speed_label[entry]) {
+                if (labels_of.speed[i]) {
                     pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
                                        {shown}, c.velocity, false});
                     labelled[i] = true;
@@ -373,7 +364,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.colour = c.spin;
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
-                if (spin_label[entry]) {
+                if (labels_of.spin[i]) {
                     pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
                                        "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
                     labelled[i] = true;

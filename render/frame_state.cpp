@@ -93,6 +93,32 @@ std::vector<bool> motion_labels(const std::vector<double>& sizes, const std::vec
     return out;
 }
 
+FrameMotionLabels motion_labels(const FrameState& frame, const std::vector<bool>& counted) {
+    const std::size_t n = std::min(frame.bodies.size(), counted.size());
+    std::vector<bool> in_impact(n, false), first;
+    for (const ImpactMark& im : frame.impacts)
+        if (im.a < n && im.b < n) in_impact[im.a] = in_impact[im.b] = true;
+    std::vector<double> speeds, spins;
+    for (std::size_t i = 0; i < n; ++i)
+        if (counted[i]) {
+            speeds.push_back(frame.bodies[i].v.norm());
+            spins.push_back(frame.bodies[i].w.norm());
+            first.push_back(in_impact[i]);
+        }
+    const std::vector<bool> speed = motion_labels(speeds, first), spin = motion_labels(spins, first);
+    FrameMotionLabels out;
+    out.speed.assign(n, false);
+    out.spin.assign(n, false);
+    out.count = speeds.size();
+    for (std::size_t i = 0, k = 0; i < n; ++i)
+        if (counted[i]) {
+            out.speed[i] = speed[k];
+            out.spin[i] = spin[k];
+            ++k;
+        }
+    return out;
+}
+
 TableRows table_rows(const std::vector<std::size_t>& moving, const std::vector<double>& kinetic,
                      const FrameState& frame, std::size_t rows) {
     TableRows out;

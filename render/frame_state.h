@@ -83,6 +83,14 @@ inline std::size_t motion_label_budget(std::size_t moving) {
 // motion_labelled() admits, at most motion_label_budget() of them: the bodies of a collision
 // first, then the largest, in scene order among equals.
 std::vector<bool> motion_labels(const std::vector<double>& sizes, const std::vector<bool>& first);
+// The same for a frame, by scene index: which of the `counted` bodies (the moving ones a view
+// draws) get a velocity label and which a spin label, from their |v| and |ω|, the bodies of
+// the frame's collisions first. `count`: how many bodies were counted.
+struct FrameMotionLabels {
+    std::vector<bool> speed, spin;
+    std::size_t count = 0;
+};
+FrameMotionLabels motion_labels(const FrameState& frame, const std::vector<bool>& counted);
 // With more than kManyBodies moving bodies (a bin of boxes) a body's name is shown only where
 // it fits inside the body, or where the body carries a velocity, spin or impulse label (which
 // body that number is about): a name beside each of 100 boxes buries the frame, and the data

@@ -229,22 +229,12 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     // the names, as before the list existed.
     std::vector<LabelRequest> impacts, motion;
     // Velocity and spin labels as motion_labels() says.
-    std::vector<double> speeds, spins;
-    std::vector<bool> in_impact(n, false), first;
-    std::vector<long> entry(n, -1);  // a body's entry in speeds and spins
-    for (const ImpactMark& im : frame.impacts)
-        if (im.a < n && im.b < n) in_impact[im.a] = in_impact[im.b] = true;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (I.scene.bodies[i].is_static() || !I.solids.bodies[i].drawn() || !decor.in_focus(i)) continue;
-        entry[i] = static_cast<long>(speeds.size());
-        speeds.push_back(frame.bodies[i].v.norm());
-        spins.push_back(frame.bodies[i].w.norm());
-        first.push_back(in_impact[i]);
-    }
-    const std::vector<bool> speed_label = motion_labels(speeds, first), spin_label = motion_labels(spins, first);
+    std::vector<bool> counted(n, false);
+    for (std::size_t i = 0; i < n; ++i)
+        counted[i] = !I.scene.bodies[i].is_static() && I.solids.bodies[i].drawn() && decor.in_focus(i);
+    const FrameMotionLabels labels_of = motion_labels(frame, counted);
     const auto gets = [&](const std::vector<bool>& label, int body) {
-        return body >= 0 && static_cast<std::size_t>(body) < n && entry[static_cast<std::size_t>(body)] >= 0 &&
-               label[static_cast<std::size_t>(entry[static_cast<std::size_t>(body)])];
+        return body >= 0 && static_cast<std::size_t>(body) < label.size() && label[static_cast<std::size_t>(body)];
     };
     std::vector<bool> labelled(n, false);  // bodies with a velocity, spin or impulse label
     const auto label_body = [&](int body) {
@@ -272,7 +262,7 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::velocity: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double v = norm_of(a.value);
-            if (gets(speed_label, a.body)) {
+            if (gets(labels_of.speed, a.body)) {
                 motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
                                   c.velocity, false});
                 label_body(a.body);
@@ -282,7 +272,7 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         case Mark::spin: {
             const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
             const double w = norm_of(a.value);
-            if (gets(spin_label, a.body)) {
+            if (gets(labels_of.spin, a.body)) {
                 motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
                                   c.spin, false});
                 label_body(a.body);
@@ -303,7 +293,7 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     for (const Annotation& a : items)
         if (a.kind == Mark::body) middle += cam.project(a.from).x, ++named;
     if (named > 0) middle /= static_cast<float>(named);
-    const bool many = speeds.size() > kManyBodies;  // names only on labelled bodies (kManyBodies)
+    const bool many = labels_of.count > kManyBodies;  // names only on labelled bodies (kManyBodies)
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         if (a.kind != Mark::body) continue;
