@@ -16,6 +16,7 @@
 #include "scenario/toml_reader.h"
 #include "compare/box2d_world.h"
 #include "compare/match.h"
+#include "cli/exit_code.h"
 #include "engine/world.h"
 
 namespace collide {
@@ -27,7 +28,7 @@ using compare::Box2DEvent;
 using compare::Comparison;
 using Velocity = Event2::Velocity;
 
-constexpr int kBadInput = 2;
+constexpr int kBadInput = cli::kExitBadInput;
 constexpr double kMaxSteps = 1e8;  // Box2D steps a run may take
 
 // ---- Input ----
@@ -320,7 +321,7 @@ std::string check_options(const CompareOptions& o, const Scene& scene) {
 }  // namespace
 
 int run_compare(const CompareOptions& options, std::ostream& out, std::ostream& err) {
-    try {
+    return cli::run_command(err, [&] {
         const Scene scene = read_scene(options.file);
         const std::string bad = check_options(options, scene);
         if (!bad.empty()) {
@@ -339,16 +340,7 @@ int run_compare(const CompareOptions& options, std::ostream& out, std::ostream& 
         else write_text(run, options.file, text);
         out << text.str() << std::flush;
         return 0;
-    } catch (const InputError& e) {
-        err << "collide: error: " << e.what() << "\n";
-        return kBadInput;
-    } catch (const std::runtime_error& e) {
-        err << "collide: " << e.what() << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        err << "collide: internal error: " << e.what() << "\n";
-        return 1;
-    }
+    });
 }
 
 }  // namespace collide

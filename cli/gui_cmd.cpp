@@ -11,22 +11,20 @@
 #include <string>
 #include <vector>
 
-#include "cli/gui_model.h"
+#include "present/gui_model.h"
 #include "scenario/input_error.h"
 #include "scenario/lesson.h"
-#include "cli/figures.h"
-#include "cli/render_cmd.h"
-#include "cli/render_request.h"
+#include "present/figures.h"
+#include "present/frame_spec.h"
+#include "present/render_job.h"
 #include "render/png.h"
 #include "render/renderer.h"
 #include "render/window.h"
 
 #ifdef COLLIDE_HAVE_GLFW
-#define GLFW_INCLUDE_NONE
-#include <GLFW/glfw3.h>
 #include <imgui.h>
-#include <backends/imgui_impl_glfw.h>
-#include <backends/imgui_impl_opengl3.h>
+
+#include "render/window_controls.h"
 #endif
 
 namespace collide {
@@ -108,7 +106,8 @@ public:
     const std::optional<Lesson>& lesson() const { return lesson_; }
     const render::RenderSettings& settings() const { return settings_; }
     const std::vector<std::uint8_t>& rgba() const { return rgba_; }
-    GLuint texture() const { return texture_; }
+    // The frame as the window shows it, behind the controls.
+    void draw_frame_behind() const { image_.draw_behind(settings_.width, settings_.height); }
 
     // Takes a re-run that has finished (the edits run on the model's worker), its frames or its
     // error; true when there was one (the renderer then follows the run shown).
@@ -160,17 +159,9 @@ public:
     // Draws the frame at the playback time when something changed, into the texture.
     void update_frame() {
         if (!dirty_ && shown_index_ == model_->index()) return;
-        const render::Gl& gl = window_.gl();
         rgba_.resize(static_cast<std::size_t>(settings_.width) * settings_.height * 4);
         renderer_->render(model_->display_frame(), toggles_.decor, rgba_.data());
-        if (!texture_) gl.GenTextures(1, &texture_);
-        gl.BindTexture(GL_TEXTURE_2D, texture_);
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // pixel for pixel
-        gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, settings_.width, settings_.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                      rgba_.data());
-        gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+        image_.upload(settings_.width, settings_.height, rgba_.data());
         shown_index_ = model_->index();
         dirty_ = false;
     }
@@ -185,14 +176,10 @@ public:
     bool save_figure(const std::string& path) {
         const std::optional<render::Image> figure =
             first_collision_figure(window_, model_->shown_scene(), view_, settings_, model_->run());
-        window_.gl().BindFramebuffer(GL_FRAMEBUFFER, 0);
+        window_.use_default_framebuffer();
         if (!figure) return false;
         render::write_png_atomic(path, figure->width, figure->height, figure->rgba.data());
         return true;
-    }
-
-    ~Session() {
-        if (texture_) window_.gl().DeleteTextures(1, &texture_);
     }
 
 private:
@@ -208,36 +195,9 @@ private:
     render::RenderSettings settings_;
     std::unique_ptr<render::Renderer> renderer_;
     std::vector<std::uint8_t> rgba_;
-    GLuint texture_ = 0;
+    render::WindowImage image_{window_};
     bool dirty_ = true;
     std::size_t shown_index_ = static_cast<std::size_t>(-1);
-};
-
-// The Dear ImGui context of the controls, with the prebuilt GLFW and OpenGL 3 backends (the
-// frames' own ImGui context lives in the renderer).
-class Controls {
-public:
-    explicit Controls(render::Window& window) {
-        context_ = ImGui::CreateContext();
-        ImGui::SetCurrentContext(context_);
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.Fonts->AddFontFromFileTTF("/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", 15.0f, nullptr, kUiGlyphs);
-        ImGui::StyleColorsLight();
-        ImGui::GetStyle().WindowRounding = 0.0f;
-        ImGui_ImplGlfw_InitForOpenGL(window.handle(), true);
-        ImGui_ImplOpenGL3_Init("#version 330 core");
-    }
-    ~Controls() {
-        ImGui::SetCurrentContext(context_);
-        ImGui_ImplOpenGL3_Shutdown();
-        ImGui_ImplGlfw_Shutdown();
-        ImGui::DestroyContext(context_);
-    }
-    void make_current() { ImGui::SetCurrentContext(context_); }
-
-private:
-    ImGuiContext* context_ = nullptr;
 };
 
 struct Ui {
@@ -475,7 +435,7 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
     }
 
     try {
-        Controls controls(*window);
+        render::WindowControls controls(*window, 15.0f, kUiGlyphs);
         auto session = std::make_unique<Session>(*window, frame, o.scenario);
         controls.make_current();
         Ui ui;
@@ -487,8 +447,8 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
         while (!quit && !window->should_close()) {
             controls.make_current();
             const bool scripted = next_action < script.size();
-            if (scripted || session->model().playing) glfwPollEvents();
-            else glfwWaitEventsTimeout(session->model().running() ? 1.0 / 30 : 0.1);  // the progress bar moves
+            // Waiting for events, the progress bar of a re-run still moves.
+            controls.poll_events(scripted || session->model().playing ? 0.0 : session->model().running() ? 1.0 / 30 : 0.1);
             session->poll();  // a re-run that has finished replaces the frames
             const auto now = std::chrono::steady_clock::now();
             session->model().advance(std::chrono::duration<double>(now - last).count());
@@ -524,25 +484,23 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
 
             // Keys (when no text field has them).
             controls.make_current();
-            ImGui_ImplOpenGL3_NewFrame();
-            ImGui_ImplGlfw_NewFrame();
-            ImGui::NewFrame();
+            controls.begin_frame();
             GuiModel& m = session->model();
             if (!ImGui::GetIO().WantCaptureKeyboard) {
                 if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space))) m.playing = !m.playing;
                 if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) m.step(1);
                 if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) m.step(-1);
                 if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home))) m.seek_index(0);
-                if (ImGui::IsKeyPressed(GLFW_KEY_N) && !m.next_collision()) ui.status = "no collision after this frame";
-                if (ImGui::IsKeyPressed(GLFW_KEY_S)) {
+                if (controls.letter_pressed('N') && !m.next_collision()) ui.status = "no collision after this frame";
+                if (controls.letter_pressed('S')) {
                     ui.speed = (ui.speed + 1) % IM_ARRAYSIZE(kSpeedValues);
                     m.speed = kSpeedValues[ui.speed];
                 }
-                if (ImGui::IsKeyPressed(GLFW_KEY_R)) m.reset();
-                if (ImGui::IsKeyPressed(GLFW_KEY_F)) ui.status = "save-frame";
-                if (ImGui::IsKeyPressed(GLFW_KEY_G)) ui.status = "save-figure";
-                if (ImGui::IsKeyPressed(GLFW_KEY_H)) ui.help = !ui.help;
-                if (ImGui::IsKeyPressed(GLFW_KEY_Q) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) quit = true;
+                if (controls.letter_pressed('R')) m.reset();
+                if (controls.letter_pressed('F')) ui.status = "save-frame";
+                if (controls.letter_pressed('G')) ui.status = "save-figure";
+                if (controls.letter_pressed('H')) ui.help = !ui.help;
+                if (controls.letter_pressed('Q') || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) quit = true;
             }
 
             // The 3D view's camera: drag to orbit, wheel to zoom, over the frame.
@@ -556,23 +514,16 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
             // The frame, drawn by the renderer (its own ImGui context), shown pixel for pixel.
             session->update_frame();
             controls.make_current();
-            ImGui::GetBackgroundDrawList()->AddImage(
-                reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(session->texture())), ImVec2(0, 0),
-                ImVec2(static_cast<float>(frame_w), static_cast<float>(frame_h)));
+            session->draw_frame_behind();
             if (window_h > frame_h) draw_keys(ui, session->perspective(), frame_h, frame_w, window_h - frame_h);
             std::string switch_to;
             if (draw_panel(*session, ui, frame_w, window_h, lesson_ids, &switch_to, &quit))
                 session->rebuild_renderer();
-            ImGui::Render();
-            int fb_w = 0, fb_h = 0;
-            window->framebuffer_size(&fb_w, &fb_h);
-            const render::Gl& gl = window->gl();
-            gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-            gl.Viewport(0, 0, fb_w, fb_h);
-            gl.ClearColor(0.93f, 0.93f, 0.91f, 1.0f);
-            gl.Clear(GL_COLOR_BUFFER_BIT);
-            ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+            const float background[4] = {0.93f, 0.93f, 0.91f, 1.0f};
+            controls.end_frame(background);
             if (!screenshot.empty()) {
+                int fb_w = 0, fb_h = 0;
+                window->framebuffer_size(&fb_w, &fb_h);
                 std::vector<std::uint8_t> pixels(static_cast<std::size_t>(fb_w) * fb_h * 4);
                 window->read_back_buffer(fb_w, fb_h, pixels.data());
                 render::write_png_atomic(screenshot, fb_w, fb_h, pixels.data());

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "cli/compare_cmd.h"
+#include "cli/exit_code.h"
 #include "cli/gui_cmd.h"
 #include "scenario/input_error.h"
 #include "cli/interactive.h"
@@ -20,7 +21,7 @@
 
 namespace {
 
-constexpr int kBadInput = 2;
+constexpr int kBadInput = collide::cli::kExitBadInput;
 
 int run_solve(const std::string& file, const std::string& format, const std::string& model) {
     collide::SolveProblem problem = collide::parse_solve_file(file);
@@ -258,7 +259,7 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? 0 : kBadInput;
     }
-    try {
+    return collide::cli::run_command(std::cerr, [&] {
         if (*solve) return run_solve(file, format, model);
         if (*compare) return collide::run_compare(compare_options, std::cout, std::cerr);
         if (*step) {
@@ -285,15 +286,6 @@ int main(int argc, char** argv) {
             std::cout << out.str() << std::flush;
             return 0;
         }
-    } catch (const collide::InputError& e) {
-        std::cerr << "collide: error: " << e.what() << "\n";
-        return kBadInput;
-    } catch (const std::runtime_error& e) {
-        std::cerr << "collide: " << e.what() << "\n";
-        return 1;
-    } catch (const std::exception& e) {
-        std::cerr << "collide: internal error: " << e.what() << "\n";
-        return 1;
-    }
-    return 0;
+        return 0;
+    });
 }

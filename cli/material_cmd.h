@@ -1,20 +1,6 @@
 // `collide material -o DIR [LESSON ...]`: a self-contained static HTML site of lessons that
-// works offline (README.md, "collide material"):
-//   DIR/index.html             every lesson with a thumbnail, its section and dimension
-//   DIR/style.css              one stylesheet, with print rules
-//   DIR/ID/index.html          a lesson: goals, explanation, its predictions ("Before you
-//                              watch"), the before / at / after figure, the animation, the
-//                              predictions checked, the worked example (formula, then
-//                              numbers), a table of the first collision, plots of energy and
-//                              momentum against time (SVG), questions with answers that open
-//                              on click (printed: a space to write in, or the teacher's copy)
-//                              and, when the WebAssembly module is built, a Try-it panel
-//                              (teach/html.h try_it_html)
-//   DIR/ID/...                 everything `collide render ID` writes (frames, data, Markdown)
-//   DIR/collide-engine.js      the WebAssembly module (engine_js_path), and the panels'
-//   DIR/try-it.js              script (assets/site/try-it.js), DIR/ID/try-it-lesson.js the
-//                              lesson for it (try_it_data_js): only when the module is built
-// The site is built in a temporary directory beside DIR and renamed into place at the end:
+// works offline (docs/commands/material.md; present/site.h lists its files). The site is built
+// in a temporary directory beside DIR and renamed into place at the end (present/staged_dir.h):
 // DIR is complete or untouched.
 #pragma once
 

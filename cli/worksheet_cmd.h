@@ -1,14 +1,8 @@
 // `collide worksheet LESSON... -o DIR [--students N] [--seed S] [--force]`: printable
-// worksheets where every student has their own numbers (README.md, "collide worksheet").
-// For one lesson, in DIR (for several, in DIR/ID/ each, with DIR/index.html linking them):
-//   sheets.html   one page per student: title, "Student K", name and class blanks, the givens
-//                 with the student's numbers, the questions with a blank, unit and tolerance
-//   key.html      the answer key: each student's values, answers and worked example
-//   key.json      {"lesson": ID, "seed": S, "students": [{"student": 1, "values": {...},
-//                 "answers": [{"question": 1, "quantity": .., "value": .., "unit": ..}]}]}
-//   sheets.pdf, key.pdf   when weasyprint is on $PATH
-// The same seed gives byte-identical HTML and JSON. Built beside DIR and renamed into place:
-// DIR is complete or untouched.
+// worksheets where every student has their own numbers (docs/commands/worksheet.md). For one
+// lesson the files of present/worksheets.h in DIR; for several, in DIR/ID/ each, with
+// DIR/index.html linking them. The same seed gives byte-identical HTML and JSON. Built beside
+// DIR and renamed into place: DIR is complete or untouched.
 #pragma once
 
 #include <cstdint>

@@ -2,7 +2,7 @@
 // command calls and returns what it prints, so Python and `collide` cannot disagree:
 //   solve_json      collide solve --format json          (teach/solve.h write_json)
 //   run_json        collide step --json, --events --json (teach/step_output.h step_json: one run)
-//   figure_png      collide render's figure.png          (cli/render_cmd.h figure_png)
+//   figure_png      collide render's figure.png          (present/render_job.h figure_png)
 // python/collide/__init__.py turns the JSON into dicts and NumPy arrays. A scene or a
 // collision comes as a file name (or a lesson id) or as a dict with the file's tables, read
 // here into a TOML table. Bad input raises ValueError with the command's message (file, line,
@@ -18,8 +18,8 @@
 #include <pybind11/stl.h>
 #include <toml++/toml.h>
 
-#include "cli/render_cmd.h"
-#include "cli/render_request.h"
+#include "present/frame_spec.h"
+#include "present/render_job.h"
 #include "teach/step_output.h"
 #include "scenario/input_error.h"
 #include "scenario/lesson.h"
@@ -147,20 +147,21 @@ std::optional<py::bytes> figure_png_bytes(const py::object& source, const std::s
                                           const std::string& size, const std::string& view, const std::string& quality,
                                           const std::string& backend, double fps) {
     RenderSource scene = render_source(source, installed);
-    const RenderRequest request = translating([&] {
-        RenderOptions o;
-        o.out_dir = "-";  // nothing is written: the figure comes back in memory
-        o.size = size;
-        o.view = view;
-        o.quality = quality;
-        o.backend = backend;
-        o.fps = fps;
-        return parse_render_request(o);
+    // Read in the order the command reads them (cli/render_options.cpp): the first wrong one is named.
+    FrameSpec frame;
+    render::GlBackend gl = render::GlBackend::osmesa;
+    translating([&] {
+        read_render_size(size, &frame.width, &frame.height);
+        frame.fps = read_fps(fps);
+        frame.quality = read_quality(quality);
+        frame.view = read_view(view);
+        gl = read_backend(backend);
+        return 0;
     });
     std::optional<std::vector<std::uint8_t>> png;
     {
         py::gil_scoped_release unlocked;
-        png = translating([&] { return figure_png(request, std::move(scene)); });
+        png = translating([&] { return figure_png(frame, gl, std::move(scene)); });
     }
     if (!png) return std::nullopt;
     return py::bytes(reinterpret_cast<const char*>(png->data()), png->size());

@@ -27,6 +27,8 @@ public:
     // The default framebuffer's size in pixels (may differ from the window's on HiDPI screens).
     void framebuffer_size(int* width, int* height) const;
     void swap();
+    // Draws into the window again (after an offscreen target of the same context was bound).
+    void use_default_framebuffer();
     // Reads the default framebuffer's back buffer (what the next swap shows) as RGBA, top row first.
     void read_back_buffer(int width, int height, unsigned char* rgba);
 

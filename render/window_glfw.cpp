@@ -64,6 +64,7 @@ bool Window::should_close() const { return glfwWindowShouldClose(window_) != 0; 
 void Window::close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 void Window::framebuffer_size(int* width, int* height) const { glfwGetFramebufferSize(window_, width, height); }
 void Window::swap() { glfwSwapBuffers(window_); }
+void Window::use_default_framebuffer() { gl_.BindFramebuffer(GL_FRAMEBUFFER, 0); }
 
 void Window::read_back_buffer(int width, int height, unsigned char* rgba) {
     gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
@@ -87,6 +88,7 @@ bool Window::should_close() const { return true; }
 void Window::close() {}
 void Window::framebuffer_size(int* width, int* height) const { *width = *height = 0; }
 void Window::swap() {}
+void Window::use_default_framebuffer() {}
 void Window::read_back_buffer(int, int, unsigned char*) {}
 
 std::string window_support() {

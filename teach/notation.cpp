@@ -127,6 +127,18 @@ std::string num_answer(double x) {
     return buf;
 }
 
+std::string sig_text(double x, int digits) {
+    if (std::abs(x) < 1e-12) return "0";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    return true_minus(buf);
+}
+
+std::string true_minus(std::string s) {
+    if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
+    return s;
+}
+
 std::string num_data(double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.10g", x);

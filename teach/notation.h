@@ -33,6 +33,11 @@ std::string num_text(double x);
 // An answer for students: 4 significant digits ("-0" shown as "0"). Full precision stays in
 // the data files and in key.json.
 std::string num_answer(double x);
+// A number in running text for students (the site's sentences, a worksheet key): `digits`
+// significant figures (printf %.Ng), "0" for |x| < 1e-12, a true minus sign (U+2212).
+std::string sig_text(double x, int digits);
+// A leading '-' as a true minus sign (U+2212): numbers set in running text.
+std::string true_minus(std::string s);
 // Ten significant digits (printf %.10g, "-0" kept): the data files (data.csv, events.csv)
 // and numbers quoted back in messages.
 std::string num_data(double x);

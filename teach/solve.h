@@ -53,11 +53,12 @@ struct Solution {
 Solution solve(const SolveProblem& problem);
 
 // The worked example as steps in the text notation (what `collide solve` prints): a title
-// (often the formula), lines (formula, then the numbers substituted), notes (prose).
+// (a name, often with the formula), the formula as its own field (a figure's overlay shows it), lines (formula, then the numbers substituted), notes (prose).
 // `response` marks the steps of the response model itself (denominator and impulse, the
 // friction cone, ...), which a figure can show alone.
 struct WorkedStep {
-    std::string title;
+    std::string title;    // its name, then its formula after two spaces when it has one
+    std::string formula;  // that formula alone ("j = ..."), or ""
     std::vector<std::string> lines;
     std::vector<std::string> notes;
     bool response = false;

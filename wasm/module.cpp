@@ -4,11 +4,13 @@
 //   solve_answer  collide solve --format json            (teach/solve.h write_json)
 //   run_answer    collide step --json, --events --json   (teach/step_output.h step_json: one run)
 //   lesson_answer a lesson page's Try-it panel: the lesson with the student's values
-//                 (lesson_with_values), run once (engine/record.h) at the page's frame rate,
-//                 its states and events as `collide step --json` prints them, its figure's
-//                 collision worked out (teach/event_problem.h, solve.h, html.h worked_html) as
-//                 `collide material` and `collide solve --format json` show it, and what the
-//                 page needs to draw the bodies
+//                 (lesson_with_values), run once (engine/record.h) at the page's frame rate
+//                 (present/frame_times.h, as the site's frames), its states and events as
+//                 `collide step --json` prints them, the collision the page shows
+//                 (present/shown_collision.h, as `collide render` picks it) worked out
+//                 (teach/event_problem.h, solve.h, html.h worked_html) as `collide material`
+//                 and `collide solve --format json` show it, and what the page needs to draw
+//                 the bodies
 // Each returns {ok, text}: the JSON, or the reader's message without a file name
 // ("LINE:COL: key: message"); api.js turns a refusal into a thrown Error.
 #include <exception>
@@ -25,6 +27,8 @@
 #include "scenario/lesson.h"
 #include "scenario/solve_problem.h"
 #include "engine/record.h"
+#include "present/frame_times.h"
+#include "present/shown_collision.h"
 #include "teach/event_problem.h"
 #include "teach/html.h"
 #include "teach/notation.h"
@@ -111,23 +115,6 @@ ordered_json bodies_json(const Scene& scene) {
     return out;
 }
 
-// The collision the lesson's page works out: its first [[figure]], else the run's first
-// collision (as `collide render` picks it, cli/render_cmd.cpp), with the figure's roles.
-template <int D>
-std::optional<CollisionInstant> page_collision(const Lesson& lesson, const Recording<D>& rec) {
-    if (rec.events.empty()) return std::nullopt;
-    std::size_t a = rec.events.front().a, b = rec.events.front().b;
-    int order = 1;
-    if (!lesson.figures.empty()) {
-        a = lesson.figures.front().ia;
-        b = lesson.figures.front().ib;
-        order = lesson.figures.front().collision;
-    }
-    const std::optional<PairCollision> c = find_pair_collision(rec, a, b, order);
-    if (!c) return std::nullopt;
-    return with_roles(collision_instant(rec.events[c->first]), a, b);
-}
-
 // `values`: a JSON object {"A.mass": 3, ...} (lesson_with_values' names); `fps`: the
 // page's frame rate (the states are sampled at 1/fps, as the site's frames).
 std::string lesson_json(const std::string& text, const std::string& values, double fps) {
@@ -142,11 +129,9 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     const Lesson lesson = changed.empty() ? original : lesson_with_values(original, changed);
     const Scene& scene = lesson.scene;
     if (!(fps > 0 && fps <= 1000)) throw InputError("", {}, "fps", "expected 0 < fps <= 1000");
-    Scene timing = scene;
-    timing.output_dt = 1.0 / fps;
     RecordOptions options;
-    for (const LessonFigure& f : lesson.figures) options.keep.push_back({f.ia, f.ib, f.collision});
-    const AnyRecording any = record_any(scene, output_times(timing), options);
+    options.keep = figure_keeps(&lesson);
+    const AnyRecording any = record_any(scene, frame_times(scene, fps), options);
 
     std::string states = "[", events = "[";
     std::optional<CollisionInstant> collision;
@@ -156,7 +141,7 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
         const std::vector<bool> gains = energy_gains(scene, rec.events);
         for (std::size_t k = 0; k < rec.events.size(); ++k)
             events += (k ? "," : "") + event_json(scene, rec.events[k], gains[k]);
-        collision = page_collision(lesson, rec);
+        collision = page_collision(figure_picks(&lesson), rec);
     }, any);
     states += "]";
     events += "]";

@@ -17,7 +17,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/figures.h"
+#include "present/figures.h"
 #include "cli/render_cmd.h"
 #include "render/png.h"
 #include "scenario/lesson.h"

@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "cli/figures.h"
+#include "present/figures.h"
 #include "render/png.h"
 #include "render/video.h"
 #include "tests/render/test_util.h"

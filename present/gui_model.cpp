@@ -1,4 +1,4 @@
-#include "cli/gui_model.h"
+#include "present/gui_model.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,8 @@
 
 #include "scenario/input_error.h"
 #include "scenario/scene_file.h"
-#include "cli/scene_run.h"
+#include "present/frame_times.h"
+#include "present/scene_run.h"
 #include "teach/step_output.h"
 
 namespace collide {
@@ -28,10 +29,8 @@ GuiModel::GuiModel(Scene scene, double fps, Rerun mode)
 }
 
 void GuiModel::rerun() {
-    Scene timing = scene_;
-    timing.output_dt = 1.0 / fps_;
     // The job owns copies of what it reads: the world it runs lives on the worker thread.
-    runs_.start([scene = scene_, times = output_times(timing)](RunControl& control) {
+    runs_.start([scene = scene_, times = frame_times(scene_, fps_)](RunControl& control) {
         const double end = times.empty() ? 0.0 : times.back();
         SceneRun run = run_scene(scene, times, [&control, end](double t) {
             control.report(end > 0 ? t / end : 1.0);

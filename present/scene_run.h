@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "present/shown_collision.h"
 #include "teach/event_problem.h"
 #include "engine/record.h"
 #include "render/frame_state.h"
@@ -53,19 +54,14 @@ struct Moments {
 };
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run);
 
-// A collision to show: the `order`-th recorded instant (from 1) at which bodies a and b
-// collide, with a as body a and b as body b (teach/event_problem.h with_roles).
-struct CollisionPick {
-    std::size_t a = 0, b = 0;
-    int order = 1;
-    bool whole_instant = false;  // every impact of that instant, before and after all of them
-    bool touching = false;       // before and after drawn at the instant's poses
-};
 // Its moments, as first_moments gives the first collision's; the "at" state holds only this
 // pair's impacts, and before / after carry the velocities just before and just after them
 // (in an instant resolved one contact after another, the earlier contacts have acted).
 // nullopt when the run has no such collision among its recorded instants.
 std::optional<Moments> collision_moments(const Scene& scene, const SceneRun& run, const CollisionPick& pick);
+// The moments of the collision a page works out first (present/shown_collision.h page_pick):
+// the first of `picks`, else the run's first collision.
+std::optional<Moments> page_moments(const Scene& scene, const SceneRun& run, const std::vector<CollisionPick>& picks);
 
 // How many recorded instants of the run have a collision of bodies a and b.
 int pair_collisions(const SceneRun& run, std::size_t a, std::size_t b);

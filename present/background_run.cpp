@@ -1,4 +1,4 @@
-#include "cli/background_run.h"
+#include "present/background_run.h"
 
 #include <algorithm>
 

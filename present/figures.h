@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "cli/scene_run.h"
+#include "present/scene_run.h"
 #include "render/png.h"
 #include "render/renderer.h"
 #include "scenario/scene_file.h"

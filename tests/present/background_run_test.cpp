@@ -3,7 +3,7 @@
 // exception in the job is reported, and destroying the runner while a job runs joins cleanly.
 // No timing: the test and the jobs hand each other the turn through condition variables
 // (Steps below), and a job that must be cancelled waits for it by checking its flag.
-#include "cli/background_run.h"
+#include "present/background_run.h"
 
 #include <atomic>
 #include <condition_variable>

@@ -1,4 +1,4 @@
-#include "cli/scene_run.h"
+#include "present/scene_run.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -154,24 +154,13 @@ void after_impulses(const Event<D>& e, std::vector<BodyState>* bodies) {
     (*bodies)[e.b].w = lift_spin(e.after_b.w);
 }
 
-// The events of `pick`: those of its pair in the pick.order-th recorded instant where that
-// pair collides, as [first, end) within it; false when the run has no such collision.
-template <int D>
-bool find_pick(const Recording<D>& rec, const CollisionPick& pick, std::size_t* which, std::size_t* first,
-               std::size_t* end) {
-    const std::optional<PairCollision> c = find_pair_collision(rec, pick.a, pick.b, pick.order);
-    if (!c) return false;
-    *which = c->instant;
-    *first = c->first;
-    *end = c->end;
-    return true;
-}
-
 template <int D>
 std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const Recording<D>& rec,
                                   const CollisionPick& pick) {
-    std::size_t which = 0, first_event = 0, end_event = 0;
-    if (!find_pick(rec, pick, &which, &first_event, &end_event)) return std::nullopt;
+    const std::optional<PairCollision> found = find_pick(rec, pick);
+    if (!found) return std::nullopt;
+    const std::size_t which = found->instant;
+    std::size_t first_event = found->first, end_event = found->end;
     const typename Recording<D>::Instant& instant = rec.instants[which];
     const std::size_t event = first_event;  // the collision's first event (worked out)
     const auto& first = rec.events[event];
@@ -263,8 +252,7 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
 int pair_collisions(const SceneRun& run, std::size_t a, std::size_t b) {
     return visit_record(run, [&](const auto& rec) {
         int n = 0;
-        std::size_t which = 0, first = 0, end = 0;
-        while (find_pick(rec, CollisionPick{a, b, n + 1}, &which, &first, &end)) ++n;
+        while (find_pick(rec, CollisionPick{a, b, n + 1})) ++n;
         return n;
     });
 }
@@ -348,12 +336,15 @@ PlotTotals plot_totals(const Scene& scene, const SceneRun& run) {
     return out;
 }
 
-std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run) {
+std::optional<Moments> page_moments(const Scene& scene, const SceneRun& run, const std::vector<CollisionPick>& picks) {
     return visit_record(run, [&](const auto& rec) -> std::optional<Moments> {
-        if (rec.events.empty()) return std::nullopt;
-        return moments_of(scene, run, rec, CollisionPick{rec.events.front().a, rec.events.front().b, 1, true});
+        const std::optional<CollisionPick> pick = page_pick(picks, rec);
+        if (!pick) return std::nullopt;
+        return moments_of(scene, run, rec, *pick);
     });
 }
+
+std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run) { return page_moments(scene, run, {}); }
 
 std::optional<Moments> collision_moments(const Scene& scene, const SceneRun& run, const CollisionPick& pick) {
     return visit_record(run, [&](const auto& rec) { return moments_of(scene, run, rec, pick); });

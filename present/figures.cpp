@@ -1,4 +1,4 @@
-#include "cli/figures.h"
+#include "present/figures.h"
 
 #include <algorithm>
 #include <cmath>

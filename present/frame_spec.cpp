@@ -1,11 +1,11 @@
-#include "cli/render_request.h"
+#include "present/frame_spec.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <utility>
 
-#include "cli/figures.h"
+#include "present/figures.h"
 #include "scenario/input_error.h"
 #include "teach/notation.h"
 
@@ -42,31 +42,6 @@ std::vector<std::string> names(const Choice<T> (&choices)[N]) {
     std::vector<std::string> out;
     for (const Choice<T>& c : choices) out.push_back(c.name);
     return out;
-}
-
-Quality read_quality(const std::string& name) {
-    if (const Quality* q = find_choice(kQualities, name)) return *q;
-    throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");
-}
-
-render::GlBackend read_backend(const std::string& name) {
-    render::GlBackend backend;
-    if (!render::parse_gl_backend(name, &backend))
-        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + name + "'");
-    return backend;
-}
-
-// --format: none for png; for mp4 and gif, the video and the ffmpeg that will make it.
-std::optional<VideoRequest> read_format(const std::string& name) {
-    const std::optional<render::VideoFormat>* format = find_choice(kFormats, name);
-    if (!format) throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + name + "'");
-    if (!*format) return std::nullopt;
-    VideoRequest video{**format, render::find_program("ffmpeg")};
-    if (video.ffmpeg.empty())
-        throw InputError(kCommand, {}, "--format",
-                         name + " is made by ffmpeg, which is not installed (Debian: "
-                                "apt-get install ffmpeg); --format png writes the frames alone");
-    return video;
 }
 
 }  // namespace
@@ -116,22 +91,34 @@ std::optional<render::ViewKind> read_view(const std::string& text) {
     throw InputError(kCommand, {}, "--view", "expected 2d or 3d, got '" + text + "'");
 }
 
-RenderRequest parse_render_request(const RenderOptions& o) {
-    RenderRequest r;
-    r.scenario = o.scenario;
-    read_render_size(o.size, &r.frame.width, &r.frame.height);
-    if (!(o.fps > 0 && o.fps <= 100000))
-        throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(o.fps));
-    r.frame.fps = o.fps;
-    r.frame.quality = read_quality(o.quality);
-    r.frame.view = read_view(o.view);
-    if (o.out_dir.empty()) throw InputError(kCommand, {}, "-o", "the output directory is required");
-    r.out_dir = o.out_dir;
-    r.backend = read_backend(o.backend);
-    r.video = read_format(o.format);
-    r.quiet = o.quiet;
-    r.force = o.force;
-    return r;
+double read_fps(double fps) {
+    if (!(fps > 0 && fps <= 100000))
+        throw InputError(kCommand, {}, "--fps", "expected frames per simulated second in (0, 100000], got " + num(fps));
+    return fps;
+}
+
+Quality read_quality(const std::string& name) {
+    if (const Quality* q = find_choice(kQualities, name)) return *q;
+    throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");
+}
+
+render::GlBackend read_backend(const std::string& name) {
+    render::GlBackend backend;
+    if (!render::parse_gl_backend(name, &backend))
+        throw InputError(kCommand, {}, "--backend", "expected osmesa or egl (when built), got '" + name + "'");
+    return backend;
+}
+
+std::optional<VideoRequest> read_format(const std::string& name) {
+    const std::optional<render::VideoFormat>* format = find_choice(kFormats, name);
+    if (!format) throw InputError(kCommand, {}, "--format", "expected png, mp4 or gif, got '" + name + "'");
+    if (!*format) return std::nullopt;
+    VideoRequest video{**format, render::find_program("ffmpeg")};
+    if (video.ffmpeg.empty())
+        throw InputError(kCommand, {}, "--format",
+                         name + " is made by ffmpeg, which is not installed (Debian: "
+                                "apt-get install ffmpeg); --format png writes the frames alone");
+    return video;
 }
 
 render::RenderSettings frame_settings(const FrameSpec& frame, const Scene& scene, const SceneView& view,

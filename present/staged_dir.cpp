@@ -1,4 +1,4 @@
-#include "cli/staged_dir.h"
+#include "present/staged_dir.h"
 
 #include <unistd.h>
 

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/background_run.h"
-#include "cli/scene_run.h"
+#include "present/background_run.h"
+#include "present/scene_run.h"
 #include "engine/scene.h"
 #include "render/diagram_view.h"
 #include "render/frame_state.h"

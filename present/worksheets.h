@@ -1,0 +1,32 @@
+// Printable worksheets where every student has their own numbers (`collide worksheet`,
+// docs/commands/worksheet.md): one lesson's pages from its students' sheets (teach/worksheet.h
+// draws and answers them).
+//   sheets.html   one page per student: title, "Student K", name and class blanks, the givens
+//                 with the student's numbers, the questions with a blank, unit and tolerance
+//   key.html      the answer key: each student's values, answers and worked example
+//   key.json      {"lesson": ID, "seed": S, "students": [{"student": 1, "values": {...},
+//                 "answers": [{"question": 1, "quantity": .., "value": .., "unit": ..}]}]}
+//   sheets.pdf, key.pdf   when weasyprint is given
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "scenario/lesson.h"
+#include "teach/worksheet.h"
+
+namespace collide {
+
+// One lesson's worksheets into `dir` (created); `weasyprint`: its path, or "" for no PDFs.
+// Returns the files written, for the summary. Throws std::runtime_error when a file cannot be
+// written or weasyprint fails.
+std::vector<std::string> write_worksheets(const Lesson& lesson, const std::vector<StudentSheet>& sheets,
+                                          std::uint64_t seed, const std::filesystem::path& dir,
+                                          const std::string& weasyprint);
+
+// DIR/index.html for several lessons: each lesson's sheets, key and key.json.
+void write_worksheet_index(const std::filesystem::path& dir, const std::vector<Lesson>& lessons, int students);
+
+}  // namespace collide
