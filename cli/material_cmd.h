@@ -1,5 +1,5 @@
 // `collide material -o DIR [LESSON ...]`: a self-contained static HTML site of lessons that
-// works offline (README.md, "collide material"):
+// works offline (docs/commands/material.md):
 //   DIR/index.html             every lesson with a thumbnail, its section and dimension
 //   DIR/style.css              one stylesheet, with print rules
 //   DIR/ID/index.html          a lesson: goals, explanation, its predictions ("Before you

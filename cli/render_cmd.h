@@ -1,5 +1,4 @@
-// `collide render SCENARIO -o DIR`: runs a scenario and writes its pictures (README.md,
-// "collide render"):
+// `collide render SCENARIO -o DIR`: runs a scenario and writes its pictures (docs/commands/render.md):
 //   DIR/frames/frame_00000.png ...   the animation, one PNG per frame (fps frames per simulated s)
 //   DIR/before.png, at.png, after.png  the first collision: a moment before, the exact instant
 //                                      (impulse, normal, r vectors), a moment after

@@ -1,5 +1,5 @@
 // `collide worksheet LESSON... -o DIR [--students N] [--seed S] [--force]`: printable
-// worksheets where every student has their own numbers (README.md, "collide worksheet").
+// worksheets where every student has their own numbers (docs/commands/worksheet.md).
 // For one lesson, in DIR (for several, in DIR/ID/ each, with DIR/index.html linking them):
 //   sheets.html   one page per student: title, "Student K", name and class blanks, the givens
 //                 with the student's numbers, the questions with a blank, unit and tolerance
