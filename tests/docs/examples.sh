@@ -80,10 +80,10 @@ if [[ -d $build_python ]] && PYTHONPATH=$build_python /usr/bin/python3 -c 'impor
   for page in "${pages[@]}"; do
     # Each ```python block as a file of its own, the page's line numbers kept by blank lines.
     awk -v out="$work/py" -v page="$(basename "$page")" '
-      /^[[:space:]]*```python[[:space:]]*$/ { n++; f = out "." page "." n ".py"; printf "" > f;
-                                             for (i = 1; i <= NR; i++) print "" >> f; inb = 1; next }
+      /^[[:space:]]*```python[[:space:]]*$/ { n++; f = out "." page "." n ".py";
+                                             for (i = 1; i <= NR; i++) print "" > f; inb = 1; next }
       inb && /^[[:space:]]*```/ { inb = 0; close(f); next }
-      inb { print >> f }' "$page"
+      inb { print > f }' "$page"
     for f in "$work/py.$(basename "$page")".*.py; do
       [[ -f $f ]] || continue
       blocks=$((blocks + 1))
