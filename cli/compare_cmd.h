@@ -1,7 +1,7 @@
 // `collide compare FILE`: runs a 2D scenario through collide's World<2> and through Box2D 2.4.1
 // (compare/box2d_world.h), matches their collision events by pair and order (compare/match.h),
 // and prints each pair's velocities before and after side by side with the difference and the
-// reason where they differ (README.md, "collide compare").
+// reason where they differ (docs/commands/compare.md).
 //
 //   text (default)  a header with the settings, one block per event, a summary;
 //   --json          {"events": [{"a": .., "b": .., "t": {"collide": .., "box2d": ..},

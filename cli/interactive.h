@@ -1,5 +1,5 @@
 // `collide step --interactive`: a command loop over a running scene (step, next, back, show,
-// set, events, help, quit). Commands: README.md and the `help` command.
+// set, events, help, quit). Commands: docs/commands/step.md and the `help` command.
 #pragma once
 
 #include <iosfwd>

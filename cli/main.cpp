@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
         ->check(CLI::IsMember({"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"}));
     solve->footer(
         "Example: collide solve lessons/solve/rod-on-ground.toml --format markdown\n"
-        "File format: see README.md, section 'collide solve'.");
+        "File format and output: docs/formats/collision-files.md, docs/commands/solve.md.");
 
     std::string scene_file;
     collide::StepOptions step_options;
@@ -93,7 +93,7 @@ int main(int argc, char** argv) {
         ->excludes(interactive_flag);
     interactive_flag->excludes(events);
     step->footer("Steps 1D, 2D and 3D scenes from impact to impact at the exact instants.\n"
-                 "Scenario format and commands: see README.md, section 'Scenario files'.");
+                 "Scenario format and commands: docs/formats/scenario-files.md, docs/commands/step.md.");
 
     collide::RenderOptions render_options;
     CLI::App* render = app.add_subcommand(
@@ -140,12 +140,13 @@ int main(int argc, char** argv) {
         "lesson also DIR/lesson.md, DIR/variants.png (its variants) and DIR/penalty.svg,\n"
         "DIR/penalty-overlap.svg, DIR/penalty.csv (its [penalty] contact).\n"
         "Every file is written under a temporary name and renamed when complete.\n"
-        "Example: collide render lessons/scenes/billiards-2d.toml -o out/billiards");
+        "Example: collide render lessons/scenes/billiards-2d.toml -o out/billiards\n"
+        "See docs/commands/render.md.");
 
     bool lessons_json = false;
     CLI::App* lessons = app.add_subcommand("lessons", "List the bundled lessons: id, title, dimension, duration");
     lessons->add_flag("--json", lessons_json, "one JSON object per lesson, one per line");
-    lessons->footer("Render one: collide render ID -o DIR. Lessons live in lessons/*.toml (README.md, 'Lessons').");
+    lessons->footer("Render one: collide render ID -o DIR. Lessons live in lessons/*.toml (docs/formats/lesson-files.md).");
 
     collide::MaterialOptions material_options;
     CLI::App* material = app.add_subcommand(
@@ -166,7 +167,8 @@ int main(int argc, char** argv) {
         "(explanation, figure, animation, worked example, table, plots, questions with answers),\n"
         "DIR/style.css (with print rules) and, per lesson, what collide render writes. The site is\n"
         "built beside DIR and renamed into place when complete.\n"
-        "Example: collide material -o out/site && chromium out/site/index.html");
+        "Example: collide material -o out/site && chromium out/site/index.html\n"
+        "See docs/commands/material.md.");
     collide::WorksheetOptions worksheet_options;
     CLI::App* worksheet = app.add_subcommand(
         "worksheet", "Write printable worksheets: each student's own numbers, and an answer key");
@@ -184,7 +186,7 @@ int main(int argc, char** argv) {
         "values, answers and worked example), key.json (for scripts) and, when weasyprint is\n"
         "installed, sheets.pdf and key.pdf. Built beside DIR and renamed into place when complete.\n"
         "Example: collide worksheet catch-up -o out/ws --students 30 --seed 7\n"
-        "See README.md, section 'collide worksheet'.");
+        "See docs/commands/worksheet.md.");
     collide::GuiOptions gui_options;
     CLI::App* gui = app.add_subcommand(
         "gui", "Open a window: the scene's frame with controls to change it, play it and step it");
@@ -213,7 +215,8 @@ int main(int argc, char** argv) {
         "  screenshot FILE.png | save-frame FILE.png | save-figure FILE.png | wait [N] | quit\n"
         "  orbit RIGHT UP (degrees) | zoom FACTOR (the 3D view's camera) | open LESSON|FILE\n"
         "Needs a display; without one: xvfb-run collide gui ... (Debian's xvfb).\n"
-        "Example: collide gui rotation-directions --size 720p");
+        "Example: collide gui rotation-directions --size 720p\n"
+        "See docs/commands/gui.md.");
     collide::CompareOptions compare_options;
     CLI::App* compare = app.add_subcommand(
         "compare", "Run a 2D scenario through collide and through Box2D 2.4.1 and compare their "
@@ -247,7 +250,7 @@ int main(int argc, char** argv) {
         "normal off by N degrees, other contacts in the same step, friction; or no matching\n"
         "event.\n"
         "Example: collide compare lessons/scenes/compare-slow-bounce.toml --box2d-defaults\n"
-        "See README.md, section 'collide compare'.");
+        "See docs/commands/compare.md.");
 
     if (argc == 1) {  // bare `collide`: show what it can do
         std::cout << app.help();

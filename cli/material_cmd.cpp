@@ -59,7 +59,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             }
         }
         if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
-        // The WebAssembly module, for the pages' Try-it panels (README.md, "The Try-it panel").
+        // The WebAssembly module, for the pages' Try-it panels (docs/commands/material.md, "The Try-it panel").
         const std::string engine_js = engine_js_path();
         StagedDirectory staged(opt.out_dir, opt.force);
         // The options, read once as collide render reads them: every lesson renders with them,

@@ -3,7 +3,7 @@
 // Box2D at a fixed time step, with its collisions recorded as events. Box2D's own types stay
 // inside box2d_world.cpp; this header speaks the engine's types (SI units, double).
 //
-// How a scene becomes a Box2D world (README.md, "collide compare"):
+// How a scene becomes a Box2D world (docs/commands/compare.md):
 //   disc               b2CircleShape of the same radius;
 //   rectangle, polygon b2PolygonShape with the same vertices (Box2D allows at most 8);
 //   plane              a long two-sided b2EdgeShape on a static body (half-length kPlaneLength);

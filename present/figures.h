@@ -1,5 +1,5 @@
 // The pictures of a run's first collision that `collide render` writes beside the frames
-// (README.md, "collide render"), and the figure `collide gui` saves:
+// (docs/commands/render.md), and the figure `collide gui` saves:
 //   before.png, at.png, after.png   a moment before, the instant, a moment after, at the frame size
 //   figure.png, thumb.png           those three moments side by side with captions; its middle panel
 //   variants.png                    a lesson's scene and its variants, a row of panels each

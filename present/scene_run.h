@@ -30,7 +30,7 @@ SceneRun run_scene(const Scene& scene, const std::vector<double>& times,
                    const std::function<void(double t)>& on_sample = nullptr,
                    const std::vector<RecordOptions::Keep>& keep = {});
 
-// The data files of a run (README.md, "collide render"): data.csv, events.csv, and the
+// The data files of a run (docs/commands/render.md): data.csv, events.csv, and the
 // frames and events of data.json (state_json / event_json objects joined by ",\n").
 struct DataFiles {
     std::string csv, events_csv, json_frames, json_events;

@@ -243,7 +243,7 @@ std::string key_page(const Lesson& L, const std::vector<StudentSheet>& sheets, s
     return o.str();
 }
 
-// key.json (README.md): the values drawn and the engine's answers at full precision.
+// key.json (docs/commands/worksheet.md): the values drawn and the engine's answers at full precision.
 std::string key_json(const Lesson& L, const std::vector<StudentSheet>& sheets, std::uint64_t seed) {
     nlohmann::ordered_json students = nlohmann::ordered_json::array();
     for (const StudentSheet& s : sheets) {

@@ -3,7 +3,7 @@
 // the screen box each was given. The view then draws the list and nothing else, so that tests
 // can read a picture's meaning from it (tests/render/annotation_test.cpp) and check with a few
 // pixels that the list is what was drawn. `collide render` writes the lists of its figure's
-// three panels as annotations.json (README.md, "collide render").
+// three panels as annotations.json (docs/commands/render.md).
 #pragma once
 
 #include <ostream>

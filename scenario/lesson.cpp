@@ -165,7 +165,7 @@ void parse_what_if(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
     }
 }
 
-// One [[question]] table, by its kind (README.md, "Lessons").
+// One [[question]] table, by its kind (docs/formats/lesson-files.md, "Questions").
 LessonQuestion parse_question(const TableReader& q, const Lesson& L) {
     q.allow_only(question_keys());
     LessonQuestion Q;

@@ -1,4 +1,4 @@
-// Lessons (README.md, "Lessons"): a scenario (the [scene], [[body]] and [view] tables of a
+// Lessons (docs/formats/lesson-files.md): a scenario (the [scene], [[body]] and [view] tables of a
 // scenario file) with its teaching text in a [lesson] table and [[question]] tables of four
 // kinds (QuestionKind below): numeric ones, whose answers the engine computes from the run,
 // predictions asked before the animation, multiple choice with a reason for each option, and
@@ -16,7 +16,7 @@
 
 namespace collide {
 
-// What a [[question]] asks of the student (README.md, "Lessons", questions):
+// What a [[question]] asks of the student (docs/formats/lesson-files.md, "Questions"):
 //   numeric  (the default) a quantity the engine computes from the run (`quantity`, with
 //            `event` or `pair` and `collision`, `body`, `at`, `about` as it needs), marked right within `tolerance`
 //            (relative, 0 < tolerance < 1, default 0.02); `what_if` asks it of the scene
@@ -88,7 +88,7 @@ struct LessonFigure {
     std::string key;             // "figure[K]"
 };
 
-// [penalty] (1D lessons, README.md "Lessons"): the first collision again with a penalty
+// [penalty] (1D lessons, docs/formats/lesson-files.md): the first collision again with a penalty
 // (spring-damper) contact instead of the impulse (engine/penalty.h, teach/lesson_penalty.h).
 struct LessonPenalty {
     double stiffness = 0.0;              // k, N/m
@@ -99,7 +99,7 @@ struct LessonPenalty {
     std::string step_key = "penalty";    // when the contact is run)
 };
 
-// [[vary]] (worksheets, README.md "Lessons"): a range a student's value of one input is drawn
+// [[vary]] (worksheets, docs/formats/lesson-files.md): a range a student's value of one input is drawn
 // from: `key` of the [[body]] named `body` (or of [scene] when body is "scene") takes one of
 // lo, lo + step, ... up to hi. The key is a number the table already has (its lesson value).
 struct LessonVary {

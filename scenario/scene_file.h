@@ -1,4 +1,4 @@
-// Scenario files (TOML): a [scene] table and [[body]] tables. Format: README.md.
+// Scenario files (TOML): a [scene] table and [[body]] tables. Format: docs/formats/scenario-files.md.
 #pragma once
 
 #include <optional>
@@ -10,7 +10,7 @@
 
 namespace collide {
 
-// How the scenario asks to be shown: the optional [view] table (README.md), read by
+// How the scenario asks to be shown: the optional [view] table (docs/formats/scenario-files.md), read by
 // `collide render`. Unset camera values are chosen from the scene's extent.
 // [[mark]]: a point fixed in a body, drawn in the figures and frames with its name (and, with
 // `velocity`, its own velocity v + ω × r): a bat's handle end, its sweet spot. 1D and 2D.

@@ -1,4 +1,4 @@
-// The input of `collide solve`: one collision, read from a TOML file (format: README.md).
+// The input of `collide solve`: one collision, read from a TOML file (format: docs/formats/collision-files.md).
 #pragma once
 
 #include <string>

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Builds the engine as WebAssembly: one file, build/wasm/collide-engine.js (the wasm
-# embedded), exporting solve(text) and run(text) (README.md, "The engine in the browser").
-# `collide material` puts it into the site when it finds it (beside the build: see README.md).
+# embedded), exporting solve(text) and run(text) (docs/wasm.md).
+# `collide material` puts it into the site when it finds it (beside the build: see docs/commands/material.md).
 # Needs Debian's emscripten and node-acorn (scripts/install-deps.sh); Debian's package comes
 # with emscripten's system libraries built (/usr/share/emscripten/cache), so nothing is fetched.
 # Usage: scripts/build-wasm.sh [-B DIR] [CMAKE_ARGS...]   (default DIR: build/wasm, where

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Runs the libFuzzer targets of a COLLIDE_FUZZ build for a while each. See README.md,
-# "Fuzzing and sanitizers".
+# Runs the libFuzzer targets of a COLLIDE_FUZZ build for a while each. See
+# docs/fuzzing.md.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

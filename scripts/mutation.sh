@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Mistakes compiled into student-facing code, one at a time: each must make a test fail.
-# See README.md, "Mutation check".
+# See docs/tests.md, "Mutation check".
 set -euo pipefail
 cd "$(dirname "$0")/.."
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Builds the Debian packages (README.md, "Install"): installs what that needs
+# Builds the Debian packages (docs/install.md): installs what that needs
 # (scripts/install-deps.sh --package), builds for /usr in ./build-deb without the tests and
 # benchmarks, and runs cpack (packaging/CMakeLists.txt):
 #   build-deb/collide_VERSION_amd64.deb          the command, its lessons, man page, completion

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The WebAssembly module's size and speed (README.md, "The Try-it panel"): the size of
+# The WebAssembly module's size and speed (docs/wasm.md): the size of
 # collide-engine.js (goal: under 2 MB), and for every bundled lesson what a fresh page does:
 # start the module, answer once with the lesson's values (the panel at load), then the time the
 # panel waits after a slider moves: lesson(text, values, fps) at the page's 30 frames/s, each

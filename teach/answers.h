@@ -1,4 +1,4 @@
-// A lesson's answers and its Markdown (README.md, "Lessons"): each question answered from the
+// A lesson's answers and its Markdown (docs/formats/lesson-files.md, "Quantities"): each question answered from the
 // lesson's run, a recording of its scene (engine/record.h), by the engine's own functions.
 #pragma once
 

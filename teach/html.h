@@ -38,7 +38,7 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
                      const std::vector<double>& collisions, double duration, const std::string& x_unit = "s");
 
 // The "Try it" panel of a lesson page (collide material, when the site has the WebAssembly
-// module collide-engine.js; README.md "The Try-it panel"): a slider for each of the lesson's
+// module collide-engine.js; docs/commands/material.md, "The Try-it panel"): a slider for each of the lesson's
 // [[vary]] inputs (its range and step, set at the lesson's own value), a canvas that plays the
 // run (1D and 2D; 3D lessons: numbers and a plot only), play / pause / 0.25x / step, the
 // impulse, energy and momentum of the page's collision and its worked example, all recomputed

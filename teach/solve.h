@@ -1,5 +1,5 @@
 // `collide solve`: one collision, every quantity of the worked example, and its three outputs
-// (text worked example, Markdown with LaTeX, JSON). Formats: README.md.
+// (text worked example, Markdown with LaTeX, JSON). Formats: docs/commands/solve.md.
 #pragma once
 
 #include <iosfwd>

@@ -1,5 +1,5 @@
 // `collide step`'s output: runs a scenario and prints its states at each output step, or its
-// collision events, in 1D, 2D and 3D. Formats: README.md. Render-free, in teach/ so that the
+// collision events, in 1D, 2D and 3D. Formats: docs/commands/step.md. Render-free, in teach/ so that the
 // command, the Python module and the WebAssembly module (wasm/) call this one implementation. The pieces the interactive mode shares (output
 // instants, one state, one event) are declared here too.
 #pragma once

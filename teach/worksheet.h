@@ -1,4 +1,4 @@
-// Worksheets (`collide worksheet`, README.md): each student gets the lesson's scene with their
+// Worksheets (`collide worksheet`, docs/commands/worksheet.md): each student gets the lesson's scene with their
 // own values, drawn from its [[vary]] grids by a generator whose output is fixed by its
 // definition (the same numbers from every compiler and standard library), and the engine
 // answers each student's questions from a run of that scene.

@@ -1,4 +1,4 @@
-// The Try-it panel of a lesson page (teach/html.h try_it_html; README.md "The Try-it panel").
+// The Try-it panel of a lesson page (teach/html.h try_it_html; docs/commands/material.md, "The Try-it panel").
 // The engine itself answers: collide-engine.js (wasm/) runs the lesson with the panel's values
 // and returns the run (states at the page's frame rate, events), the page's collision worked
 // out (the same HTML as the page's worked example) and `collide solve --format json`'s numbers

@@ -9,8 +9,8 @@ command prints:
     collide.render_figure(scene)    `collide render`'s figure.png (before / at / after), PNG bytes
 
 A problem or a scene is a file name (str or path), a lesson id (`collide lessons`; scenes
-only), or a dict with the file's tables and keys (README.md, "Input file" and "Scenario
-files"). Bad input raises ValueError with the command's message: the file, the line and the
+only), or a dict with the file's tables and keys (docs/formats/collision-files.md and
+scenario-files.md). Bad input raises ValueError with the command's message: the file, the line and the
 key ("<dict>" and the key for a dict).
 """
 
@@ -53,7 +53,7 @@ def _source(source):
 
 
 def solve(problem, model=None):
-    """One collision worked out: the dict of `collide solve --format json` (README.md, "Output").
+    """One collision worked out: the dict of `collide solve --format json` (docs/commands/solve.md, "Output").
 
     problem: a collision file's name, or a dict of its keys, e.g.
         {"dimension": 1, "restitution": 0.5, "normal": 1,

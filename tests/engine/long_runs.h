@@ -1,7 +1,7 @@
 // Long runs (robustness): a scene advanced in many equal output steps, watching every step for
 // a non-finite state and measuring how far the conserved quantities wander. Shared by the test
 // suite (tests/engine/long_run_test.cpp, 10^4 to 10^5 steps) and the timed command
-// collide-long-run (bench/long_run.cpp, 10^6 steps, its figures in the README).
+// collide-long-run (bench/long_run.cpp, 10^6 steps, its figures in docs/tests.md).
 //
 // The scenes, all frictionless with e = 1 and no gravity, so the kinetic energy is conserved
 // exactly by the physics and any change is the engine's error:

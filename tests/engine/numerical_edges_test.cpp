@@ -1,7 +1,7 @@
 // Numerical edges: near-zero approach speeds, grazing contacts, mass ratios from 1e-6 to 1e6, a
 // thin rod with near-singular inertia, huge and tiny scales, far from the origin. Each ends in a
 // finite result that matches the closed form (or the same collision at scale 1) within the
-// stated tolerance; the limits are documented in the README ("Numerical limits").
+// stated tolerance; the limits are documented in docs/tests.md ("Numerical limits").
 #include <cmath>
 #include <string>
 #include <vector>

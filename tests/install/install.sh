@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # `cmake --install` into a fresh prefix, then what a user does with the installed tree, from a
-# directory outside the source and build trees (README.md, "Install"):
+# directory outside the source and build trees (docs/install.md):
 #   - the files are where GNUInstallDirs puts them (command, lessons, man page, completion,
 #     headers, libraries, CMake package);
 #   - the installed collide reads the installed lessons, found from its own executable (a lesson
@@ -31,7 +31,8 @@ fi
 libdir=$(cd "$prefix" && dirname "$(find . -name libcollide_engine.a | head -n 1)")
 for f in bin/collide share/collide/lessons/01-catch-up.toml share/collide/lessons/solve/rod-on-ground.toml \
          share/collide/lessons/scenes/cradle-1d.toml share/bash-completion/completions/collide \
-         share/doc/collide/README.md include/collide/engine/respond.h include/collide/render/renderer.h \
+         share/doc/collide/README.md share/doc/collide/docs/commands/solve.md \
+         include/collide/engine/respond.h include/collide/render/renderer.h \
          "$libdir/libcollide_engine.a" "$libdir/libcollide_render.a" "$libdir/cmake/Collide/CollideConfig.cmake"; do
   [[ -f $prefix/$f ]] || fail "not installed: $f"
 done

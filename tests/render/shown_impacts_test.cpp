@@ -1,4 +1,4 @@
-// Which collisions a frame draws (render::shown_impacts): the rule the README states, on
+// Which collisions a frame draws (render::shown_impacts): the rule docs/commands/render.md states, on
 // hand-made lists whose answer is written out.
 #include <gtest/gtest.h>
 

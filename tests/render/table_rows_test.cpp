@@ -1,5 +1,5 @@
 // Which bodies get a row of the data table (render::table_rows) and which get their velocity
-// and spin labelled (render::motion_label_floor): the rules the README states,
+// and spin labelled (render::motion_label_floor): the rules docs/commands/render.md states,
 // on hand-made frames whose answer is written out.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The WebAssembly module equals the native command (issue 22, README.md "Tests"): for every
+// The WebAssembly module equals the native command (issue 22, docs/tests.md): for every
 // bundled collision file (lessons/solve/) and every bundled scenario and lesson (lessons/,
 // lessons/scenes/), collide-engine.js's solve(text) and run(text) against `collide solve
 // --format json` and `collide step --json` / `--events --json`: the same keys in the same order,
