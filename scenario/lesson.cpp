@@ -66,8 +66,9 @@ void forbid_on(const TableReader& q, const std::string& kind, const std::vector<
 // The engine quantity of a question and what it needs (event, body, at, about), checked
 // against the lesson's scene.
 void parse_quantity(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
-    Q.quantity = read_choice(q, "quantity", lesson_quantities(), "quantity", "");
-    const QuantityInfo& info = quantity_table().at(Q.quantity);
+    const std::string name = read_choice(q, "quantity", lesson_quantities(), "quantity", "");
+    Q.quantity = quantity_named(name);
+    const QuantityInfo info = quantity_info(*Q.quantity);
     if (info.needs_event && q.has("pair")) {
         // The collision by its bodies: `pair` (a, then b) and `collision` (which of theirs).
         q.forbid("event", "'event' (a collision of the run) and 'pair' (a collision of two bodies) name it twice");
@@ -90,26 +91,24 @@ void parse_quantity(const TableReader& q, const Lesson& L, LessonQuestion& Q) {
         Q.event = static_cast<int>(e);
         q.forbid("collision", "'collision' counts the collisions of a 'pair'; give the pair, or 'event' alone");
     } else {
-        q.forbid("event", "'" + Q.quantity + "' is about the whole run, not one collision");
-        q.forbid("pair", "'" + Q.quantity + "' is about the whole run, not one collision");
-        q.forbid("collision", "'" + Q.quantity + "' is about the whole run, not one collision");
+        q.forbid("event", "'" + name + "' is about the whole run, not one collision");
+        q.forbid("pair", "'" + name + "' is about the whole run, not one collision");
+        q.forbid("collision", "'" + name + "' is about the whole run, not one collision");
     }
     if (info.needs_body) {
         Q.body = q.string("body", "a body's name").value_or("");
-        if (Q.body.empty()) q.fail("body", "missing key 'body' ('" + Q.quantity + "' is a body's)");
+        if (Q.body.empty()) q.fail("body", "missing key 'body' ('" + name + "' is a body's)");
         body_named(L.scene, Q.body, q, "body");
     } else {
-        q.forbid("body", "'" + Q.quantity + "' is not about one body");
+        q.forbid("body", "'" + name + "' is not about one body");
     }
-    if (info.penalty && !L.penalty)
-        q.fail("quantity", "'" + Q.quantity + "' is answered by the penalty contact: add a [penalty] table");
+    if (info.needs_penalty && !L.penalty)
+        q.fail("quantity", "'" + name + "' is answered by the penalty contact: add a [penalty] table");
     if (info.angular && L.scene.dimension == 1)
         q.fail("quantity", "bodies on a line do not spin (no angular quantities in 1D)");
-    const bool point_velocity = Q.quantity.rfind("point_velocity_", 0) == 0;
-    const bool about_point = Q.quantity.rfind("angular_momentum_", 0) == 0;
-    if (point_velocity) Q.at = read_vec(q, "at", L.scene.dimension, "m");
+    if (info.point == QuantityPoint::at) Q.at = read_vec(q, "at", L.scene.dimension, "m");
     else q.forbid("at", "'at' (a point of the body) is for point_velocity_before and _after");
-    if (about_point) Q.about = read_vec(q, "about", L.scene.dimension, "m");
+    if (info.point == QuantityPoint::about) Q.about = read_vec(q, "about", L.scene.dimension, "m");
     else q.forbid("about", "'about' (a fixed point) is for angular_momentum_before and _after");
     if (q.has("tolerance")) {
         Q.tolerance = *q.number("tolerance", "a relative tolerance (0.02 for 2 %)");
@@ -303,57 +302,9 @@ const char* question_kind_name(QuestionKind kind) {
     return "numeric";
 }
 
-const std::map<std::string, QuantityInfo>& quantity_table() {
-    static const std::map<std::string, QuantityInfo> table = {
-        {"impulse", {"N s", true, false}},
-        {"impulse_normal", {"N s", true, false}},
-        {"slip_stop_impulse", {"N s", true, false}},
-        {"velocity_before", {"m/s", true, true}},
-        {"velocity_after", {"m/s", true, true}},
-        {"spin_before", {"rad/s", true, true, true}},
-        {"spin_after", {"rad/s", true, true, true}},
-        {"point_velocity_before", {"m/s", true, true}},
-        {"point_velocity_after", {"m/s", true, true}},
-        {"normal_velocity_before", {"m/s", true, false}},
-        {"normal_velocity_after", {"m/s", true, false}},
-        {"momentum_before", {"kg m/s", true, false}},
-        {"momentum_after", {"kg m/s", true, false}},
-        {"angular_momentum_before", {"kg m^2/s", true, false, true}},
-        {"angular_momentum_after", {"kg m^2/s", true, false, true}},
-        {"spin_angular_momentum_before", {"kg m^2/s", true, true, true}},
-        {"spin_angular_momentum_after", {"kg m^2/s", true, true, true}},
-        {"kinetic_energy_before", {"J", true, false}},
-        {"kinetic_energy_after", {"J", true, false}},
-        {"energy_lost", {"J", true, false}},
-        {"time", {"s", true, false}},
-        {"collisions", {"", false, false}},
-        {"last_collision_time", {"s", false, false}},
-        {"final_velocity", {"m/s", false, true}},
-        {"final_spin", {"rad/s", false, true, true}},
-        {"final_kinetic_energy", {"J", false, false}},
-        {"penalty_damping_ratio", {"", false, false, false, true}},
-        {"penalty_damping", {"N s/m", false, false, false, true}},
-        {"penalty_contact_time", {"s", false, false, false, true}},
-        {"penalty_peak_force", {"N", false, false, false, true}},
-        {"penalty_max_overlap", {"m", false, false, false, true}},
-        {"penalty_impulse", {"N s", false, false, false, true}},
-        {"penalty_restitution", {"", false, false, false, true}},
-    };
-    return table;
-}
 const std::vector<std::string>& lesson_tables() {
-
     static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty", "figure", "vary"};
     return tables;
-}
-
-const std::vector<std::string>& lesson_quantities() {
-    static const std::vector<std::string> names = [] {
-        std::vector<std::string> v;
-        for (const auto& [name, info] : quantity_table()) v.push_back(name);
-        return v;
-    }();
-    return names;
 }
 
 Lesson load_lesson(const std::string& path) {
