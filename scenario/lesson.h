@@ -143,6 +143,8 @@ struct Lesson {
     SceneView view;
 };
 
+// ---- The file format (scenario/lesson_file.cpp, lesson_question.cpp) ----
+
 // The top-level tables a lesson file adds to a scenario's.
 const std::vector<std::string>& lesson_tables();
 
@@ -152,12 +154,16 @@ Lesson load_lesson(const std::string& path);
 // The same from the file's text (`name` in messages, `path` kept as Lesson::file).
 Lesson parse_lesson_text(const std::string& text, const std::string& name, const std::string& path);
 
+// ---- The values and their substitution (scenario/lesson_values.cpp) ----
+
 // The lesson with some of its scene's values changed and everything validated again, as if
 // the file had been written so: `values` maps "BODY.KEY" (a [[body]] named BODY) or
 // "scene.KEY" ([scene]) to a number (e.g. {"A.mass": 4.0, "scene.restitution": 1.0}). The
 // result has no questions and no [[vary]] (only its scene, view, variants, figures and [penalty]). Throws InputError
 // naming the changed key when there is no such body or the changed lesson is refused.
 Lesson lesson_with_values(const Lesson& lesson, const std::map<std::string, double>& values);
+
+// ---- The lesson library on disk (scenario/lesson_library.cpp) ----
 
 // The directory of the bundled lessons, the first of: $COLLIDE_LESSONS when set; `installed`
 // when it is a directory (an installed program's share/collide/lessons); the source tree's
