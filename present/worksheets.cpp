@@ -261,7 +261,7 @@ std::string key_json(const Lesson& L, const std::vector<StudentSheet>& sheets, s
             } else {
                 value = a.value;
             }
-            answers.push_back({{"question", question_number(L, s.asked[k])}, {"quantity", q.quantity},
+            answers.push_back({{"question", question_number(L, s.asked[k])}, {"quantity", quantity_name(*q.quantity)},
                                {"value", value}, {"unit", a.unit}});
         }
         students.push_back({{"student", s.student}, {"values", values}, {"answers", answers}});

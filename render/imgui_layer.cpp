@@ -67,20 +67,29 @@ FontSizes FontSizes::for_height(int height) {
     return {px(19.0f, 9.0f), px(13.0f, 7.0f), px(22.0f, 10.0f), px(16.0f, 8.0f)};
 }
 
+namespace {
+
+// Throws with GL's log when a shader did not compile or a program did not link (the object
+// deleted first). The shader and program calls have the same signatures.
+void check_built(const Gl& gl, GLuint object, bool shader) {
+    GLint ok = 0;
+    (shader ? gl.GetShaderiv : gl.GetProgramiv)(object, shader ? GL_COMPILE_STATUS : GL_LINK_STATUS, &ok);
+    if (ok) return;
+    char log[2048] = "";
+    (shader ? gl.GetShaderInfoLog : gl.GetProgramInfoLog)(object, sizeof log, nullptr, log);
+    (shader ? gl.DeleteShader : gl.DeleteProgram)(object);
+    throw std::runtime_error(std::string(shader ? "shader compilation failed: " : "shader linking failed: ") + log);
+}
+
+}  // namespace
+
 GLuint build_program(const Gl& gl, const char* vertex_source, const char* fragment_source,
                      const std::vector<std::pair<GLuint, const char*>>& attributes) {
     const auto compile = [&gl](GLenum type, const char* source) {
         const GLuint s = gl.CreateShader(type);
         gl.ShaderSource(s, 1, &source, nullptr);
         gl.CompileShader(s);
-        GLint ok = 0;
-        gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-        if (!ok) {
-            char log[2048] = "";
-            gl.GetShaderInfoLog(s, sizeof log, nullptr, log);
-            gl.DeleteShader(s);
-            throw std::runtime_error(std::string("shader compilation failed: ") + log);
-        }
+        check_built(gl, s, true);
         return s;
     };
     const GLuint vs = compile(GL_VERTEX_SHADER, vertex_source);
@@ -92,14 +101,7 @@ GLuint build_program(const Gl& gl, const char* vertex_source, const char* fragme
     gl.LinkProgram(p);
     gl.DeleteShader(vs);
     gl.DeleteShader(fs);
-    GLint ok = 0;
-    gl.GetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[2048] = "";
-        gl.GetProgramInfoLog(p, sizeof log, nullptr, log);
-        gl.DeleteProgram(p);
-        throw std::runtime_error(std::string("shader linking failed: ") + log);
-    }
+    check_built(gl, p, false);
     return p;
 }
 

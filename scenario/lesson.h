@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "scenario/input_error.h"
+#include "scenario/lesson_quantity.h"
 #include "scenario/scene_file.h"
 
 namespace collide {
@@ -31,8 +32,8 @@ enum class QuestionKind { numeric, predict, choice, explain };
 struct LessonQuestion {
     QuestionKind kind = QuestionKind::numeric;
     std::string text;      // the question, as asked
-    std::string quantity;  // what answers it: one of lesson_quantities(); "" when the question
-                           // has no engine quantity (choice, explain, predict with choices)
+    std::optional<Quantity> quantity;  // what answers it (scenario/lesson_quantity.h); none when
+                                       // the question has none (choice, explain, predict with choices)
     int event = 1;         // event quantities: which collision of the run, from 1
     // Or, instead of `event`, the collision named by its bodies: the `collision`-th (from 1)
     // of pair[0] and pair[1], with pair[0] as the page's a and pair[1] as its b (the impulse is
@@ -56,7 +57,7 @@ struct LessonQuestion {
     // empty: the lesson's own run answers it.
     std::map<std::string, double> what_if;
 
-    bool has_quantity() const { return !quantity.empty(); }
+    bool has_quantity() const { return quantity.has_value(); }
     bool has_pair() const { return !pair.empty(); }
     bool has_choices() const { return !choices.empty(); }
 };
@@ -142,44 +143,10 @@ struct Lesson {
     SceneView view;
 };
 
+// ---- The file format (scenario/lesson_file.cpp, lesson_question.cpp) ----
+
 // The top-level tables a lesson file adds to a scenario's.
 const std::vector<std::string>& lesson_tables();
-
-// What a question's quantity is: its unit, whether it names a collision (event) and a body,
-// whether it is angular (a number, the z component, in 2D; none in 1D), and whether the
-// [penalty] contact answers it.
-struct QuantityInfo {
-    const char* unit;
-    bool needs_event;
-    bool needs_body;
-    bool angular = false;
-    bool penalty = false;
-};
-const std::map<std::string, QuantityInfo>& quantity_table();
-
-// The quantities a question can ask for, each with its unit and whether it needs an event
-// and a body: "impulse" (event: P on b), "impulse_normal" (event: j = P . n),
-// "velocity_before" / "velocity_after" and "spin_before" / "spin_after" (event, body),
-// "kinetic_energy_before" / "kinetic_energy_after" / "energy_lost" (event: the two bodies),
-// "slip_stop_impulse" (event, model routh: the normal impulse P_n at which the contact
-// point's slip stops, engine/routh.h; an error when it never stops),
-// "time" (event), "collisions" (the count over the run), "last_collision_time",
-// "final_velocity" / "final_spin" (body, at the end of the run), "final_kinetic_energy";
-// "point_velocity_before" / "point_velocity_after" (event, body: vp = v + w x (p - x) of the
-// body's point p, the contact point unless the question gives `at`, a world point at the
-// collision instant), "normal_velocity_before" / "normal_velocity_after" (event: the relative
-// normal velocity of the contact points u_n = ((vb + wb x rb) - (va + wa x ra)) . n, negative
-// while approaching), "momentum_before" / "momentum_after" (event: the two bodies' total
-// linear momentum), "angular_momentum_before" / "angular_momentum_after" (event: the two
-// bodies' total angular momentum about a fixed point, the origin unless the question gives
-// `about`: sum of I w + (x - o) x m v; not in 1D), "spin_angular_momentum_before" /
-// "spin_angular_momentum_after" (event, body: I w, the body's angular momentum about its own
-// centre of mass; not in 1D). Static bodies count in none of the totals. With a [penalty]
-// table, "penalty_damping_ratio", "penalty_damping", "penalty_contact_time",
-// "penalty_peak_force", "penalty_max_overlap", "penalty_impulse", "penalty_restitution": the
-// first collision with the penalty contact matched to its e (no pull; teach/lesson_penalty.h).
-// In 2D angular quantities are numbers (the z component, counter-clockwise +).
-const std::vector<std::string>& lesson_quantities();
 
 // Parses and validates a lesson file (the scenario part as parse_scene_text does). Throws
 // InputError naming file, line and key.
@@ -187,12 +154,16 @@ Lesson load_lesson(const std::string& path);
 // The same from the file's text (`name` in messages, `path` kept as Lesson::file).
 Lesson parse_lesson_text(const std::string& text, const std::string& name, const std::string& path);
 
+// ---- The values and their substitution (scenario/lesson_values.cpp) ----
+
 // The lesson with some of its scene's values changed and everything validated again, as if
 // the file had been written so: `values` maps "BODY.KEY" (a [[body]] named BODY) or
 // "scene.KEY" ([scene]) to a number (e.g. {"A.mass": 4.0, "scene.restitution": 1.0}). The
 // result has no questions and no [[vary]] (only its scene, view, variants, figures and [penalty]). Throws InputError
 // naming the changed key when there is no such body or the changed lesson is refused.
 Lesson lesson_with_values(const Lesson& lesson, const std::map<std::string, double>& values);
+
+// ---- The lesson library on disk (scenario/lesson_library.cpp) ----
 
 // The directory of the bundled lessons, the first of: $COLLIDE_LESSONS when set; `installed`
 // when it is a directory (an installed program's share/collide/lessons); the source tree's

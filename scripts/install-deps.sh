@@ -33,6 +33,7 @@ develop=(
   libbullet-dev                     # Bullet 3.24: collide-bench's 3D peer (optional for the build)
   xvfb xauth                        # collide gui's tests: a screen without a display (xvfb-run)
   clang libclang-rt-14-dev          # scripts/test-sanitize.sh: clang 14, its sanitizers and libFuzzer
+  clang-format                      # scripts/format.sh and the test style.format (clang-format 14)
   llvm-14                           # llvm-symbolizer: file and line in sanitizer reports
   python3-pytest                    # the Python module's tests (tests/python)
   jupyter-nbconvert python3-ipykernel python3-matplotlib  # the example notebook, run in the tests

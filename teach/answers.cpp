@@ -84,6 +84,10 @@ LessonAnswer what_if_answer(const Lesson& L, const LessonQuestion& q, std::size_
     }
 }
 
+// The switch over quantities below has no default: a quantity without its case does not
+// compile (the warning is made an error here, in builds without COLLIDE_WERROR too).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic error "-Wswitch"
 template <int D>
 std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const AnyRecording& record,
                                  const PenaltyStudy* given) {
@@ -124,102 +128,123 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
             out.push_back(what_if_answer(L, q, qi));
             continue;
         }
-        const QuantityInfo& info = quantity_table().at(q.quantity);
+        const Quantity quantity = *q.quantity;
+        const QuantityInfo info = quantity_info(quantity);
         const std::string where = "question[" + std::to_string(qi + 1) + "]";
         LessonAnswer a;
         a.unit = info.unit;
-        const auto set_vector = [&](const Vec3& v) {
-            if (D == 1) {
-                a.value = v.x();
-            } else if (D == 2 && info.angular) {
-                a.value = v.z();
-            } else {
-                a.vector = v;
-                a.value = v.norm();
-                a.is_vector = true;
-            }
-        };
-        std::size_t body = info.needs_body ? body_index(q.body) : 0;
+        const std::size_t body = info.needs_body ? body_index(q.body) : 0;
+        // The collision an event quantity is of (k: its index in the run), with the body's side.
+        std::size_t k = 0;
+        CollisionInstant c;
+        bool is_a = false;
         if (info.needs_event) {
-            const std::size_t k = question_event(L, q, where, events);
-            CollisionInstant c = instant(k);
+            k = question_event(L, q, where, events);
+            c = instant(k);
             if (q.has_pair()) c = with_roles(c, q.pair_a, q.pair_b);
             if (info.needs_body && body != c.a && body != c.b)
                 throw InputError(L.file, {}, where + ".body",
                                  "'" + q.body + "' takes no part in collision " + std::to_string(k + 1) +
                                      " (" + scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + ")");
-            const bool is_a = body == c.a;
-            if (q.quantity == "impulse") set_vector(c.impulse);
-            else if (q.quantity == "impulse_normal") a.value = c.impulse.dot(c.normal);
-            else if (q.quantity == "velocity_before") set_vector(is_a ? c.before_a.v : c.before_b.v);
-            else if (q.quantity == "velocity_after") set_vector(is_a ? c.va_after : c.vb_after);
-            else if (q.quantity == "spin_before") set_vector(is_a ? c.before_a.w : c.before_b.w);
-            else if (q.quantity == "spin_after") set_vector(is_a ? c.wa_after : c.wb_after);
-            else if (q.quantity == "kinetic_energy_before") a.value = pair_kinetic_energy(scene, c, false);
-            else if (q.quantity == "kinetic_energy_after") a.value = pair_kinetic_energy(scene, c, true);
-            else if (q.quantity == "energy_lost")
-                a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
-            else if (q.quantity == "time") a.value = c.t;
-            else if (q.quantity == "slip_stop_impulse") {
-                // The event's own problem solved again (the world applied this same impact):
-                // the end of the first slip phase when another phase follows it.
-                if (scene.model != Model::routh)
-                    throw InputError(L.file, {}, where + ".quantity", "'slip_stop_impulse' needs model = \"routh\"");
-                const Solution s = solve(collision_problem(scene, c));
-                const std::vector<RouthPhase>& ph = s.routh.phases;
-                if (ph.size() < 2 || ph[0].kind != RouthPhase::Kind::slip)
-                    throw InputError(L.file, {}, where + ".quantity",
-                                     "the slip does not stop during collision " + std::to_string(k + 1));
-                a.value = ph[0].normal_impulse_to;
-            }
-            else if (q.quantity == "point_velocity_before" || q.quantity == "point_velocity_after") {
-                const bool after = q.quantity == "point_velocity_after";
-                const CollisionInstant::Side& s = is_a ? c.before_a : c.before_b;
-                const Vec3 v = after ? (is_a ? c.va_after : c.vb_after) : s.v;
-                const Vec3 w = after ? (is_a ? c.wa_after : c.wb_after) : s.w;
-                set_vector(v + w.cross(q.at.value_or(c.point) - s.x));
-            } else if (q.quantity == "normal_velocity_before" || q.quantity == "normal_velocity_after") {
-                const bool after = q.quantity == "normal_velocity_after";
-                const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
-                const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
-                const Vec3 u = (vb + wb.cross(c.point - c.before_b.x)) - (va + wa.cross(c.point - c.before_a.x));
-                a.value = u.dot(c.normal);
-            } else if (q.quantity == "momentum_before" || q.quantity == "momentum_after") {
-                set_vector(pair_momenta(scene, c, q.quantity == "momentum_after", Vec3::Zero()).first);
-            } else if (q.quantity == "angular_momentum_before" || q.quantity == "angular_momentum_after") {
-                set_vector(pair_momenta(scene, c, q.quantity == "angular_momentum_after",
-                                        q.about.value_or(Vec3::Zero()))
-                               .second);
-            } else if (q.quantity == "spin_angular_momentum_before" ||
-                       q.quantity == "spin_angular_momentum_after") {
-                const bool after = q.quantity == "spin_angular_momentum_after";
-                const SolveProblem p = collision_problem(scene, c);
-                const Vec3 w = after ? (is_a ? c.wa_after : c.wb_after) : (is_a ? c.before_a.w : c.before_b.w);
-                const SolveBody& sb = is_a ? p.a : p.b;
-                if (scene.bodies[body].is_static()) set_vector(Vec3::Zero());
-                else if (D == 2) set_vector(Vec3(0, 0, sb.b2.inertia * w.z()));
-                else set_vector(sb.b3.inertia_world() * w);
-            }
-        } else if (q.quantity == "collisions") {
-            a.value = static_cast<double>(events.size());
-        } else if (q.quantity == "last_collision_time") {
+            is_a = body == c.a;
+        }
+        // Before or after the impulse: the velocities of the body's side of the collision.
+        const Vec3& v_before = is_a ? c.before_a.v : c.before_b.v;
+        const Vec3& w_before = is_a ? c.before_a.w : c.before_b.w;
+        const Vec3& v_after = is_a ? c.va_after : c.vb_after;
+        const Vec3& w_after = is_a ? c.wa_after : c.wb_after;
+        // Every quantity has its case (no default: the compiler names a new one left out). A
+        // vector quantity's case gives `vec`, read out below as its catalogue entry says.
+        Vec3 vec = Vec3::Zero();
+        switch (quantity) {
+        case Quantity::impulse: vec = c.impulse; break;
+        case Quantity::impulse_normal: a.value = c.impulse.dot(c.normal); break;
+        case Quantity::velocity_before: vec = v_before; break;
+        case Quantity::velocity_after: vec = v_after; break;
+        case Quantity::spin_before: vec = w_before; break;
+        case Quantity::spin_after: vec = w_after; break;
+        case Quantity::kinetic_energy_before: a.value = pair_kinetic_energy(scene, c, false); break;
+        case Quantity::kinetic_energy_after: a.value = pair_kinetic_energy(scene, c, true); break;
+        case Quantity::energy_lost:
+            a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
+            break;
+        case Quantity::time: a.value = c.t; break;
+        case Quantity::slip_stop_impulse: {
+            // The event's own problem solved again (the world applied this same impact):
+            // the end of the first slip phase when another phase follows it.
+            if (scene.model != Model::routh)
+                throw InputError(L.file, {}, where + ".quantity", "'slip_stop_impulse' needs model = \"routh\"");
+            const Solution s = solve(collision_problem(scene, c));
+            const std::vector<RouthPhase>& ph = s.routh.phases;
+            if (ph.size() < 2 || ph[0].kind != RouthPhase::Kind::slip)
+                throw InputError(L.file, {}, where + ".quantity",
+                                 "the slip does not stop during collision " + std::to_string(k + 1));
+            a.value = ph[0].normal_impulse_to;
+            break;
+        }
+        case Quantity::point_velocity_before:
+        case Quantity::point_velocity_after: {
+            const bool after = quantity == Quantity::point_velocity_after;
+            const Vec3 v = after ? v_after : v_before;
+            const Vec3 w = after ? w_after : w_before;
+            const Vec3& x = is_a ? c.before_a.x : c.before_b.x;
+            vec = v + w.cross(q.at.value_or(c.point) - x);
+            break;
+        }
+        case Quantity::normal_velocity_before:
+        case Quantity::normal_velocity_after: {
+            const bool after = quantity == Quantity::normal_velocity_after;
+            const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
+            const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
+            const Vec3 u = (vb + wb.cross(c.point - c.before_b.x)) - (va + wa.cross(c.point - c.before_a.x));
+            a.value = u.dot(c.normal);
+            break;
+        }
+        case Quantity::momentum_before:
+        case Quantity::momentum_after:
+            vec = pair_momenta(scene, c, quantity == Quantity::momentum_after, Vec3::Zero()).first;
+            break;
+        case Quantity::angular_momentum_before:
+        case Quantity::angular_momentum_after:
+            vec = pair_momenta(scene, c, quantity == Quantity::angular_momentum_after, q.about.value_or(Vec3::Zero()))
+                      .second;
+            break;
+        case Quantity::spin_angular_momentum_before:
+        case Quantity::spin_angular_momentum_after: {
+            const SolveProblem p = collision_problem(scene, c);
+            const Vec3 w = quantity == Quantity::spin_angular_momentum_after ? w_after : w_before;
+            const SolveBody& sb = is_a ? p.a : p.b;
+            if (scene.bodies[body].is_static()) vec = Vec3::Zero();
+            else if (D == 2) vec = Vec3(0, 0, sb.b2.inertia * w.z());
+            else vec = sb.b3.inertia_world() * w;
+            break;
+        }
+        case Quantity::collisions: a.value = static_cast<double>(events.size()); break;
+        case Quantity::last_collision_time:
             if (events.empty()) throw InputError(L.file, {}, where + ".quantity", "the run has no collision");
             a.value = events.back().t;
-        } else if (q.quantity == "final_velocity") {
-            set_vector(lift(final_bodies[body].v));
-        } else if (q.quantity == "final_spin") {
-            set_vector(spin_of(final_bodies[body]));
-        } else if (q.quantity == "final_kinetic_energy") {
-            a.value = totals(final_bodies).kinetic_energy;
-        } else if (info.penalty) {
-            const PenaltyRun& r = study().matched;
-            if (q.quantity == "penalty_damping_ratio") a.value = study().zeta;
-            else if (q.quantity == "penalty_damping") a.value = study().damping;
-            else if (q.quantity == "penalty_contact_time") a.value = r.contact_time;
-            else if (q.quantity == "penalty_peak_force") a.value = r.peak_force;
-            else if (q.quantity == "penalty_max_overlap") a.value = r.max_overlap;
-            else if (q.quantity == "penalty_impulse") a.value = r.impulse;
-            else if (q.quantity == "penalty_restitution") a.value = r.restitution;
+            break;
+        case Quantity::final_velocity: vec = lift(final_bodies[body].v); break;
+        case Quantity::final_spin: vec = spin_of(final_bodies[body]); break;
+        case Quantity::final_kinetic_energy: a.value = totals(final_bodies).kinetic_energy; break;
+        case Quantity::penalty_damping_ratio: a.value = study().zeta; break;
+        case Quantity::penalty_damping: a.value = study().damping; break;
+        case Quantity::penalty_contact_time: a.value = study().matched.contact_time; break;
+        case Quantity::penalty_peak_force: a.value = study().matched.peak_force; break;
+        case Quantity::penalty_max_overlap: a.value = study().matched.max_overlap; break;
+        case Quantity::penalty_impulse: a.value = study().matched.impulse; break;
+        case Quantity::penalty_restitution: a.value = study().matched.restitution; break;
+        }
+        if (info.readout == Readout::vector) {
+            if (D == 1) {
+                a.value = vec.x();
+            } else if (D == 2 && info.angular) {
+                a.value = vec.z();
+            } else {
+                a.vector = vec;
+                a.value = vec.norm();
+                a.is_vector = true;
+            }
         }
         // The text: the number (or vector) to 4 significant digits, then the unit. A vector's
         // components below 1e-9 of its largest print as 0: the world finds contacts to 1e-10 m
@@ -239,12 +264,15 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
     }
     return out;
 }
+#pragma GCC diagnostic pop
 
 }  // namespace
 
 std::string option_number(std::size_t index) { return std::to_string(index + 1); }
 
-bool shows_tolerance(const LessonQuestion& q) { return q.has_quantity() && q.quantity != "collisions"; }
+bool shows_tolerance(const LessonQuestion& q) {
+    return q.has_quantity() && quantity_info(*q.quantity).readout != Readout::count;
+}
 
 std::string tolerance_text(double tolerance) {
     char buf[32];

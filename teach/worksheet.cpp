@@ -42,7 +42,7 @@ std::vector<int> asked_events(const Lesson& L, const std::vector<std::size_t>& a
     std::vector<int> events;
     for (std::size_t i : asked) {
         const LessonQuestion& q = L.questions[i];
-        if (!q.has_quantity() || !quantity_table().at(q.quantity).needs_event) continue;
+        if (!q.has_quantity() || !quantity_info(*q.quantity).needs_event) continue;
         const int k = static_cast<int>(question_event(L, q, "question[" + std::to_string(i + 1) + "]", run)) + 1;
         if (std::find(events.begin(), events.end(), k) == events.end()) events.push_back(k);
     }

@@ -92,7 +92,7 @@ TEST(LessonQuestions, APredictQuestionHasChoicesOrAQuantityAndAlwaysWhy) {
     EXPECT_TRUE(L.questions[0].has_choices());
     EXPECT_FALSE(L.questions[0].has_quantity());
     EXPECT_EQ(L.questions[1].kind, QuestionKind::predict);
-    EXPECT_EQ(L.questions[1].quantity, "velocity_after");
+    EXPECT_EQ(L.questions[1].quantity, Quantity::velocity_after);
     EXPECT_DOUBLE_EQ(L.questions[1].tolerance, 0.1);
     EXPECT_EQ(L.questions[1].explain, "why");
 }

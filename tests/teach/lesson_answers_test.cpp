@@ -44,15 +44,22 @@ std::size_t index_of(const Lesson& L, const std::string& name) {
     throw std::runtime_error("no body " + name);
 }
 
+// A quantity by its name in lesson files: the tests ask by name, as the lessons do.
+Quantity named(const std::string& name) {
+    if (const std::optional<Quantity> q = quantity_named(name)) return *q;
+    throw std::runtime_error("no quantity named " + name);
+}
+
 // The answer to a lesson's question asked by what it asks (quantity, body, collision), not by
 // its place in the lesson: reordering or adding questions leaves the checks on the right ones.
 const LessonAnswer& ans(const Lesson& L, const std::vector<LessonAnswer>& a, const std::string& quantity,
                         const std::string& body_name = "", int event = 1) {
     const LessonAnswer* found = nullptr;
+    const Quantity asked = named(quantity);
     for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) {
         const LessonQuestion& q = L.questions[i];
         // A what-if question asks the same of another scene: its own tests check it.
-        if (q.quantity != quantity || q.body != body_name || q.event != event || !q.what_if.empty()) continue;
+        if (q.quantity != asked || q.body != body_name || q.event != event || !q.what_if.empty()) continue;
         if (found) throw std::runtime_error(L.id + ": two questions ask " + quantity + " of '" + body_name + "'");
         found = &a[i];
     }
@@ -71,9 +78,10 @@ std::size_t engine_answers(const Lesson& L, const std::vector<LessonAnswer>& a) 
 // The same for point_velocity_* questions that differ only in their point (world frame, m).
 const LessonAnswer& ans_at(const Lesson& L, const std::vector<LessonAnswer>& a, const std::string& quantity,
                            const std::string& body_name, const Vec3& at) {
+    const Quantity asked = named(quantity);
     for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) {
         const LessonQuestion& q = L.questions[i];
-        if (q.quantity == quantity && q.body == body_name && q.at && (*q.at - at).norm() < 1e-12) return a[i];
+        if (q.quantity == asked && q.body == body_name && q.at && (*q.at - at).norm() < 1e-12) return a[i];
     }
     throw std::runtime_error(L.id + ": no question asks " + quantity + " of '" + body_name + "' at that point");
 }
@@ -83,9 +91,10 @@ const LessonAnswer& ans_at(const Lesson& L, const std::vector<LessonAnswer>& a, 
 const LessonAnswer& ans_pair(const Lesson& L, const std::vector<LessonAnswer>& a, const std::string& quantity,
                              const std::string& body_name, const std::string& pa, const std::string& pb,
                              bool what_if = false) {
+    const Quantity asked = named(quantity);
     for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) {
         const LessonQuestion& q = L.questions[i];
-        if (q.quantity == quantity && q.body == body_name && q.has_pair() && q.pair[0] == pa && q.pair[1] == pb &&
+        if (q.quantity == asked && q.body == body_name && q.has_pair() && q.pair[0] == pa && q.pair[1] == pb &&
             q.what_if.empty() != what_if)
             return a[i];
     }
@@ -701,7 +710,7 @@ TEST(LessonAnswers, PenaltyContactMatchesTheDampedOscillator) {
                           "penalty_max_overlap", "penalty_impulse", "penalty_restitution", "impulse"}) {
         LessonQuestion Q;
         Q.text = q;
-        Q.quantity = q;
+        Q.quantity = named(q);
         L.questions.push_back(Q);
     }
     const std::vector<LessonAnswer> a = answer_questions(L);
@@ -757,7 +766,7 @@ TEST(LessonAnswers, APairNamesTheRunsCollisionInItsRoles) {
     L.questions.clear();
     LessonQuestion by_event, by_pair, reversed;
     by_event.text = by_pair.text = reversed.text = "P?";
-    by_event.quantity = by_pair.quantity = reversed.quantity = "impulse";
+    by_event.quantity = by_pair.quantity = reversed.quantity = Quantity::impulse;
     by_event.event = 3;
     by_pair.pair = {"floor", "ball"};
     by_pair.pair_a = index_of(L, "floor");
