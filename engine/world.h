@@ -162,10 +162,10 @@ public:
 
     explicit World(const Scene& scene);  // throws std::invalid_argument for a wrong dimension
 
-    double time() const { return time_; }
+    double time() const { return loop_.time; }
     const Scene& scene() const { return scene_; }
     // Every body's state at time().
-    const std::vector<Body>& bodies() const { return open_ ? bodies_now_ : bodies_; }
+    const std::vector<Body>& bodies() const { return loop_.open ? loop_.bodies_now : bodies_; }
 
     // Called during advance_to each time an impact was resolved and its events appended, with
     // its instant; bodies_at(t) then gives every body there, after the impulses.
@@ -189,13 +189,13 @@ public:
     void set_body(std::size_t i, const Body& body);
 
     // True while body i is held by a resting contact (an island).
-    bool resting(std::size_t i) const { return island_[i] != 0; }
+    bool resting(std::size_t i) const { return islands_.of[i] != 0; }
     // True while body i's island sleeps: at rest, in balance, costing nothing until woken.
-    bool asleep(std::size_t i) const { return asleep_[i] != 0; }
+    bool asleep(std::size_t i) const { return islands_.asleep[i] != 0; }
     // True while body i is stuck to other bodies (see "Stuck bodies").
-    bool welded(std::size_t i) const { return weld_of_[i] >= 0; }
+    bool welded(std::size_t i) const { return welds_.of[i] >= 0; }
     // True while body i advances by time steps (see "Stepped islands").
-    bool stepped(std::size_t i) const { return stepped_[i] != 0; }
+    bool stepped(std::size_t i) const { return steps_.stepped[i] != 0; }
 
     struct Counters {
         std::uint64_t events = 0;       // pair collisions recorded
@@ -231,7 +231,7 @@ public:
     static constexpr double kStepSleepTime = 0.5;       // s
 
 private:
-    // advance_to's start of a substep at time_: its length, the grid, resting forces, the stepped
+    // advance_to's start of a substep at loop_.time: its length, the grid, resting forces, the stepped
     // islands' step, every prediction.
     void begin_substep(std::vector<Event<D>>* events, const ImpactHook& on_impact);
     struct Track {                  // per body: its own clock and current free motion
@@ -269,7 +269,9 @@ private:
     void build_grid(double t0, double t1);
     void insert(std::size_t i, double t0, double t1);
     void swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const;
-    template <class F> void for_each_neighbour(std::size_t i, double t, F&& f);
+    template <class F> void for_each_neighbour(std::size_t i, double t, F&& f) {
+        grid_.for_each_neighbour(i, [&](Vec* lo, Vec* hi) { swept_box(i, t, loop_.substep_end, lo, hi); }, f);
+    }
 
     // Narrow phase.
     Manifold manifold(std::size_t a, std::size_t b) const;  // both at the same time
@@ -317,81 +319,107 @@ private:
     bool may_step(std::size_t i) const;
     // i and j meet only at steps: both stepped, or one stepped and one static.
     bool meet_at_steps(std::size_t i, std::size_t j) const {
-        return (stepped_[i] || stepped_[j]) && (stepped_[i] || bodies_[i].is_static) &&
-               (stepped_[j] || bodies_[j].is_static);
+        return (steps_.stepped[i] || steps_.stepped[j]) && (steps_.stepped[i] || bodies_[i].is_static) &&
+               (steps_.stepped[j] || bodies_[j].is_static);
     }
     void join(std::size_t i, double t);  // body i is stepped from t on (a step is taken at t)
     void wake(std::size_t i);            // a sleeping stepped body moves again (a step is taken)
     void count_impact(std::size_t a, std::size_t b, double t);  // stepping = auto's rule
     double surface_speed(std::size_t i) const;  // |v| + |w| R
     // A step from t of every stepped body awake (all), or (a step taken again between two
-    // steps, `within` a substep) of the islands of the bodies in reseed_, predicted again.
+    // steps, `within` a substep) of the islands of the bodies in steps_.reseed, predicted again.
     void step_islands(double t, std::vector<Event<D>>* events, bool within);
 
-    RunCount runs_;                       // counts this world among every run (run_count.h)
+    RunCount runs_;  // counts this world among every run (run_count.h)
     Scene scene_;
     std::vector<Body> bodies_;
-    std::vector<Shape> shapes_;
-    std::vector<double> radius_;          // bounding radius (m); 0 for planes
-    std::vector<double> inv_min_moment_;  // 1 / the smallest principal moment (spin bound)
-    std::vector<bool> round_;             // disc or sphere: turning does not move the surface
-    std::vector<bool> plane_;
     std::vector<Track> track_;
-    std::vector<std::uint32_t> island_;   // 0: free; else the id of its island solve
-    std::vector<char> asleep_;            // 1: its island sleeps (v, w, a, alpha exactly 0)
-    std::vector<Weld> welds_;             // (dissolved welds stay, with no members)
-    std::vector<int> weld_of_;            // index into welds_; -1: not welded
-    std::unordered_set<std::uint64_t> passed_;  // pairs (a << 32 | b, a < b) the listing answered
-    double rest_smooth_ = 0.0, rest_cornered_ = 0.0;  // m/s: rest_speed() of the two kinds
-    // Per-body scratch of resolve() and settle(), valid where the stamp is current.
-    std::vector<std::uint32_t> mark_;     // reached / in the group / island member
-    std::uint32_t mark_id_ = 0;
-    std::vector<std::uint32_t> searched_; // contacts_of() ran for it in this search
-    std::uint32_t search_ = 0;
-    std::vector<std::size_t> parent_;     // settle()'s union-find
-    std::vector<typename Event<D>::Velocity> before_;  // resolve(): velocities before
-    std::unordered_map<std::uint32_t, std::vector<std::size_t>> members_;
-    std::uint32_t next_island_ = 1;
-    double time_ = 0.0;
-    double substep_end_ = 0.0;
-    // An advance that ended inside a substep (time_ < substep_end_): the next one goes on with
-    // its predictions (heap_), from the event loop's instant `now_`; bodies_now_ is every body
-    // at time_ (bodies_ stay where the substep's events left each of them).
-    bool open_ = false;
-    double now_ = 0.0;
-    std::uint64_t pops_at_now_ = 0;
-    std::vector<Body> bodies_now_;
     Counters counters_;
 
-    BroadPhase<D> grid_;
-    ContactSolver<D> solver_;
+    // The bodies' shapes and what follows from them, fixed for the run (world.cpp: the narrow
+    // phase and the motion bounds).
+    struct Shapes {
+        std::vector<Shape> of;
+        std::vector<double> radius;          // bounding radius (m); 0 for planes
+        std::vector<double> inv_min_moment;  // 1 / the smallest principal moment (spin bound)
+        std::vector<bool> round;             // disc or sphere: turning does not move the surface
+        std::vector<bool> plane;
+    } shapes_;
 
-    std::vector<char> stepped_;    // 1: advances by time steps
-    // 1: its motion is the last step's (a step taken again before its end gives back the
-    // gravity impulse of the time left, see "Stepped islands").
-    std::vector<char> solved_;
-    std::vector<double> until_;    // s: the end of a solved body's step
-    // Some body moves by exact events (not static, not stepped; awake or asleep): only then do
-    // stepped bodies predict impacts (with those bodies: they meet the rest at their steps).
-    // Set at each substep's start, and when a stepped body leaves its island.
-    bool exact_bodies_ = true;
-    bool restep_ = false;          // something joined, woke or was pushed: a step is taken now
-    std::vector<std::size_t> reseed_;  // ... these bodies: their islands are stepped again
-    std::vector<double> still_;    // s a stepped body has been slower than kStepSleepSpeed
-    struct Rate {                  // a pair's recent collisions (count_impact)
-        double since = 0.0;
-        int count = 0;
-    };
-    std::unordered_map<std::uint64_t, Rate> rates_;
-    double step_end_ = -std::numeric_limits<double>::infinity();  // the present step's end
-    IslandStepper<D> stepper_;
+    // The narrow phase's rules for a touching pair (world.cpp).
+    struct Narrow {
+        double rest_smooth = 0.0, rest_cornered = 0.0;  // m/s: rest_speed() of the two kinds
+        std::unordered_set<std::uint64_t> passed;       // pairs (a << 32 | b, a < b) the listing answered
+    } narrow_;
 
-    std::vector<Body> later_;  // solve_island's scratch: an island's bodies a step later
+    BroadPhase<D> grid_;       // broad phase (broad_phase.h)
+    ContactSolver<D> solver_;  // contact solver (contact_solver.h)
 
-    std::vector<Pending> heap_;
-    double stall_time_ = -1.0;                                  // see advance_to()
-    std::unordered_map<std::uint64_t, int> stalls_;
-    std::unordered_set<std::uint64_t> stalled_;
+    // The event loop (advance_to, world.cpp): the substep, its predicted impacts, and an advance paused
+    // inside it. An advance that ended inside a substep (time < substep_end) goes on with its
+    // predictions (heap) from the event loop's instant `now`; bodies_now is every body at time
+    // (bodies_ stay where the substep's events left each of them).
+    struct EventLoop {
+        double time = 0.0;
+        double substep_end = 0.0;
+        bool open = false;
+        double now = 0.0;
+        std::uint64_t pops_at_now = 0;
+        std::vector<Body> bodies_now;
+        std::vector<Pending> heap;
+        double stall_time = -1.0;  // see advance_to()
+        std::unordered_map<std::uint64_t, int> stalls;
+        std::unordered_set<std::uint64_t> stalled;
+    } loop_;
+
+    // Per-body scratch of one instant's searches (resolve(), settle(), step_islands()), valid
+    // where the stamp is current (fresh()).
+    struct Scratch {
+        std::vector<std::uint32_t> mark;  // reached / in the group / island member
+        std::uint32_t mark_id = 0;
+        std::vector<std::uint32_t> searched;  // contacts_of() ran for it in this search
+        std::uint32_t search = 0;
+        std::vector<std::size_t> parent;  // union-find of settle() and step_islands()
+        std::vector<typename Event<D>::Velocity> before;  // resolve(): velocities before
+    } scratch_;
+
+    // Islands and sleeping (islands.cpp).
+    struct Islands {
+        std::vector<std::uint32_t> of;  // per body: 0 free; else the id of its island solve
+        std::vector<char> asleep;       // 1: its island sleeps (v, w, a, alpha exactly 0)
+        std::unordered_map<std::uint32_t, std::vector<std::size_t>> members;
+        std::uint32_t next_id = 1;
+        std::vector<Body> later;  // solve_island's scratch: an island's bodies a step later
+    } islands_;
+
+    // Stuck bodies (weld.cpp).
+    struct Welds {
+        std::vector<Weld> all;  // (dissolved welds stay, with no members)
+        std::vector<int> of;    // per body: index into all; -1: not welded
+    } welds_;
+
+    // Stepped islands (stepped.cpp).
+    struct SteppedIslands {
+        std::vector<char> stepped;  // 1: advances by time steps
+        // 1: its motion is the last step's (a step taken again before its end gives back the
+        // gravity impulse of the time left, see "Stepped islands").
+        std::vector<char> solved;
+        std::vector<double> until;  // s: the end of a solved body's step
+        // Some body moves by exact events (not static, not stepped; awake or asleep): only then
+        // do stepped bodies predict impacts (with those bodies: they meet the rest at their
+        // steps). Set at each substep's start, and when a stepped body leaves its island.
+        bool exact_bodies = true;
+        bool restep = false;              // something joined, woke or was pushed: a step is taken now
+        std::vector<std::size_t> reseed;  // ... these bodies: their islands are stepped again
+        std::vector<double> still;        // s a stepped body has been slower than kStepSleepSpeed
+        struct Rate {                     // a pair's recent collisions (count_impact)
+            double since = 0.0;
+            int count = 0;
+        };
+        std::unordered_map<std::uint64_t, Rate> rates;
+        double end = -std::numeric_limits<double>::infinity();  // the present step's end
+        IslandStepper<D> stepper;
+    } steps_;
 };
 
 using World2 = World<2>;
