@@ -1,4 +1,4 @@
-// Islands and sleeping ("Resting contact" and "Sleeping islands" in engine/world.h): after an
+// Islands and sleeping ("Resting contact" and "Sleeping islands" in docs/stepping.md): after an
 // instant, the bodies held by resting contacts are grouped into islands (union-find over the
 // contacts), each island's constant contact forces for the rest of the substep are found by
 // the contact solver, and an island that has come to rest falls asleep.
@@ -83,7 +83,7 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         }
     }
     // Whatever touches a stepped body is stepped too (and, with stepping = always, whatever
-    // rests on anything): passed on through touching bodies ("Stepped islands" in the header).
+    // rests on anything): passed on through touching bodies ("Stepped islands" in docs/stepping.md).
     for (bool changed = true; changed;) {
         changed = false;
         for (const Contact& ct : contacts) {
@@ -144,7 +144,7 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
     }
 }
 
-// Constant contact forces for the rest of the substep (see "Resting contact" in the header):
+// Constant contact forces for the rest of the substep (see "Resting contact" in docs/stepping.md):
 // first the normal speeds of the resting points are set to zero (the last, shorter than
 // kZenoTime, bounces merged), then forces F >= 0 keep the normal relative acceleration >= 0.
 template <int D>
@@ -208,7 +208,7 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         track_[k].a = (later[k].v - bodies_[k].v) / h;
         track_[k].alpha = (later[k].w - bodies_[k].w) / h;
     }
-    // Sleep (see "Sleeping islands" in the header): every surface point of every member moves
+    // Sleep (see "Sleeping islands" in docs/stepping.md): every surface point of every member moves
     // slower than v_sleep = kZenoTime |g| / 2, the speed the world already counts as resting,
     // and would still after a rest step: |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep.
     const double v_sleep = 0.5 * kZenoTime * gravity().norm();

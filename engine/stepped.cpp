@@ -1,4 +1,4 @@
-// Stepped islands ("Stepped islands" in engine/world.h): which bodies are stepped, and one step
+// Stepped islands ("Stepped islands" in docs/stepping.md): which bodies are stepped, and one step
 // of them all (the solve itself: engine/island_step.h).
 #include "engine/world.h"
 

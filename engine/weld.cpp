@@ -1,4 +1,4 @@
-// Stuck bodies (the stick model; "Stuck bodies" in engine/world.h): the compound two or more
+// Stuck bodies (the stick model; "Stuck bodies" in docs/stepping.md): the compound two or more
 // welded bodies form, its members placed on it, and the world's welds made, moved and undone.
 #include "engine/weld.h"
 
@@ -12,7 +12,7 @@ namespace collide {
 
 namespace {
 
-// Stuck bodies (world.h): two bodies as one rigid body, combined_body's parallel-axis sums with
+// Stuck bodies (docs/stepping.md): two bodies as one rigid body, combined_body's parallel-axis sums with
 // momentum and angular momentum kept. The compound's frame is the world's at this instant
 // (2D angle 0; 3D orientation identity, so its body-frame inertia is the world one).
 template <class B>  // Body2 or Body3

@@ -1,115 +1,14 @@
 // The 2D and 3D worlds: bodies advanced from impact to impact at the exact instant of contact.
+// One algorithm serves both dimensions (World<2>, World<3>); what differs comes from Space<D>
+// (engine/space.h). Between events bodies move freely (ballistic, torque-free turning); each
+// impact is found by time of impact and resolved by the scene's policy and model; resting
+// contacts form islands with constant forces, islands at rest sleep, persistent contacts are
+// stepped in time steps, and the stick model welds bodies together.
 //
-// One algorithm serves both dimensions (World<2>, World<3>); what differs (vectors, spin, shapes,
-// how a body turns) comes from Space<D> and a few overloads (engine/space.h, world.cpp).
-//
-// Motion between events. A free body moves ballistically, x(t) = x + v t + g t^2/2, and turns
-// torque-free (2D: w constant; 3D: engine/rotation.h, with the gyroscopic term). A body in
-// resting contact moves with constant contact forces added (see "Resting contact").
-//
-// Time of impact. For each pair of bodies that may meet (a uniform grid over the bodies' swept
-// bounding boxes, engine/broad_phase.h: about N log N per second simulated, not N^2), the first
-// instant of contact is found to kTouch (1e-10 m; engine/toi.h):
-//   disc/sphere against disc/sphere (same acceleration) or a plane: the smallest root of a
-//     quadratic, in closed form;
-//   any other pair: conservative advancement (engine/toi.h explains the bound), which also
-//     tries longer steps from the gap's observed closing rate and keeps one only when the gap
-//     at its end is still open (a corner turning slowly near the ground would crawl).
-// Each body keeps its own clock; an event moves only the bodies it touches (event-driven
-// simulation), and predictions invalidated by an event are discarded.
-//
-// At an impact every touching contact reachable from the pair is resolved by the scene's
-// policy (docs/conventions.md: n from A into B, +P on B, -P on A):
-//   sequential:   one contact point at a time with the scene's model (the foundation formulas),
-//                 pairs in the order of their body indices, points in manifold order, repeated
-//                 until no touching point approaches (Newton's cradle: (v, 0, 0) -> (0, 0, v));
-//                 a sequence still going after 64 passes per body is finished simultaneously;
-//   simultaneous: all touching points of the group together: impulses P_k >= 0 such that each
-//                 point leaves with un+ >= -e un- (equality where P_k > 0), solved by projected
-//                 Gauss-Seidel to 1e-13 of the largest impulse (for two points this is the LCP
-//                 of Box2D's block solver; the cradle gives (-v/3, 2v/3, 2v/3)). Friction:
-//                 coulomb clamps each point's
-//                 tangential impulse to mu P_n; matrix and stick hold the tangential velocity at
-//                 -e ut- and 0. A group of a single point uses the model's own formula. routh
-//                 (engine/routh.h) integrates one point's impact: a group of several points is
-//                 solved as coulomb's (Newton's e on each point, tangential impulses in the
-//                 cone), and the sequential policy answers each point with routh itself.
-//
-// Resting contact. A touching contact with |un| <= v_rest is resting. Its bodies form an island
-// whose contact forces for the rest of the substep (at most kRestStep) are found like the
-// simultaneous impulses with e = 0: normal relative acceleration >= 0, forces >= 0 (and the
-// friction cone). A box on the ground gets exactly m g and does not move at all.
-// v_rest = kZenoTime |g| / 2: a bounce that slow would land within kZenoTime (1e-12 s); the
-// infinitely many bounces of e < 1 accumulate at a finite time and this merges the last ones
-// (at most kZenoTime / (1 - e) of them). It is a time tolerance, not a restitution threshold.
-// Shapes with corners (polygons, boxes) also rest when their bounce would not rise above
-// kTouch (v <= sqrt(4 |g| kTouch)). The island's forces are found by projected Gauss-Seidel
-// finished by an exact solve on its active set (engine/contact_solver.h, "active-set polish"), so a
-// stack in balance gets forces that balance it to round-off.
-//
-// Sleeping islands. An island whose every surface point moves slower than v_sleep =
-// kZenoTime |g| / 2 (the speed already counted as resting) and would still after a rest step,
-// |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep, sleeps: v, w, a and alpha are set to
-// exactly zero and its bodies no longer move, are neither re-solved each substep nor
-// predicted (a pair of sleepers or a sleeper and a static body has nothing to meet). A body
-// still moving predicts against sleepers as against any body; when it reaches one (an impact
-// or a new resting contact) the sleeper's whole island wakes, is solved again with it and
-// may fall asleep again. A box on the ground, a settled column, a pyramid in balance cost
-// nothing once asleep; with nothing awake, advance_to jumps to its end.
-//
-// Stepped islands (the scene's `stepping`, engine/scene.h). Exact events collapse into
-// micro-collisions where contacts persist (boxes resting on boxes: a pile, a tower); there
-// the world advances by time steps instead. Rule (stepping = auto): a pair of moving bodies
-// that has collided kPersistImpacts times within kPersistWindow is in persistent contact; both
-// are stepped from then on, and so is every moving body that touches a stepped body (at an
-// impact or at a step's start). With stepping = always every body is stepped from its first
-// touching contact; with never, none is. Welded bodies and the page's listing are never stepped.
-// The stepped bodies advance together in steps of kIslandStep (engine/island_step.h: Moreau-
-// Jean at the impulse level, warm-started Gauss-Seidel sweeps, speculative contacts within
-// kSpeculative plus what the step can close, split-impulse correction of penetration beyond
-// 0.05 mm): at each step's start their contacts are found and solved, and during the step they
-// move at their new velocities (x+ = x- + h v+; a 3D body turns torque-free). What differs
-// from the exact world: a collision between stepped bodies happens at a step's start, up to
-// one step early, with Newton's law (e of the pair, no threshold) applied to the approach speed
-// before the step; friction is Coulomb's cone for coulomb and routh scenes (matrix and stick:
-// sticking, frictionless: none); a step records as an event only a pair's first contact (a
-// pair that carried no impulse at the previous step). A free body still meets a stepped one at
-// the exact instant (the stepped body moves on a straight line within the step): the impact is
-// resolved there by the scene's model and policy on the free body's contacts (the stepped
-// body answers with its own mass and inertia; its other contacts act at the next step) and
-// the free body joins the stepped ones. A stepped body with no contact within the margin at a
-// step's start is free again (exact events); a stepped island whose every surface point moved
-// slower than kStepSleepSpeed for kStepSleepTime falls asleep (v and w exactly zero) until
-// something touches it. Whenever a body joins or wakes, or an impact changes a stepped body's
-// motion, its island takes a new step at once from that instant (the others go on), so
-// nothing pushed between two steps is pushed into its neighbours; the bodies of the step cut
-// short give back the gravity impulse of the time left, m g (t_end - t) (momentum kept; their
-// positions moved on the step's velocity meanwhile: off by at most g h^2, 27 um).
-//
-// Stuck bodies (the stick model). An impact resolved by the stick model between two dynamic
-// bodies welds them: from then on they move as one rigid body (a weld), whose mass, centre and
-// inertia are the parallel-axis sums of its members' (combined_body in engine/response.h) and
-// whose velocity and spin keep the members' total momentum and angular momentum. The compound
-// moves like any free body (ballistic centre, torque-free turning with the gyroscopic term), and
-// each member is placed from it: x = xc + R d, v = vc + w x (x - xc), w = wc. So a stuck pair
-// orbits its common centre of mass instead of flying apart. Members of one weld never collide
-// with each other; an impact of a member with any other body is resolved with the compound's
-// mass and inertia (and, under the stick model, welds that body too). A static partner is not
-// welded: the stick response already stops the body against it.
-//
-// The page's listing as written (model page-listing, 3D, sequential only; the errata lesson).
-// Each pair is answered once with the listing's velocities (engine/page.h); as its impulse can
-// push the bodies together (erratum 1) the pair is then let through each other for the rest of
-// the run instead of being answered again and again.
-//
-// Known limits: a weld in resting contact or in a simultaneous group of several points with
-// another body is not modelled (advance_to throws a clear error). Resting contact is integrated with constant forces per substep, so bodies
-// sliding or spinning over each other in resting contact (a disc sliding off a disc, a box
-// spinning on a box) drift into each other by micrometres (documented bound 5e-5 m) and
-// curved ones chatter (many tiny impacts). An instant at which a pair is predicted to meet
-// again and again with no impact (a prediction that disagrees with the contact manifold) is
-// left to the next substep after 8 tries; one still stuck after kMaxWorkPerInstant
-// predictions is reported by advance_to as an error (never a hang).
+// How a scene is stepped, in full: docs/stepping.md. Its sections ("Motion between events",
+// "Time of impact", "At an impact", "Resting contact", "Sleeping islands", "Stepped islands",
+// "Stuck bodies", "The page's listing as written", "Known limits") are what this code's
+// comments refer to. The state below is grouped by the concern that owns it, each in its file.
 #pragma once
 
 #include <array>
@@ -222,7 +121,7 @@ public:
     static constexpr double kShortestSubstep = 1e-5;
     static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
     static constexpr std::uint64_t kMaxWorkPerInstant = 100000;   // predictions popped at one t
-    // Stepped islands (see above).
+    // Stepped islands (docs/stepping.md).
     static constexpr double kIslandStep = 1.0 / 600.0;  // s
     static constexpr int kPersistImpacts = 16;
     static constexpr double kPersistWindow = 0.1;       // s
@@ -355,7 +254,7 @@ private:
     BroadPhase<D> grid_;       // broad phase (broad_phase.h)
     ContactSolver<D> solver_;  // contact solver (contact_solver.h)
 
-    // The event loop (advance_to, world.cpp): the substep, its predicted impacts, and an advance paused
+    // The event loop (advance.cpp): the substep, its predicted impacts, and an advance paused
     // inside it. An advance that ended inside a substep (time < substep_end) goes on with its
     // predictions (heap) from the event loop's instant `now`; bodies_now is every body at time
     // (bodies_ stay where the substep's events left each of them).
