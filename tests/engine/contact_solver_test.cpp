@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "engine/contact_solver.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide {
 namespace {
@@ -18,7 +18,7 @@ constexpr double kG = 9.81;    // m/s^2
 constexpr double kDt = 1e-3;   // s: the velocity gravity adds over one rest step
 constexpr double kTol = 1e-12;  // relative: the solves below are exact up to round-off
 
-// The bodies as the scenes build them (tests/engine/world_scenes.h: inertia of uniform shapes).
+// The bodies as the scenes build them (tests/scenes/world_scenes.h: inertia of uniform shapes).
 Body2 ground2() { return scenes::half_plane("ground", Vec2(0.0, 1.0), 0.0).body2; }
 Body3 ground3() { return scenes::half_space("ground", Vec3::UnitY(), 0.0).body3; }
 
