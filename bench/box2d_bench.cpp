@@ -1,4 +1,4 @@
-// box2d/...: the 2D scenes of world2d/... (tests/engine/world_scenes.h, the same builders) run by
+// box2d/...: the 2D scenes of world2d/... (tests/scenes/world_scenes.h, the same builders) run by
 // Box2D 2.4.1 through collide compare's adapter (compare/box2d_world.h: the same masses,
 // inertia, initial state, and collide's material rules with no restitution threshold), one
 // second of simulated time per iteration, to set beside bench/world_bench.cpp:
@@ -26,7 +26,7 @@
 
 #include "bench/settling.h"
 #include "compare/box2d_world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// bullet/...: the 3D contact-rich scenes of world3d/... (tests/engine/world_scenes.h, the same
+// bullet/...: the 3D contact-rich scenes of world3d/... (tests/scenes/world_scenes.h, the same
 // builders) run by Bullet 3.24's btDiscreteDynamicsWorld through compare/bullet_world.h (the same
 // masses, principal inertia, initial state, pair friction and restitution; no restitution
 // threshold, as collide), at a fixed 600 Hz step, one second of simulated time per iteration in
@@ -18,7 +18,7 @@
 
 #include "bench/settling.h"
 #include "compare/bullet_world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// collide-long-run: the robustness long runs (tests/engine/long_runs.h), timed, with their
+// collide-long-run: the robustness long runs (tests/scenes/long_runs.h), timed, with their
 // figures printed: 10^6 output steps of each scene by default. It measures and reports; the
 // test suite asserts the bounds on shorter runs (tests/engine/long_run_test.cpp).
 //
@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "tests/engine/long_runs.h"
+#include "tests/scenes/long_runs.h"
 
 int main(int argc, char** argv) {
     using namespace collide::long_runs;

@@ -3,7 +3,7 @@
 // (collide's world is asked to stop at each frame, as `collide step` and `collide gui` ask it;
 // Box2D's and Bullet's fixed steps are the same whether stopped or not), and counters measured
 // alike for every engine: the poses and velocities are read back from the engine and judged by
-// collide's own narrow phase (tests/engine/world_scenes.h: deepest_overlap,
+// collide's own narrow phase (tests/scenes/world_scenes.h: deepest_overlap,
 // fastest_surface_speed).
 //   penetration_mm      the deepest overlap between any two bodies (or a body and a wall) at
 //                       the end of the second, mm;
@@ -19,7 +19,7 @@
 #include <benchmark/benchmark.h>
 
 #include "engine/scene.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide::bench {
 

@@ -13,7 +13,7 @@
 //           world3d/bin/100 beside bullet/bin/100 (600 Hz);
 //   world3d/tower/6: six 1 kg boxes stacked on the ground knocked over by a 2 kg ball thrown at
 //           4 m/s, Coulomb 0.5, e = 0.3, beside bullet/tower/6.
-// The scenes are built by tests/engine/world_scenes.h (the peers use the same builders). Each
+// The scenes are built by tests/scenes/world_scenes.h (the peers use the same builders). Each
 // iteration starts from a copy of the same prepared world (copied with the timer paused).
 // Counters: "events" (collisions in the second); gas and pile "energy_drift"
 // ((E(1 s) - E(0)) / E(0); kinetic for the gas, kinetic plus potential for the pile). Bin and
@@ -28,7 +28,7 @@
 
 #include "bench/settling.h"
 #include "engine/world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace {
 
@@ -76,7 +76,7 @@ void pile(benchmark::State& state) {
     simulate_one_second<D>(state, scenes::pile(D, p), true);
 }
 
-// 20 rows of boxes (210) resting on the ground (tests/engine/world_scenes.h, as Box2D's
+// 20 rows of boxes (210) resting on the ground (tests/scenes/world_scenes.h, as Box2D's
 // pyramid benchmark), Coulomb friction 0.6, e = 0.
 void pyramid20(benchmark::State& state) {
     simulate_one_second<2>(state, scenes::pyramid({}), true);

@@ -1,5 +1,5 @@
 // The contact solver: impulses for many contact points at once, the simultaneous policy's
-// impacts and the resting islands' forces (engine/world.h, "At an impact" and "Resting
+// impacts and the resting islands' forces (docs/stepping.md, "At an impact" and "Resting
 // contact"). It knows contact points (rows) and bodies, not the world that found them.
 //
 // Each contact point k is a row: its normal n, lever arms ra, rb, and a goal (PointGoal): a

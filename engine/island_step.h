@@ -1,4 +1,4 @@
-// Stepped islands ("Stepped islands" in engine/world.h): one time step of length h of the bodies
+// Stepped islands ("Stepped islands" in docs/stepping.md): one time step of length h of the bodies
 // whose contacts persist, at the impulse level (Moreau-Jean's time-stepping, as in Siconos; the
 // sweeps are those of Box2D and Bullet).
 //

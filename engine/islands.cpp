@@ -1,4 +1,4 @@
-// Islands and sleeping ("Resting contact" and "Sleeping islands" in engine/world.h): after an
+// Islands and sleeping ("Resting contact" and "Sleeping islands" in docs/stepping.md): after an
 // instant, the bodies held by resting contacts are grouped into islands (union-find over the
 // contacts), each island's constant contact forces for the rest of the substep are found by
 // the contact solver, and an island that has come to rest falls asleep.
@@ -20,8 +20,8 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 template <int D>
 bool World<D>::same_island(std::size_t i, std::size_t j) const {
-    const std::uint32_t a = bodies_[i].is_static ? 0 : island_[i];
-    const std::uint32_t b = bodies_[j].is_static ? 0 : island_[j];
+    const std::uint32_t a = bodies_[i].is_static ? 0 : islands_.of[i];
+    const std::uint32_t b = bodies_[j].is_static ? 0 : islands_.of[j];
     if (bodies_[i].is_static) return b != 0;
     if (bodies_[j].is_static) return a != 0;
     return a != 0 && a == b;
@@ -32,8 +32,8 @@ bool World<D>::same_island(std::size_t i, std::size_t j) const {
 template <int D>
 void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
     std::vector<std::size_t> bodies;
-    const std::uint32_t in = fresh(&mark_, &mark_id_);
-    fresh(&searched_, &search_);
+    const std::uint32_t in = fresh(&scratch_.mark, &scratch_.mark_id);
+    fresh(&scratch_.searched, &scratch_.search);
     // A body brings the other members of the island it was in: their forces change too.
     std::vector<std::size_t> stack;
     auto add = [&](std::size_t first) {
@@ -41,27 +41,27 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         while (!stack.empty()) {
             const std::size_t k = stack.back();
             stack.pop_back();
-            if (bodies_[k].is_static || stepped_[k] || mark_[k] == in) continue;
-            mark_[k] = in;
-            parent_[k] = k;
+            if (bodies_[k].is_static || steps_.stepped[k] || scratch_.mark[k] == in) continue;
+            scratch_.mark[k] = in;
+            scratch_.parent[k] = k;
             bodies.push_back(k);
-            if (island_[k] == 0) continue;
-            auto it = members_.find(island_[k]);
-            if (it == members_.end()) continue;
+            if (islands_.of[k] == 0) continue;
+            auto it = islands_.members.find(islands_.of[k]);
+            if (it == islands_.members.end()) continue;
             const std::vector<std::size_t> others = std::move(it->second);
-            members_.erase(it);
+            islands_.members.erase(it);
             stack.insert(stack.end(), others.rbegin(), others.rend());
         }
     };
     for (std::size_t k : reached) add(k);
     // Islands: connected through resting contacts (touching, |un| <= v_rest at every point),
-    // found by union-find over parent_.
+    // found by union-find over scratch_.parent.
     auto root = [&](std::size_t k) {
         std::size_t r = k;
-        while (parent_[r] != r) r = parent_[r];
-        while (parent_[k] != r) {
-            const std::size_t next = parent_[k];
-            parent_[k] = r;
+        while (scratch_.parent[r] != r) r = scratch_.parent[r];
+        while (scratch_.parent[k] != r) {
+            const std::size_t next = scratch_.parent[k];
+            scratch_.parent[k] = r;
             k = next;
         }
         return r;
@@ -83,24 +83,24 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         }
     }
     // Whatever touches a stepped body is stepped too (and, with stepping = always, whatever
-    // rests on anything): passed on through touching bodies ("Stepped islands" in the header).
+    // rests on anything): passed on through touching bodies ("Stepped islands" in docs/stepping.md).
     for (bool changed = true; changed;) {
         changed = false;
         for (const Contact& ct : contacts) {
-            const bool joins = stepped_[ct.a] || stepped_[ct.b] || scene_.stepping == StepMode::always;
+            const bool joins = steps_.stepped[ct.a] || steps_.stepped[ct.b] || scene_.stepping == StepMode::always;
             if (!joins) continue;
             for (std::size_t k : {ct.a, ct.b})
-                if (!stepped_[k] && may_step(k)) {
+                if (!steps_.stepped[k] && may_step(k)) {
                     join(k, t);
                     changed = true;
                 }
         }
     }
     resting.erase(std::remove_if(resting.begin(), resting.end(),
-                                 [&](const Contact& ct) { return stepped_[ct.a] || stepped_[ct.b]; }),
+                                 [&](const Contact& ct) { return steps_.stepped[ct.a] || steps_.stepped[ct.b]; }),
                   resting.end());
     for (const Contact& ct : resting)
-        if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) parent_[root(ct.a)] = root(ct.b);
+        if (!bodies_[ct.a].is_static && !bodies_[ct.b].is_static) scratch_.parent[root(ct.a)] = root(ct.b);
     // The islands in the order of their roots, each's contacts by pair.
     std::vector<std::pair<std::size_t, std::size_t>> order;  // (root, index in resting)
     for (std::size_t c = 0; c < resting.size(); ++c)
@@ -112,14 +112,14 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
     });
     // Those that joined move freely until the next step.
     for (std::size_t k : bodies)
-        if (stepped_[k]) {
-            insert(k, t, substep_end_);
+        if (steps_.stepped[k]) {
+            insert(k, t, loop_.substep_end);
             predict(k, t);
         }
-    bodies.erase(std::remove_if(bodies.begin(), bodies.end(), [&](std::size_t k) { return stepped_[k] != 0; }),
+    bodies.erase(std::remove_if(bodies.begin(), bodies.end(), [&](std::size_t k) { return steps_.stepped[k] != 0; }),
                  bodies.end());
     for (std::size_t k : bodies) set_free(k);
-    const std::uint32_t member = fresh(&mark_, &mark_id_);
+    const std::uint32_t member = fresh(&scratch_.mark, &scratch_.mark_id);
     std::vector<Contact> island;
     std::vector<std::size_t> members;
     for (std::size_t first = 0; first < order.size();) {
@@ -130,8 +130,8 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         for (std::size_t c = first; c < last; ++c) {
             island.push_back(resting[order[c].second]);
             for (std::size_t k : {island.back().a, island.back().b})
-                if (!bodies_[k].is_static && mark_[k] != member) {
-                    mark_[k] = member;
+                if (!bodies_[k].is_static && scratch_.mark[k] != member) {
+                    scratch_.mark[k] = member;
                     members.push_back(k);
                 }
         }
@@ -139,22 +139,22 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
         first = last;
     }
     for (std::size_t k : bodies) {
-        insert(k, t, substep_end_);
+        insert(k, t, loop_.substep_end);
         predict(k, t);  // also a new sleeper: its neighbours predicted it still moving
     }
 }
 
-// Constant contact forces for the rest of the substep (see "Resting contact" in the header):
+// Constant contact forces for the rest of the substep (see "Resting contact" in docs/stepping.md):
 // first the normal speeds of the resting points are set to zero (the last, shorter than
 // kZenoTime, bounces merged), then forces F >= 0 keep the normal relative acceleration >= 0.
 template <int D>
 void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
                             double t) {
     ++counters_.island_solves;
-    const std::uint32_t id = next_island_++;
-    if (next_island_ == 0) next_island_ = 1;
-    members_[id] = members;
-    for (std::size_t k : members) island_[k] = id;
+    const std::uint32_t id = islands_.next_id++;
+    if (islands_.next_id == 0) islands_.next_id = 1;
+    islands_.members[id] = members;
+    for (std::size_t k : members) islands_.of[k] = id;
     // The slow points' normal speeds to zero; the others (parting) are left alone.
     std::vector<PointGoal> goals;
     for (const Contact& c : *contacts) {
@@ -171,12 +171,12 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
     }
     std::vector<Contact> merged = *contacts;
     solve_points(&merged, goals, &bodies_);
-    const double h = substep_end_ - t;
+    const double h = loop_.substep_end - t;
     if (!(h > 0.0)) return;
     // Velocities a step h later with gravity, then the impulses that keep every point from
     // approaching; their average over h is the force.
-    // (later_ is indexed like bodies_; only the island's bodies are copied into it.)
-    std::vector<Body>& later = later_;
+    // (islands_.later is indexed like bodies_; only the island's bodies are copied into it.)
+    std::vector<Body>& later = islands_.later;
     if (later.size() != bodies_.size()) later = bodies_;
     for (const Contact& c : *contacts)
         for (std::size_t k : {c.a, c.b}) later[k] = bodies_[k];
@@ -189,7 +189,7 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         // n), the centripetal part of sliding over a curved partner. Constant forces then
         // follow the curve to third order in the substep instead of drifting into it.
         double curve = 0.0;
-        if (round_[c.a] && round_[c.b]) {
+        if (shapes_.round[c.a] && shapes_.round[c.b]) {
             const Vec d = bodies_[c.b].position - bodies_[c.a].position;
             const Vec u = bodies_[c.b].v - bodies_[c.a].v;
             const Vec ut = u - u.dot(c.m.normal) * c.m.normal;
@@ -208,14 +208,14 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         track_[k].a = (later[k].v - bodies_[k].v) / h;
         track_[k].alpha = (later[k].w - bodies_[k].w) / h;
     }
-    // Sleep (see "Sleeping islands" in the header): every surface point of every member moves
+    // Sleep (see "Sleeping islands" in docs/stepping.md): every surface point of every member moves
     // slower than v_sleep = kZenoTime |g| / 2, the speed the world already counts as resting,
     // and would still after a rest step: |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep.
     const double v_sleep = 0.5 * kZenoTime * gravity().norm();
     for (std::size_t k : members) {
         const Track& tk = track_[k];
-        const double speed = bodies_[k].v.norm() + magnitude(bodies_[k].w) * radius_[k] +
-                             (tk.a.norm() + magnitude(tk.alpha) * radius_[k]) * kRestStep;
+        const double speed = bodies_[k].v.norm() + magnitude(bodies_[k].w) * shapes_.radius[k] +
+                             (tk.a.norm() + magnitude(tk.alpha) * shapes_.radius[k]) * kRestStep;
         if (!(speed <= v_sleep)) return;
     }
     ++counters_.sleeps;
@@ -225,7 +225,7 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         track_[k].a = zero<Vec>();
         track_[k].alpha = zero<Spin>();
         ++track_[k].version;
-        asleep_[k] = 1;
+        islands_.asleep[k] = 1;
     }
 }
 

@@ -21,7 +21,7 @@ enum class Policy { sequential, simultaneous };
 const char* policy_name(Policy p);
 
 // Which contacts of a 2D or 3D world advance by time steps instead of event by event
-// (engine/world.h, "Stepped islands"):
+// (docs/stepping.md, "Stepped islands"):
 //   automatic: where contacts persist (two moving bodies colliding again and again) and
 //              whatever touches them; every other impact exact;
 //   always:    every body from its first touching contact on (impacts of free bodies exact);

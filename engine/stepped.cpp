@@ -1,4 +1,4 @@
-// Stepped islands ("Stepped islands" in engine/world.h): which bodies are stepped, and one step
+// Stepped islands ("Stepped islands" in docs/stepping.md): which bodies are stepped, and one step
 // of them all (the solve itself: engine/island_step.h).
 #include "engine/world.h"
 
@@ -27,31 +27,31 @@ Manifold3 step_manifold(const Shape3& a, const Pose3& pa, const Shape3& b, const
 
 template <int D>
 bool World<D>::may_step(std::size_t i) const {
-    return !bodies_[i].is_static && weld_of_[i] < 0 && scene_.stepping != StepMode::never &&
+    return !bodies_[i].is_static && welds_.of[i] < 0 && scene_.stepping != StepMode::never &&
            scene_.model != Model::stick && scene_.model != Model::page_listing;
 }
 
 template <int D>
 void World<D>::join(std::size_t i, double t) {
-    if (stepped_[i] || !may_step(i)) return;
+    if (steps_.stepped[i] || !may_step(i)) return;
     drift(i, t);
     set_free(i);  // out of its resting island
-    stepped_[i] = 1;
-    solved_[i] = 0;
-    still_[i] = 0.0;
-    restep_ = true;
-    reseed_.push_back(i);
+    steps_.stepped[i] = 1;
+    steps_.solved[i] = 0;
+    steps_.still[i] = 0.0;
+    steps_.restep = true;
+    steps_.reseed.push_back(i);
     ++counters_.joined;
 }
 
 template <int D>
 void World<D>::wake(std::size_t i) {
-    if (!asleep_[i]) return;
-    asleep_[i] = 0;
-    solved_[i] = 0;
-    still_[i] = 0.0;
-    restep_ = true;
-    reseed_.push_back(i);
+    if (!islands_.asleep[i]) return;
+    islands_.asleep[i] = 0;
+    steps_.solved[i] = 0;
+    steps_.still[i] = 0.0;
+    steps_.restep = true;
+    steps_.reseed.push_back(i);
     ++track_[i].version;
 }
 
@@ -61,10 +61,10 @@ void World<D>::wake(std::size_t i) {
 template <int D>
 void World<D>::count_impact(std::size_t a, std::size_t b, double t) {
     if (scene_.stepping != StepMode::automatic) return;
-    if ((round_[a] || plane_[a]) && (round_[b] || plane_[b])) return;
+    if ((shapes_.round[a] || shapes_.plane[a]) && (shapes_.round[b] || shapes_.plane[b])) return;
     for (std::size_t k : {a, b})
         if (!bodies_[k].is_static && !may_step(k)) return;
-    Rate& r = rates_[static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b)];
+    auto& r = steps_.rates[static_cast<std::uint64_t>(std::min(a, b)) << 32 | std::max(a, b)];
     if (t - r.since > kPersistWindow) {
         r.since = t;
         r.count = 0;
@@ -76,7 +76,7 @@ void World<D>::count_impact(std::size_t a, std::size_t b, double t) {
 
 template <int D>
 double World<D>::surface_speed(std::size_t i) const {
-    return bodies_[i].v.norm() + magnitude(bodies_[i].w) * radius_[i];
+    return bodies_[i].v.norm() + magnitude(bodies_[i].w) * shapes_.radius[i];
 }
 
 // One step of every stepped body that is awake, at t (the step's start): their contacts within
@@ -87,60 +87,61 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
     const double h = kIslandStep;
     const double g = gravity().norm();
     std::vector<std::size_t> members;
-    const std::uint32_t in = fresh(&mark_, &mark_id_);
+    const std::uint32_t in = fresh(&scratch_.mark, &scratch_.mark_id);
     if (!within) {
-        step_end_ = t + h;
+        steps_.end = t + h;
         for (std::size_t i = 0; i < bodies_.size(); ++i)
-            if (stepped_[i] && !asleep_[i]) members.push_back(i);
+            if (steps_.stepped[i] && !islands_.asleep[i]) members.push_back(i);
     } else {
-        for (std::size_t i : reseed_)
-            if (stepped_[i] && !asleep_[i] && mark_[i] != in) {
+        for (std::size_t i : steps_.reseed)
+            if (steps_.stepped[i] && !islands_.asleep[i] && scratch_.mark[i] != in) {
                 members.push_back(i);
-                mark_[i] = in;
+                scratch_.mark[i] = in;
             }
     }
-    for (std::size_t i : members) mark_[i] = in;
-    restep_ = false;
-    reseed_.clear();
+    for (std::size_t i : members) scratch_.mark[i] = in;
+    steps_.restep = false;
+    steps_.reseed.clear();
     if (members.empty()) return;
     // The gravity impulse a body solved for a step longer than it moved on gives back.
-    auto left = [&](std::size_t i) { return solved_[i] ? std::max(0.0, until_[i] - t) : 0.0; };
+    auto left = [&](std::size_t i) { return steps_.solved[i] ? std::max(0.0, steps_.until[i] - t) : 0.0; };
     ++counters_.steps;
-    fresh(&searched_, &search_);
+    fresh(&scratch_.searched, &scratch_.search);
     std::vector<StepContact<D>> contacts;
     std::vector<int> touches(bodies_.size(), 0);  // contacts within the margin, per body
     for (std::size_t q = 0; q < members.size(); ++q) {
         const std::size_t i = members[q];
         drift(i, t);
-        searched_[i] = search_;
+        scratch_.searched[i] = scratch_.search;
         const double reach_i = kSpeculative + (surface_speed(i) + g * h) * h;
         auto box = [&](Vec* lo, Vec* hi) {
-            swept_box(i, t, substep_end_, lo, hi);
+            swept_box(i, t, loop_.substep_end, lo, hi);
             *lo -= Vec::Constant(reach_i);
             *hi += Vec::Constant(reach_i);
         };
         grid_.for_each_neighbour(i, box, [&](std::size_t j) {
-            if (searched_[j] == search_ && !plane_[j]) return;  // from j's side
-            if (weld_of_[j] >= 0 || passed(i, j)) return;
+            if (scratch_.searched[j] == scratch_.search && !shapes_.plane[j]) return;  // from j's side
+            if (welds_.of[j] >= 0 || passed(i, j)) return;
             drift(j, t);
             const std::size_t a = std::min(i, j), b = std::max(i, j);
             const double margin = kSpeculative + (surface_speed(a) + surface_speed(b) + 2.0 * g * h) * h;
             if (apart(a, b, margin)) return;  // their bounding circles (spheres) apart
-            const Manifold m = step_manifold(shapes_[a], pose_of(bodies_[a]), shapes_[b], pose_of(bodies_[b]), margin);
+            const Manifold m =
+                step_manifold(shapes_.of[a], pose_of(bodies_[a]), shapes_.of[b], pose_of(bodies_[b]), margin);
             if (m.count == 0) return;
-            if (!bodies_[j].is_static && !stepped_[j]) {
+            if (!bodies_[j].is_static && !steps_.stepped[j]) {
                 // A moving body not stepped joins when it touches (nearer, its impact is exact).
                 if (m.separation > kTouch || !may_step(j)) return;
                 join(j, t);
                 members.push_back(j);
-                mark_[j] = in;
-            } else if (stepped_[j] && asleep_[j]) {
+                scratch_.mark[j] = in;
+            } else if (steps_.stepped[j] && islands_.asleep[j]) {
                 wake(j);
                 members.push_back(j);
-                mark_[j] = in;
-            } else if (stepped_[j] && mark_[j] != in) {  // the rest of a restepped island
+                scratch_.mark[j] = in;
+            } else if (steps_.stepped[j] && scratch_.mark[j] != in) {  // the rest of a restepped island
                 members.push_back(j);
-                mark_[j] = in;
+                scratch_.mark[j] = in;
             }
             StepContact<D> c;
             c.a = a;
@@ -160,63 +161,64 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
             stepped.push_back(i);
             continue;
         }
-        stepped_[i] = 0;
-        exact_bodies_ = true;
+        steps_.stepped[i] = 0;
+        steps_.exact_bodies = true;
         bodies_[i].v -= gravity() * left(i);
-        solved_[i] = 0;
+        steps_.solved[i] = 0;
         set_free(i);
-        insert(i, t, substep_end_);
+        insert(i, t, loop_.substep_end);
     }
     for (std::size_t i : stepped) {
         bodies_[i].v -= gravity() * left(i);  // the step cut short: see the header
-        before_[i] = {bodies_[i].v + gravity() * h, bodies_[i].w};
+        scratch_.before[i] = {bodies_[i].v + gravity() * h, bodies_[i].w};
     }
-    stepper_.step(&contacts, stepped, &bodies_, gravity(), h);
+    steps_.stepper.step(&contacts, stepped, &bodies_, gravity(), h);
     for (std::size_t i : stepped) {
         Track& k = track_[i];
         k.a = zero<Vec>();  // x+ = x- + h v+
         k.alpha = zero<Spin>();
         k.t = t;
         ++k.version;
-        solved_[i] = 1;
-        until_[i] = t + h;
+        steps_.solved[i] = 1;
+        steps_.until[i] = t + h;
     }
 
     // A pair's first contact is an impact: recorded as an event.
     for (const StepContact<D>& c : contacts) {
         if (!c.fresh || !(c.weight > 0.0) || !(c.approach < -rest_speed(c.a, c.b))) continue;
         auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
-        record(c.a, c.b, t, c.m.normal, c.impulse, c.moment / c.weight, stepped_[c.a] ? before_[c.a] : vel(c.a),
-               stepped_[c.b] ? before_[c.b] : vel(c.b), events);
+        record(c.a, c.b, t, c.m.normal, c.impulse, c.moment / c.weight,
+               steps_.stepped[c.a] ? scratch_.before[c.a] : vel(c.a),
+               steps_.stepped[c.b] ? scratch_.before[c.b] : vel(c.b), events);
     }
 
     // Sleeping: islands (connected through contacts between moving bodies) whose every body has
     // been slow for kStepSleepTime.
     for (std::size_t i : stepped) {
-        parent_[i] = i;
-        still_[i] = surface_speed(i) <= kStepSleepSpeed ? still_[i] + h : 0.0;
+        scratch_.parent[i] = i;
+        steps_.still[i] = surface_speed(i) <= kStepSleepSpeed ? steps_.still[i] + h : 0.0;
     }
     auto root = [&](std::size_t k) {
-        while (parent_[k] != k) k = parent_[k] = parent_[parent_[k]];
+        while (scratch_.parent[k] != k) k = scratch_.parent[k] = scratch_.parent[scratch_.parent[k]];
         return k;
     };
     for (const StepContact<D>& c : contacts)
-        if (stepped_[c.a] && stepped_[c.b]) parent_[root(c.a)] = root(c.b);
+        if (steps_.stepped[c.a] && steps_.stepped[c.b]) scratch_.parent[root(c.a)] = root(c.b);
     std::vector<double> least(bodies_.size(), std::numeric_limits<double>::infinity());
-    for (std::size_t i : stepped) least[root(i)] = std::min(least[root(i)], still_[i]);
+    for (std::size_t i : stepped) least[root(i)] = std::min(least[root(i)], steps_.still[i]);
     for (std::size_t i : stepped) {
         if (least[root(i)] >= kStepSleepTime) {
             bodies_[i].v = zero<Vec>();
             bodies_[i].w = zero<Spin>();
-            asleep_[i] = 1;
+            islands_.asleep[i] = 1;
             if (root(i) == i) ++counters_.sleeps;
         }
-        insert(i, t, substep_end_);
+        insert(i, t, loop_.substep_end);
     }
     if (within)
         for (std::size_t i : stepped) predict(i, t);
-    restep_ = false;  // (what woke here is in this step)
-    reseed_.clear();
+    steps_.restep = false;  // (what woke here is in this step)
+    steps_.reseed.clear();
 }
 
 template bool World<2>::may_step(std::size_t) const;

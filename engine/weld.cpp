@@ -1,4 +1,4 @@
-// Stuck bodies (the stick model; "Stuck bodies" in engine/world.h): the compound two or more
+// Stuck bodies (the stick model; "Stuck bodies" in docs/stepping.md): the compound two or more
 // welded bodies form, its members placed on it, and the world's welds made, moved and undone.
 #include "engine/weld.h"
 
@@ -12,7 +12,7 @@ namespace collide {
 
 namespace {
 
-// Stuck bodies (world.h): two bodies as one rigid body, combined_body's parallel-axis sums with
+// Stuck bodies (docs/stepping.md): two bodies as one rigid body, combined_body's parallel-axis sums with
 // momentum and angular momentum kept. The compound's frame is the world's at this instant
 // (2D angle 0; 3D orientation identity, so its body-frame inertia is the world one).
 template <class B>  // Body2 or Body3
@@ -54,7 +54,7 @@ void place_on(const Body3& c, const Pose3& rel, Body3* b) {
 
 template <int D>
 bool World<D>::same_weld(std::size_t i, std::size_t j) const {
-    return weld_of_[i] >= 0 && weld_of_[i] == weld_of_[j];
+    return welds_.of[i] >= 0 && welds_.of[i] == welds_.of[j];
 }
 
 template <int D>
@@ -73,23 +73,23 @@ void World<D>::weld_to(Weld* w, double t) const {
 
 template <int D>
 void World<D>::place(std::size_t i) {
-    const Weld& w = welds_[weld_of_[i]];
+    const Weld& w = welds_.all[welds_.of[i]];
     const auto at = std::find(w.members.begin(), w.members.end(), i) - w.members.begin();
     place_on(w.body, w.rel[at], &bodies_[i]);
 }
 
 template <int D>
 typename World<D>::Body* World<D>::mobile(std::size_t i) {
-    if (weld_of_[i] < 0) return &bodies_[i];
-    Weld& w = welds_[weld_of_[i]];
+    if (welds_.of[i] < 0) return &bodies_[i];
+    Weld& w = welds_.all[welds_.of[i]];
     weld_to(&w, track_[i].t);
     return &w.body;
 }
 
 template <int D>
 void World<D>::moved(std::size_t i) {
-    if (weld_of_[i] < 0) return;
-    Weld& w = welds_[weld_of_[i]];
+    if (welds_.of[i] < 0) return;
+    Weld& w = welds_.all[welds_.of[i]];
     w.anchor = w.body;
     w.anchor_t = w.t;
     for (std::size_t m : w.members) {
@@ -103,13 +103,13 @@ void World<D>::weld(std::size_t a, std::size_t b, double t) {
     // Everything already stuck to a or b comes along.
     std::vector<std::size_t> members;
     for (std::size_t k : {a, b}) {
-        if (weld_of_[k] < 0) {
+        if (welds_.of[k] < 0) {
             members.push_back(k);
             continue;
         }
-        Weld& old = welds_[weld_of_[k]];
+        Weld& old = welds_.all[welds_.of[k]];
         members.insert(members.end(), old.members.begin(), old.members.end());
-        for (std::size_t m : old.members) weld_of_[m] = -1;
+        for (std::size_t m : old.members) welds_.of[m] = -1;
         old.members.clear();
     }
     for (std::size_t m : members) drift(m, t);
@@ -122,10 +122,10 @@ void World<D>::weld(std::size_t a, std::size_t b, double t) {
     w.members = members;
     for (std::size_t m : members) {
         w.rel.push_back(relative_pose(w.body, bodies_[m]));
-        w.reach.push_back(w.rel.back().x.norm() + radius_[m]);
-        weld_of_[m] = static_cast<int>(welds_.size());
+        w.reach.push_back(w.rel.back().x.norm() + shapes_.radius[m]);
+        welds_.of[m] = static_cast<int>(welds_.all.size());
     }
-    welds_.push_back(std::move(w));
+    welds_.all.push_back(std::move(w));
     for (std::size_t m : members) {
         place(m);  // the compound's rigid motion (the stick response gave it already, to round-off)
         track_[m].t = t;
@@ -135,9 +135,9 @@ void World<D>::weld(std::size_t a, std::size_t b, double t) {
 
 template <int D>
 void World<D>::unweld(std::size_t i) {
-    if (weld_of_[i] < 0) return;
-    Weld& w = welds_[weld_of_[i]];
-    for (std::size_t m : w.members) weld_of_[m] = -1;
+    if (welds_.of[i] < 0) return;
+    Weld& w = welds_.all[welds_.of[i]];
+    for (std::size_t m : w.members) welds_.of[m] = -1;
     w.members.clear();
 }
 

@@ -1,8 +1,8 @@
-// The world (world.h): construction, motion between events, prediction, the contacts of an
-// instant and their resolution, and advance_to. Its parts live in files of their own: time of
-// impact (toi.h), broad phase (broad_phase.h), contact solver (contact_solver.h), welds
-// (weld.cpp), islands and sleeping (islands.cpp) and stepped islands (stepped.cpp,
-// island_step.h).
+// The world (world.h): construction, motion between events, the narrow phase, the contacts of
+// an instant and their resolution. Its parts live in files of their own: the event loop and
+// prediction (advance.cpp), time of impact (toi.h), broad phase (broad_phase.h), contact solver
+// (contact_solver.h), welds (weld.cpp), islands and sleeping (islands.cpp) and stepped islands
+// (stepped.cpp, island_step.h).
 #include "engine/world.h"
 
 #include <algorithm>
@@ -21,8 +21,6 @@
 namespace collide {
 
 namespace {
-
-constexpr double kNever = std::numeric_limits<double>::infinity();
 
 // ---- What differs between 2D and 3D, as overloads ----
 
@@ -61,14 +59,13 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
 // The gap between two bodies' bounding circles (spheres), or between one's and a plane (m): no
 // closer than their surfaces. (The circle about a centre of mass holds the body however it
 // turns.) Not for two planes.
-template <class Body, class Shape>
-double bounding_gap(const std::vector<Body>& bodies, const std::vector<Shape>& shapes, const std::vector<bool>& plane,
-                    const std::vector<double>& radius, std::size_t a, std::size_t b) {
-    if (plane[a] || plane[b]) {
-        const std::size_t p = plane[a] ? a : b, q = plane[a] ? b : a;
-        return shapes[p].normal.dot(bodies[q].position) - shapes[p].offset - radius[q];
+template <class Body, class Shapes>  // Shapes: World<D>::Shapes
+double bounding_gap(const std::vector<Body>& bodies, const Shapes& shapes, std::size_t a, std::size_t b) {
+    if (shapes.plane[a] || shapes.plane[b]) {
+        const std::size_t p = shapes.plane[a] ? a : b, q = shapes.plane[a] ? b : a;
+        return shapes.of[p].normal.dot(bodies[q].position) - shapes.of[p].offset - shapes.radius[q];
     }
-    return (bodies[b].position - bodies[a].position).norm() - radius[a] - radius[b];
+    return (bodies[b].position - bodies[a].position).norm() - shapes.radius[a] - shapes.radius[b];
 }
 
 }  // namespace
@@ -86,32 +83,32 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     const std::size_t n = scene.bodies.size();
     for (const SceneBody& sb : scene.bodies) {
         bodies_.push_back(scene_body(sb, static_cast<const Body*>(nullptr)));
-        shapes_.push_back(scene_shape(sb, static_cast<const Shape*>(nullptr)));
+        shapes_.of.push_back(scene_shape(sb, static_cast<const Shape*>(nullptr)));
     }
     for (std::size_t i = 0; i < n; ++i) {
-        plane_.push_back(is_plane(shapes_[i]));
-        round_.push_back(is_round(shapes_[i]));
-        radius_.push_back(plane_[i] ? 0.0 : bounding_radius(shapes_[i]));
-        inv_min_moment_.push_back(inverse_smallest_moment(bodies_[i]));
+        shapes_.plane.push_back(is_plane(shapes_.of[i]));
+        shapes_.round.push_back(is_round(shapes_.of[i]));
+        shapes_.radius.push_back(shapes_.plane[i] ? 0.0 : bounding_radius(shapes_.of[i]));
+        shapes_.inv_min_moment.push_back(inverse_smallest_moment(bodies_[i]));
     }
-    grid_ = BroadPhase<D>(plane_);
-    solver_ = ContactSolver<D>(round_);
+    grid_ = BroadPhase<D>(shapes_.plane);
+    solver_ = ContactSolver<D>(shapes_.round);
     track_.resize(n);
-    weld_of_.assign(n, -1);
-    island_.assign(n, 0);
-    asleep_.assign(n, 0);
-    mark_.assign(n, 0);
-    searched_.assign(n, 0);
-    parent_.assign(n, 0);
-    before_.resize(n);
-    stepped_.assign(n, 0);
-    solved_.assign(n, 0);
-    until_.assign(n, 0.0);
-    still_.assign(n, 0.0);
-    // The resting speeds (see "Resting contact" in world.h).
+    welds_.of.assign(n, -1);
+    islands_.of.assign(n, 0);
+    islands_.asleep.assign(n, 0);
+    scratch_.mark.assign(n, 0);
+    scratch_.searched.assign(n, 0);
+    scratch_.parent.assign(n, 0);
+    scratch_.before.resize(n);
+    steps_.stepped.assign(n, 0);
+    steps_.solved.assign(n, 0);
+    steps_.until.assign(n, 0.0);
+    steps_.still.assign(n, 0.0);
+    // The resting speeds (see "Resting contact" in docs/stepping.md).
     const double g = gravity().norm();
-    rest_smooth_ = 0.5 * kZenoTime * g;
-    rest_cornered_ = std::max(rest_smooth_, std::sqrt(4.0 * g * kTouch));
+    narrow_.rest_smooth = 0.5 * kZenoTime * g;
+    narrow_.rest_cornered = std::max(narrow_.rest_smooth, std::sqrt(4.0 * g * kTouch));
     for (std::size_t i = 0; i < n; ++i) set_free(i);
 }
 
@@ -126,8 +123,8 @@ void World<D>::set_free(std::size_t i) {
     k.a = bodies_[i].is_static ? zero<Vec>() : gravity();
     k.alpha = zero<Spin>();
     ++k.version;
-    island_[i] = 0;
-    asleep_[i] = 0;
+    islands_.of[i] = 0;
+    islands_.asleep[i] = 0;
 }
 
 template <int D>
@@ -142,10 +139,10 @@ template <int D>
 void World<D>::drift(std::size_t i, double t) {
     Track& k = track_[i];
     if (t <= k.t) return;
-    if (weld_of_[i] >= 0) {
-        weld_to(&welds_[weld_of_[i]], t);
+    if (welds_.of[i] >= 0) {
+        weld_to(&welds_.all[welds_.of[i]], t);
         place(i);
-    } else if (!asleep_[i]) {
+    } else if (!islands_.asleep[i]) {
         move(&bodies_[i], k, t - k.t);  // asleep: it does not move at all
     }
     k.t = t;
@@ -158,12 +155,12 @@ std::vector<typename World<D>::Body> World<D>::bodies_at(double t) const {
     for (std::size_t i = 0; i < out.size(); ++i) {
         const Track& k = track_[i];
         if (t <= k.t) continue;
-        if (weld_of_[i] >= 0) {
-            Weld w = welds_[weld_of_[i]];
+        if (welds_.of[i] >= 0) {
+            Weld w = welds_.all[welds_.of[i]];
             weld_to(&w, t);
             const auto at = std::find(w.members.begin(), w.members.end(), i) - w.members.begin();
             place_on(w.body, w.rel[at], &out[i]);
-        } else if (!asleep_[i]) {
+        } else if (!islands_.asleep[i]) {
             move(&out[i], k, t - k.t);
         }
     }
@@ -175,17 +172,17 @@ typename World<D>::Mover World<D>::mover(std::size_t i) const {
     Mover m;
     m.i = i;
     m.body = bodies_[i];
-    if (weld_of_[i] >= 0) m.compound = welds_[weld_of_[i]].body;
+    if (welds_.of[i] >= 0) m.compound = welds_.all[welds_.of[i]].body;
     return m;
 }
 
 template <int D>
 void World<D>::step(Mover* m, double dt) const {
-    if (weld_of_[m->i] < 0) {
+    if (welds_.of[m->i] < 0) {
         move(&m->body, track_[m->i], dt);
         return;
     }
-    const Weld& w = welds_[weld_of_[m->i]];
+    const Weld& w = welds_.all[welds_.of[m->i]];
     Track free;
     free.a = gravity();
     free.alpha = zero<Spin>();
@@ -198,24 +195,25 @@ void World<D>::step(Mover* m, double dt) const {
 
 template <int D>
 bool World<D>::passed(std::size_t i, std::size_t j) const {
-    return !passed_.empty() && passed_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j));
+    return !narrow_.passed.empty() &&
+           narrow_.passed.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j));
 }
 
 // ---- A body set from outside ----
 
 template <int D>
 void World<D>::set_body(std::size_t i, const Body& body) {
-    for (std::size_t j = 0; j < bodies_.size(); ++j) drift(j, time_);
+    for (std::size_t j = 0; j < bodies_.size(); ++j) drift(j, loop_.time);
     unweld(i);  // its new state is its own
-    stepped_[i] = 0;
-    solved_[i] = 0;
+    steps_.stepped[i] = 0;
+    steps_.solved[i] = 0;
     bodies_[i] = body;
-    track_[i].t = time_;
+    track_[i].t = loop_.time;
     // Whatever rested on or under it is re-examined at the start of the next substep.
     for (std::size_t j = 0; j < bodies_.size(); ++j)
-        if (island_[j] != 0 || j == i) set_free(j);
-    heap_.clear();
-    open_ = false;  // a new substep starts here
+        if (islands_.of[j] != 0 || j == i) set_free(j);
+    loop_.heap.clear();
+    loop_.open = false;  // a new substep starts here
 }
 
 // ---- Broad phase (engine/broad_phase.h): each body's swept box ----
@@ -223,13 +221,13 @@ void World<D>::set_body(std::size_t i, const Body& body) {
 template <int D>
 void World<D>::swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const {
     // A welded body stays within its reach of its compound's centre.
-    const bool welded = weld_of_[i] >= 0;
-    const Weld* w = welded ? &welds_[weld_of_[i]] : nullptr;
+    const bool welded = welds_.of[i] >= 0;
+    const Weld* w = welded ? &welds_.all[welds_.of[i]] : nullptr;
     const Body& b = welded ? w->body : bodies_[i];
     const Vec acc = welded ? gravity() : track_[i].a;
     const double clock = welded ? w->t : track_[i].t;
     const double s0 = t0 - clock, s1 = t1 - clock;
-    double margin = radius_[i] + kTouch;
+    double margin = shapes_.radius[i] + kTouch;
     if (welded) {
         const auto at = std::find(w->members.begin(), w->members.end(), i) - w->members.begin();
         margin = w->reach[at] + kTouch;
@@ -255,25 +253,19 @@ void World<D>::build_grid(double t0, double t1) {
     }
     grid_.build(moving);
     for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (!plane_[i]) insert(i, t0, t1);
-}
-
-template <int D>
-template <class F>
-void World<D>::for_each_neighbour(std::size_t i, double t, F&& f) {
-    grid_.for_each_neighbour(i, [&](Vec* lo, Vec* hi) { swept_box(i, t, substep_end_, lo, hi); }, f);
+        if (!shapes_.plane[i]) insert(i, t0, t1);
 }
 
 // ---- Narrow phase ----
 
 template <int D>
 typename World<D>::Manifold World<D>::manifold(std::size_t a, std::size_t b) const {
-    return collide(shapes_[a], pose_of(bodies_[a]), shapes_[b], pose_of(bodies_[b]), kTouch);
+    return collide(shapes_.of[a], pose_of(bodies_[a]), shapes_.of[b], pose_of(bodies_[b]), kTouch);
 }
 
 template <int D>
 bool World<D>::apart(std::size_t a, std::size_t b, double gap) const {
-    return !(plane_[a] && plane_[b]) && bounding_gap(bodies_, shapes_, plane_, radius_, a, b) > gap;
+    return !(shapes_.plane[a] && shapes_.plane[b]) && bounding_gap(bodies_, shapes_, a, b) > gap;
 }
 
 template <int D>
@@ -286,14 +278,15 @@ double World<D>::normal_speed(std::size_t a, std::size_t b, const Vec& p, const 
 
 template <int D>
 double World<D>::rest_speed(std::size_t i, std::size_t j) const {
-    const bool smooth = (round_[i] || plane_[i]) && (round_[j] || plane_[j]);
+    const bool smooth = (shapes_.round[i] || shapes_.plane[i]) && (shapes_.round[j] || shapes_.plane[j]);
     // Round-off: a normal speed below 1e-12 of the pair's own speeds is no approach. (Without
     // gravity the resting speeds are zero, and a contact left at u_n = 0 by e = 0 or by a
     // sticking impulse would otherwise be answered again and again for its -1e-18 m/s.)
     const Body& A = bodies_[i];
     const Body& B = bodies_[j];
-    const double scale = A.v.norm() + B.v.norm() + magnitude(A.w) * radius_[i] + magnitude(B.w) * radius_[j];
-    return std::max(smooth ? rest_smooth_ : rest_cornered_, 1e-12 * scale);
+    const double scale =
+        A.v.norm() + B.v.norm() + magnitude(A.w) * shapes_.radius[i] + magnitude(B.w) * shapes_.radius[j];
+    return std::max(smooth ? narrow_.rest_smooth : narrow_.rest_cornered, 1e-12 * scale);
 }
 
 // The tangential limit of the points of a group or an island, as PointGoal::mu: coulomb the
@@ -309,116 +302,6 @@ double World<D>::friction_limit(std::size_t a, std::size_t b) const {
     }
 }
 
-template <int D>
-double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1) {
-    // Neither moves (static or asleep): nothing can happen between them.
-    if ((bodies_[i].is_static || asleep_[i]) && (bodies_[j].is_static || asleep_[j])) return kNever;
-    if (same_weld(i, j)) return kNever;  // stuck together
-    // Stepped bodies meet each other and static ones at their steps (see "Stepped islands").
-    if (meet_at_steps(i, j)) return kNever;
-    if (passed(i, j)) return kNever;     // let through each other by the page's listing
-    if (t == stall_time_ && stalled_.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j)))
-        return kNever;
-    drift(i, t);
-    drift(j, t);
-    ++counters_.predictions;
-    const std::size_t a = std::min(i, j), b = std::max(i, j);
-    // Too far apart to meet within the substep: the gap between their bounding circles (or a
-    // body's and a plane) exceeds what their relative motion can close by t1. (The circle about
-    // a body's centre of mass holds it however it turns: spin does not move it.)
-    if (weld_of_[a] < 0 && weld_of_[b] < 0 && !(plane_[a] && plane_[b])) {
-        const double h = t1 - t;
-        const std::size_t q = plane_[a] ? b : a;  // with a plane: the body that is not one
-        const double closing = plane_[a] || plane_[b]
-                                   ? bodies_[q].v.norm() * h + 0.5 * track_[q].a.norm() * h * h
-                                   : (bodies_[b].v - bodies_[a].v).norm() * h +
-                                         0.5 * (track_[b].a - track_[a].a).norm() * h * h;
-        if (bounding_gap(bodies_, shapes_, plane_, radius_, a, b) > closing + 2.0 * kTouch) return kNever;
-    }
-    const double v_rest = rest_speed(a, b);
-    const Track& ka = track_[a];
-    const Track& kb = track_[b];
-    // A round body q against a plane or a round body p moving alike: closed forms.
-    std::size_t p = a, q = b;
-    if (!round_[q]) std::swap(p, q);
-    const bool closed = round_[q] && (plane_[p] || (round_[p] && track_[p].a == track_[q].a)) &&
-                        weld_of_[p] < 0 && weld_of_[q] < 0;  // (a welded body's centre circles)
-    const Body& P = bodies_[p];
-    const Body& Q = bodies_[q];
-    const double gap = !closed      ? 0.0
-                       : plane_[p] ? shapes_[p].normal.dot(Q.position) - shapes_[p].offset - shapes_[q].radius
-                                   : (Q.position - P.position).norm() - shapes_[p].radius - shapes_[q].radius;
-    Manifold m;
-    bool touching = false;
-    if (!closed || gap <= kTouch) {
-        m = manifold(a, b);
-        touching = m.separation <= kTouch && m.count > 0;
-    }
-    if (touching) {
-        bool slow = false;
-        for (int k = 0; k < m.count; ++k) {
-            const double un = normal_speed(a, b, m.points[k], m.normal);
-            if (un < -v_rest) return t;  // approaching now: an impact at this instant
-            slow = slow || std::abs(un) <= v_rest;
-        }
-        // A slow point rests: the pair belongs in an island (its forces), formed now if not yet
-        // (stepped bodies have no islands: a free one touching them joins them).
-        const bool steps = (stepped_[a] || bodies_[a].is_static) && (stepped_[b] || bodies_[b].is_static);
-        if (slow && !same_island(a, b) && !steps) return t;
-    }
-    if (closed) {
-        const double s = plane_[p] ? plane_contact_time(shapes_[p].normal, Q.v, track_[q].a, gap, touching)
-                                   : round_contact_time(Vec(Q.position - P.position), Vec(Q.v - P.v),
-                                                        shapes_[p].radius + shapes_[q].radius, touching);
-        return t + s <= t1 ? t + s : kNever;
-    }
-    // Conservative advancement (engine/toi.h): copies of both bodies moved forward.
-    Approach<Vec> c;
-    c.t = t;
-    c.horizon = t1 - t;
-    c.touch = kTouch;
-    c.v_rest = v_rest;
-    c.radius_a = radius_[a];
-    c.radius_b = radius_[b];
-    c.touching = touching;
-    c.acc_a = ka.a;
-    c.acc_b = kb.a;
-    // How fast a body's surface can turn towards the other: spin times reach; a welded body's
-    // centre also circles its compound's, so its velocity changes by up to 2 |w| |d|.
-    auto turning = [&](std::size_t k, const Track& tk) {
-        if (weld_of_[k] < 0)
-            return round_[k] ? 0.0 : (spin_bound(bodies_[k], inv_min_moment_[k]) + magnitude(tk.alpha) * c.horizon) * radius_[k];
-        const Weld& w = welds_[weld_of_[k]];
-        const auto at = std::find(w.members.begin(), w.members.end(), k) - w.members.begin();
-        return spin_bound(w.body, w.inv_min_moment) * (2.0 * w.rel[at].x.norm() + radius_[k]);
-    };
-    c.turn_rate = turning(a, ka) + turning(b, kb);
-    return advance_to_contact(shapes_[a], shapes_[b], mover(a), mover(b),
-                              [this](Mover* m, double dt) { step(m, dt); }, c);
-}
-
-template <int D>
-void World<D>::predict(std::size_t i, double t) {
-    if (bodies_[i].is_static) return;
-    // A stepped body meets stepped and static ones at its steps (predict_pair says never).
-    if (stepped_[i] && !exact_bodies_) return;
-    double best = kNever;
-    std::size_t partner = i;
-    for_each_neighbour(i, t, [&](std::size_t j) {
-        if (stepped_[i] && (stepped_[j] || bodies_[j].is_static)) return;
-        const double tj = predict_pair(i, j, t, substep_end_);
-        if (tj < best) {
-            best = tj;
-            partner = j;
-        }
-    });
-    if (best <= substep_end_) {
-        heap_.push_back(Pending{best, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(partner),
-                                track_[i].version, track_[partner].version});
-        std::push_heap(heap_.begin(), heap_.end(), std::greater<Pending>());
-    }
-}
-
 // ---- Contacts at one instant ----
 
 // Every touching pair of body i at time t, appended to out. Within one search (begin_search)
@@ -427,16 +310,16 @@ void World<D>::predict(std::size_t i, double t) {
 template <int D>
 void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
     drift(i, t);
-    searched_[i] = search_;
+    scratch_.searched[i] = scratch_.search;
     for_each_neighbour(i, t, [&](std::size_t j) {
         if (bodies_[i].is_static && bodies_[j].is_static) return;
-        if (searched_[j] == search_ && !plane_[j]) return;  // reported from j's side
+        if (scratch_.searched[j] == scratch_.search && !shapes_.plane[j]) return;  // reported from j's side
         if (same_weld(i, j) || passed(i, j)) return;        // stuck together, or let through
         // Stepped bodies touch each other and static ones at their steps, not at instants.
         if (meet_at_steps(i, j)) return;
         drift(j, t);
         const std::size_t a = std::min(i, j), b = std::max(i, j);
-        if (weld_of_[a] < 0 && weld_of_[b] < 0 && apart(a, b, 2.0 * kTouch))
+        if (welds_.of[a] < 0 && welds_.of[b] < 0 && apart(a, b, 2.0 * kTouch))
             return;  // their bounding circles (spheres) apart: not touching
         const Manifold m = manifold(a, b);
         if (m.separation > kTouch || m.count == 0) return;
@@ -469,8 +352,8 @@ bool World<D>::resolve_point(Contact* c, int k) {
     Body& A = *mobile(c->a);
     Body& B = *mobile(c->b);
     const bool plain = scene_.model != Model::stick && scene_.model != Model::page_listing;
-    const bool round_a = plain && round_[c->a] && weld_of_[c->a] < 0;
-    const bool round_b = plain && round_[c->b] && weld_of_[c->b] < 0;
+    const bool round_a = plain && shapes_.round[c->a] && welds_.of[c->a] < 0;
+    const bool round_b = plain && shapes_.round[c->b] && welds_.of[c->b] < 0;
     auto ia = at_contact(A, p), ib = at_contact(B, p);
     // A round body's surface normal passes through its centre: r is along n exactly (the
     // computed point is off by round-off, which would give a frictionless hit a spin of 1e-14).
@@ -480,7 +363,7 @@ bool World<D>::resolve_point(Contact* c, int k) {
     const auto r = respond(scene_.model, ia, ib, n, e, scene_.pair_friction(c->a, c->b), scene_.restitution_law);
     if (r.separating) return false;
     if (scene_.model == Model::page_listing)  // one answer per pair: its J may push them together
-        passed_.insert(static_cast<std::uint64_t>(c->a) << 32 | c->b);
+        narrow_.passed.insert(static_cast<std::uint64_t>(c->a) << 32 | c->b);
     // Only the tangential part of P turns a round body (its normal part passes through the
     // centre); computed so, a frictionless hit leaves w exactly as it was.
     const Vec Pt = scene_.model == Model::frictionless ? zero<Vec>() : Vec(r.P - r.P.dot(n) * n);
@@ -507,7 +390,7 @@ void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<Po
                             std::vector<Body>* state) {
     for (const Contact& c : *contacts)
         for (std::size_t k : {c.a, c.b})
-            if (weld_of_[k] >= 0)
+            if (welds_.of[k] >= 0)
                 throw std::runtime_error(
                     scene_.bodies[k].name + ", stuck to another body by the stick model, is in resting or "
                     "simultaneous contact with " + scene_.bodies[k == c.a ? c.b : c.a].name +
@@ -549,23 +432,23 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     bool impact = false;  // some touching point approached faster than the resting speed
     std::vector<Contact> contacts;
     std::vector<std::size_t> group;  // dynamic bodies reached, in discovery order
-    const std::uint32_t reached = fresh(&mark_, &mark_id_);
-    fresh(&searched_, &search_);
+    const std::uint32_t reached = fresh(&scratch_.mark, &scratch_.mark_id);
+    fresh(&scratch_.searched, &scratch_.search);
     auto reach = [&](std::size_t k) {
-        if (bodies_[k].is_static || mark_[k] == reached) return false;
-        if (stepped_[k]) {  // it answers with its own mass; its other contacts act at its next step
-            mark_[k] = reached;
+        if (bodies_[k].is_static || scratch_.mark[k] == reached) return false;
+        if (steps_.stepped[k]) {  // it answers with its own mass; its other contacts act at its next step
+            scratch_.mark[k] = reached;
             drift(k, t);
-            before_[k] = {bodies_[k].v, bodies_[k].w};
+            scratch_.before[k] = {bodies_[k].v, bodies_[k].w};
             group.push_back(k);
             return false;
         }
         // A welded body brings its weld: an impulse on it moves them all.
         const std::vector<std::size_t> alone{k};
-        for (std::size_t m : weld_of_[k] >= 0 ? welds_[weld_of_[k]].members : alone) {
-            mark_[m] = reached;
+        for (std::size_t m : welds_.of[k] >= 0 ? welds_.all[welds_.of[k]].members : alone) {
+            scratch_.mark[m] = reached;
             drift(m, t);
-            before_[m] = {bodies_[m].v, bodies_[m].w};
+            scratch_.before[m] = {bodies_[m].v, bodies_[m].w};
             group.push_back(m);
         }
         return true;
@@ -607,15 +490,15 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
     }
 
     // Stepped islands: a pair colliding again and again, and whatever a stepped body touched,
-    // are stepped from now on (see "Stepped islands" in the header).
+    // are stepped from now on (see "Stepped islands" in docs/stepping.md).
     for (const Contact& c : contacts) {
         if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;
         count_impact(c.a, c.b, t);
-        if (stepped_[c.a] || stepped_[c.b] || scene_.stepping == StepMode::always)
+        if (steps_.stepped[c.a] || steps_.stepped[c.b] || scene_.stepping == StepMode::always)
             for (std::size_t k : {c.a, c.b}) join(k, t);
     }
 
-    // The stick model welds what it stuck (see "Stuck bodies" in the header).
+    // The stick model welds what it stuck (see "Stuck bodies" in docs/stepping.md).
     if (scene_.model == Model::stick)
         for (const Contact& c : contacts)
             if (c.weight > 0.0 && !bodies_[c.a].is_static && !bodies_[c.b].is_static && !same_weld(c.a, c.b))
@@ -625,19 +508,19 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         if (!(c.weight > 0.0) && c.impulse.norm() == 0.0) continue;
         auto vel = [&](std::size_t k) { return typename Event<D>::Velocity{bodies_[k].v, bodies_[k].w}; };
         record(c.a, c.b, t, c.m.normal, c.impulse, c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0],
-               mark_[c.a] == reached ? before_[c.a] : vel(c.a), mark_[c.b] == reached ? before_[c.b] : vel(c.b),
-               events);
+               scratch_.mark[c.a] == reached ? scratch_.before[c.a] : vel(c.a),
+               scratch_.mark[c.b] == reached ? scratch_.before[c.b] : vel(c.b), events);
     }
     settle(group, t);  // (stepped bodies are left out)
     for (std::size_t k : group) {
-        if (!stepped_[k]) continue;
-        if (bodies_[k].v != before_[k].v || bodies_[k].w != before_[k].w) {
+        if (!steps_.stepped[k]) continue;
+        if (bodies_[k].v != scratch_.before[k].v || bodies_[k].w != scratch_.before[k].w) {
             wake(k);
-            restep_ = true;  // pushed: its island is stepped again from now
-            reseed_.push_back(k);
+            steps_.restep = true;  // pushed: its island is stepped again from now
+            steps_.reseed.push_back(k);
         }
     }
-    if (restep_) step_islands(t, events, true);
+    if (steps_.restep) step_islands(t, events, true);
     return impact;
 }
 
@@ -660,145 +543,6 @@ void World<D>::record(std::size_t a, std::size_t b, double t, const Vec& normal,
     ev.pose_b = pose_of(bodies_[b]);
     events->push_back(ev);
     ++counters_.events;
-}
-
-// ---- Stepping ----
-
-template <int D>
-void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const ImpactHook& on_impact) {
-    if (!(t_end >= time_)) throw std::invalid_argument("advance_to: time runs forward only");
-    std::vector<Event<D>> scratch;
-    if (!events) events = &scratch;
-    std::uint64_t handled = 0;
-    for (;;) {
-        if (!open_) {
-            if (!(time_ < t_end)) break;
-            // Nothing awake: nothing moves and nothing can happen until t_end.
-            bool awake = false;
-            for (std::size_t i = 0; i < bodies_.size() && !awake; ++i)
-                awake = !bodies_[i].is_static && !asleep_[i];
-            if (!awake) {
-                time_ = t_end;
-                for (std::size_t i = 0; i < bodies_.size(); ++i) track_[i].t = t_end;
-                break;
-            }
-            begin_substep(events, on_impact);
-        }
-        // The substep's impacts up to t_end.
-        const double stop = std::min(t_end, substep_end_);
-        while (!heap_.empty() && !(heap_.front().t > stop)) {
-            std::pop_heap(heap_.begin(), heap_.end(), std::greater<Pending>());
-            const Pending p = heap_.back();
-            heap_.pop_back();
-            if (p.t > now_) {
-                now_ = p.t;
-                pops_at_now_ = 0;
-            }
-            // Never hang: an instant that keeps producing work without time moving on is a
-            // failure to report (see "Known limits" in world.h).
-            if (++pops_at_now_ > kMaxWorkPerInstant)
-                throw std::runtime_error("the simulation is stuck at t = " + std::to_string(now_) + " s between " +
-                                         scene_.bodies[p.i].name + " and " + scene_.bodies[p.j].name +
-                                         " (a known limit of resting contact, see engine/world.h)");
-            const bool valid_i = track_[p.i].version == p.vi;
-            const bool valid_j = track_[p.j].version == p.vj;
-            if (!valid_i) continue;  // i predicted again when it changed
-            if (!valid_j) {
-                predict(p.i, now_);
-                continue;
-            }
-            if (now_ > stall_time_) {
-                stall_time_ = now_;
-                stalls_.clear();
-                stalled_.clear();
-            }
-            if (++handled > kMaxEventsPerAdvance)
-                throw std::runtime_error("more than " + std::to_string(kMaxEventsPerAdvance) +
-                                         " collisions before t = " + std::to_string(t_end) +
-                                         " s: the scene does not settle");
-            // A pair predicted to meet now whose instant has no impact (nothing approaches: the
-            // prediction saw a contact the contact manifold does not) more than 8 times is left
-            // to the next substep's contact search instead of being predicted again and again.
-            // (Round-off impulses of resting neighbours do not count as progress.)
-            const std::size_t recorded = events->size();
-            if (!resolve(p.i, p.j, now_, events)) {
-                const std::uint64_t key = static_cast<std::uint64_t>(std::min(p.i, p.j)) << 32 | std::max(p.i, p.j);
-                if (++stalls_[key] > 8) stalled_.insert(key);
-            }
-            if (on_impact && events->size() > recorded) on_impact(now_);
-        }
-        if (t_end < substep_end_) {
-            // Paused inside the substep: every body at t_end along its motion, the world's own
-            // state untouched (the next advance goes on from here).
-            time_ = t_end;
-            bodies_now_ = bodies_at(t_end);
-            break;
-        }
-        for (std::size_t i = 0; i < bodies_.size(); ++i) drift(i, substep_end_);
-        time_ = substep_end_;
-        open_ = false;
-        heap_.clear();
-    }
-}
-
-template <int D>
-void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on_impact) {
-    const double t0 = time_;
-    // Substep: bodies move about four radii each (the grid stays tight: longer substeps mean
-    // larger swept boxes, shorter ones more rebuilds), and at most kRestStep while anything
-    // rests or falls. Chosen from the bodies alone, never from where an advance stops.
-    double h = kLongestSubstep;
-    bool any_rest = false, any_stepped = false;
-    double speed = 0.0, size = 0.0;
-    std::size_t moving = 0;
-    exact_bodies_ = false;
-    for (std::size_t i = 0; i < bodies_.size(); ++i) {
-        if (bodies_[i].is_static) continue;
-        exact_bodies_ = exact_bodies_ || !stepped_[i];
-        any_rest = any_rest || (island_[i] != 0 && !asleep_[i]);
-        any_stepped = any_stepped || (stepped_[i] && !asleep_[i]);
-        speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
-        size += radius_[i];
-        ++moving;
-    }
-    if (moving > 0 && speed > 0.0) h = std::min(h, std::max(kShortestSubstep, 4.0 * size / speed));
-    // Stepped islands: a substep never crosses a step's end; at a step's start they are solved.
-    bool step_now = false;
-    if (any_stepped) {
-        step_now = !(step_end_ - t0 > 1e-9 * kIslandStep);
-        h = std::min(h, step_now ? kIslandStep : step_end_ - t0);
-        if (any_rest) h = std::min(h, kRestStep);
-    } else if (any_rest || gravity().norm() > 0.0) {
-        h = std::min(h, kRestStep);
-    }
-    const double t1 = t0 + h;
-    substep_end_ = t1;
-    open_ = true;
-    now_ = t0;
-    pops_at_now_ = 0;
-    ++counters_.substeps;
-
-    build_grid(t0, t1);
-    heap_.clear();
-    // Resting contacts are found afresh each substep; then every body predicts its next impact.
-    // Sleeping islands keep their (zero) motion and are neither re-solved nor predicted.
-    std::vector<std::size_t> all;
-    for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (!bodies_[i].is_static && !asleep_[i] && !stepped_[i] && (island_[i] != 0 || gravity().norm() > 0.0))
-            all.push_back(i);
-    for (auto it = members_.begin(); it != members_.end();)
-        it = asleep_[it->second.front()] ? std::next(it) : members_.erase(it);
-    for (std::size_t i : all) set_free(i);
-    if (!all.empty()) settle(all, t0);
-    // Then the stepped islands' step, if one starts now (or settling brought bodies to them).
-    if (step_now || restep_) {
-        const std::size_t recorded = events->size();
-        step_islands(t0, events, !step_now);
-        if (on_impact && events->size() > recorded) on_impact(t0);
-    }
-    std::unordered_set<std::size_t> predicted(all.begin(), all.end());
-    for (std::size_t i = 0; i < bodies_.size(); ++i)
-        if (!asleep_[i] && !predicted.count(i)) predict(i, t0);
 }
 
 template class World<2>;

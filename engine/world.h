@@ -1,115 +1,14 @@
 // The 2D and 3D worlds: bodies advanced from impact to impact at the exact instant of contact.
+// One algorithm serves both dimensions (World<2>, World<3>); what differs comes from Space<D>
+// (engine/space.h). Between events bodies move freely (ballistic, torque-free turning); each
+// impact is found by time of impact and resolved by the scene's policy and model; resting
+// contacts form islands with constant forces, islands at rest sleep, persistent contacts are
+// stepped in time steps, and the stick model welds bodies together.
 //
-// One algorithm serves both dimensions (World<2>, World<3>); what differs (vectors, spin, shapes,
-// how a body turns) comes from Space<D> and a few overloads (engine/space.h, world.cpp).
-//
-// Motion between events. A free body moves ballistically, x(t) = x + v t + g t^2/2, and turns
-// torque-free (2D: w constant; 3D: engine/rotation.h, with the gyroscopic term). A body in
-// resting contact moves with constant contact forces added (see "Resting contact").
-//
-// Time of impact. For each pair of bodies that may meet (a uniform grid over the bodies' swept
-// bounding boxes, engine/broad_phase.h: about N log N per second simulated, not N^2), the first
-// instant of contact is found to kTouch (1e-10 m; engine/toi.h):
-//   disc/sphere against disc/sphere (same acceleration) or a plane: the smallest root of a
-//     quadratic, in closed form;
-//   any other pair: conservative advancement (engine/toi.h explains the bound), which also
-//     tries longer steps from the gap's observed closing rate and keeps one only when the gap
-//     at its end is still open (a corner turning slowly near the ground would crawl).
-// Each body keeps its own clock; an event moves only the bodies it touches (event-driven
-// simulation), and predictions invalidated by an event are discarded.
-//
-// At an impact every touching contact reachable from the pair is resolved by the scene's
-// policy (docs/conventions.md: n from A into B, +P on B, -P on A):
-//   sequential:   one contact point at a time with the scene's model (the foundation formulas),
-//                 pairs in the order of their body indices, points in manifold order, repeated
-//                 until no touching point approaches (Newton's cradle: (v, 0, 0) -> (0, 0, v));
-//                 a sequence still going after 64 passes per body is finished simultaneously;
-//   simultaneous: all touching points of the group together: impulses P_k >= 0 such that each
-//                 point leaves with un+ >= -e un- (equality where P_k > 0), solved by projected
-//                 Gauss-Seidel to 1e-13 of the largest impulse (for two points this is the LCP
-//                 of Box2D's block solver; the cradle gives (-v/3, 2v/3, 2v/3)). Friction:
-//                 coulomb clamps each point's
-//                 tangential impulse to mu P_n; matrix and stick hold the tangential velocity at
-//                 -e ut- and 0. A group of a single point uses the model's own formula. routh
-//                 (engine/routh.h) integrates one point's impact: a group of several points is
-//                 solved as coulomb's (Newton's e on each point, tangential impulses in the
-//                 cone), and the sequential policy answers each point with routh itself.
-//
-// Resting contact. A touching contact with |un| <= v_rest is resting. Its bodies form an island
-// whose contact forces for the rest of the substep (at most kRestStep) are found like the
-// simultaneous impulses with e = 0: normal relative acceleration >= 0, forces >= 0 (and the
-// friction cone). A box on the ground gets exactly m g and does not move at all.
-// v_rest = kZenoTime |g| / 2: a bounce that slow would land within kZenoTime (1e-12 s); the
-// infinitely many bounces of e < 1 accumulate at a finite time and this merges the last ones
-// (at most kZenoTime / (1 - e) of them). It is a time tolerance, not a restitution threshold.
-// Shapes with corners (polygons, boxes) also rest when their bounce would not rise above
-// kTouch (v <= sqrt(4 |g| kTouch)). The island's forces are found by projected Gauss-Seidel
-// finished by an exact solve on its active set (engine/contact_solver.h, "active-set polish"), so a
-// stack in balance gets forces that balance it to round-off.
-//
-// Sleeping islands. An island whose every surface point moves slower than v_sleep =
-// kZenoTime |g| / 2 (the speed already counted as resting) and would still after a rest step,
-// |v| + |w| R + (|a| + |alpha| R) kRestStep <= v_sleep, sleeps: v, w, a and alpha are set to
-// exactly zero and its bodies no longer move, are neither re-solved each substep nor
-// predicted (a pair of sleepers or a sleeper and a static body has nothing to meet). A body
-// still moving predicts against sleepers as against any body; when it reaches one (an impact
-// or a new resting contact) the sleeper's whole island wakes, is solved again with it and
-// may fall asleep again. A box on the ground, a settled column, a pyramid in balance cost
-// nothing once asleep; with nothing awake, advance_to jumps to its end.
-//
-// Stepped islands (the scene's `stepping`, engine/scene.h). Exact events collapse into
-// micro-collisions where contacts persist (boxes resting on boxes: a pile, a tower); there
-// the world advances by time steps instead. Rule (stepping = auto): a pair of moving bodies
-// that has collided kPersistImpacts times within kPersistWindow is in persistent contact; both
-// are stepped from then on, and so is every moving body that touches a stepped body (at an
-// impact or at a step's start). With stepping = always every body is stepped from its first
-// touching contact; with never, none is. Welded bodies and the page's listing are never stepped.
-// The stepped bodies advance together in steps of kIslandStep (engine/island_step.h: Moreau-
-// Jean at the impulse level, warm-started Gauss-Seidel sweeps, speculative contacts within
-// kSpeculative plus what the step can close, split-impulse correction of penetration beyond
-// 0.05 mm): at each step's start their contacts are found and solved, and during the step they
-// move at their new velocities (x+ = x- + h v+; a 3D body turns torque-free). What differs
-// from the exact world: a collision between stepped bodies happens at a step's start, up to
-// one step early, with Newton's law (e of the pair, no threshold) applied to the approach speed
-// before the step; friction is Coulomb's cone for coulomb and routh scenes (matrix and stick:
-// sticking, frictionless: none); a step records as an event only a pair's first contact (a
-// pair that carried no impulse at the previous step). A free body still meets a stepped one at
-// the exact instant (the stepped body moves on a straight line within the step): the impact is
-// resolved there by the scene's model and policy on the free body's contacts (the stepped
-// body answers with its own mass and inertia; its other contacts act at the next step) and
-// the free body joins the stepped ones. A stepped body with no contact within the margin at a
-// step's start is free again (exact events); a stepped island whose every surface point moved
-// slower than kStepSleepSpeed for kStepSleepTime falls asleep (v and w exactly zero) until
-// something touches it. Whenever a body joins or wakes, or an impact changes a stepped body's
-// motion, its island takes a new step at once from that instant (the others go on), so
-// nothing pushed between two steps is pushed into its neighbours; the bodies of the step cut
-// short give back the gravity impulse of the time left, m g (t_end - t) (momentum kept; their
-// positions moved on the step's velocity meanwhile: off by at most g h^2, 27 um).
-//
-// Stuck bodies (the stick model). An impact resolved by the stick model between two dynamic
-// bodies welds them: from then on they move as one rigid body (a weld), whose mass, centre and
-// inertia are the parallel-axis sums of its members' (combined_body in engine/response.h) and
-// whose velocity and spin keep the members' total momentum and angular momentum. The compound
-// moves like any free body (ballistic centre, torque-free turning with the gyroscopic term), and
-// each member is placed from it: x = xc + R d, v = vc + w x (x - xc), w = wc. So a stuck pair
-// orbits its common centre of mass instead of flying apart. Members of one weld never collide
-// with each other; an impact of a member with any other body is resolved with the compound's
-// mass and inertia (and, under the stick model, welds that body too). A static partner is not
-// welded: the stick response already stops the body against it.
-//
-// The page's listing as written (model page-listing, 3D, sequential only; the errata lesson).
-// Each pair is answered once with the listing's velocities (engine/page.h); as its impulse can
-// push the bodies together (erratum 1) the pair is then let through each other for the rest of
-// the run instead of being answered again and again.
-//
-// Known limits: a weld in resting contact or in a simultaneous group of several points with
-// another body is not modelled (advance_to throws a clear error). Resting contact is integrated with constant forces per substep, so bodies
-// sliding or spinning over each other in resting contact (a disc sliding off a disc, a box
-// spinning on a box) drift into each other by micrometres (documented bound 5e-5 m) and
-// curved ones chatter (many tiny impacts). An instant at which a pair is predicted to meet
-// again and again with no impact (a prediction that disagrees with the contact manifold) is
-// left to the next substep after 8 tries; one still stuck after kMaxWorkPerInstant
-// predictions is reported by advance_to as an error (never a hang).
+// How a scene is stepped, in full: docs/stepping.md. Its sections ("Motion between events",
+// "Time of impact", "At an impact", "Resting contact", "Sleeping islands", "Stepped islands",
+// "Stuck bodies", "The page's listing as written", "Known limits") are what this code's
+// comments refer to. The state below is grouped by the concern that owns it, each in its file.
 #pragma once
 
 #include <array>
@@ -162,10 +61,10 @@ public:
 
     explicit World(const Scene& scene);  // throws std::invalid_argument for a wrong dimension
 
-    double time() const { return time_; }
+    double time() const { return loop_.time; }
     const Scene& scene() const { return scene_; }
     // Every body's state at time().
-    const std::vector<Body>& bodies() const { return open_ ? bodies_now_ : bodies_; }
+    const std::vector<Body>& bodies() const { return loop_.open ? loop_.bodies_now : bodies_; }
 
     // Called during advance_to each time an impact was resolved and its events appended, with
     // its instant; bodies_at(t) then gives every body there, after the impulses.
@@ -189,13 +88,13 @@ public:
     void set_body(std::size_t i, const Body& body);
 
     // True while body i is held by a resting contact (an island).
-    bool resting(std::size_t i) const { return island_[i] != 0; }
+    bool resting(std::size_t i) const { return islands_.of[i] != 0; }
     // True while body i's island sleeps: at rest, in balance, costing nothing until woken.
-    bool asleep(std::size_t i) const { return asleep_[i] != 0; }
+    bool asleep(std::size_t i) const { return islands_.asleep[i] != 0; }
     // True while body i is stuck to other bodies (see "Stuck bodies").
-    bool welded(std::size_t i) const { return weld_of_[i] >= 0; }
+    bool welded(std::size_t i) const { return welds_.of[i] >= 0; }
     // True while body i advances by time steps (see "Stepped islands").
-    bool stepped(std::size_t i) const { return stepped_[i] != 0; }
+    bool stepped(std::size_t i) const { return steps_.stepped[i] != 0; }
 
     struct Counters {
         std::uint64_t events = 0;       // pair collisions recorded
@@ -222,7 +121,7 @@ public:
     static constexpr double kShortestSubstep = 1e-5;
     static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
     static constexpr std::uint64_t kMaxWorkPerInstant = 100000;   // predictions popped at one t
-    // Stepped islands (see above).
+    // Stepped islands (docs/stepping.md).
     static constexpr double kIslandStep = 1.0 / 600.0;  // s
     static constexpr int kPersistImpacts = 16;
     static constexpr double kPersistWindow = 0.1;       // s
@@ -231,7 +130,7 @@ public:
     static constexpr double kStepSleepTime = 0.5;       // s
 
 private:
-    // advance_to's start of a substep at time_: its length, the grid, resting forces, the stepped
+    // advance_to's start of a substep at loop_.time: its length, the grid, resting forces, the stepped
     // islands' step, every prediction.
     void begin_substep(std::vector<Event<D>>* events, const ImpactHook& on_impact);
     struct Track {                  // per body: its own clock and current free motion
@@ -269,7 +168,9 @@ private:
     void build_grid(double t0, double t1);
     void insert(std::size_t i, double t0, double t1);
     void swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const;
-    template <class F> void for_each_neighbour(std::size_t i, double t, F&& f);
+    template <class F> void for_each_neighbour(std::size_t i, double t, F&& f) {
+        grid_.for_each_neighbour(i, [&](Vec* lo, Vec* hi) { swept_box(i, t, loop_.substep_end, lo, hi); }, f);
+    }
 
     // Narrow phase.
     Manifold manifold(std::size_t a, std::size_t b) const;  // both at the same time
@@ -317,81 +218,107 @@ private:
     bool may_step(std::size_t i) const;
     // i and j meet only at steps: both stepped, or one stepped and one static.
     bool meet_at_steps(std::size_t i, std::size_t j) const {
-        return (stepped_[i] || stepped_[j]) && (stepped_[i] || bodies_[i].is_static) &&
-               (stepped_[j] || bodies_[j].is_static);
+        return (steps_.stepped[i] || steps_.stepped[j]) && (steps_.stepped[i] || bodies_[i].is_static) &&
+               (steps_.stepped[j] || bodies_[j].is_static);
     }
     void join(std::size_t i, double t);  // body i is stepped from t on (a step is taken at t)
     void wake(std::size_t i);            // a sleeping stepped body moves again (a step is taken)
     void count_impact(std::size_t a, std::size_t b, double t);  // stepping = auto's rule
     double surface_speed(std::size_t i) const;  // |v| + |w| R
     // A step from t of every stepped body awake (all), or (a step taken again between two
-    // steps, `within` a substep) of the islands of the bodies in reseed_, predicted again.
+    // steps, `within` a substep) of the islands of the bodies in steps_.reseed, predicted again.
     void step_islands(double t, std::vector<Event<D>>* events, bool within);
 
-    RunCount runs_;                       // counts this world among every run (run_count.h)
+    RunCount runs_;  // counts this world among every run (run_count.h)
     Scene scene_;
     std::vector<Body> bodies_;
-    std::vector<Shape> shapes_;
-    std::vector<double> radius_;          // bounding radius (m); 0 for planes
-    std::vector<double> inv_min_moment_;  // 1 / the smallest principal moment (spin bound)
-    std::vector<bool> round_;             // disc or sphere: turning does not move the surface
-    std::vector<bool> plane_;
     std::vector<Track> track_;
-    std::vector<std::uint32_t> island_;   // 0: free; else the id of its island solve
-    std::vector<char> asleep_;            // 1: its island sleeps (v, w, a, alpha exactly 0)
-    std::vector<Weld> welds_;             // (dissolved welds stay, with no members)
-    std::vector<int> weld_of_;            // index into welds_; -1: not welded
-    std::unordered_set<std::uint64_t> passed_;  // pairs (a << 32 | b, a < b) the listing answered
-    double rest_smooth_ = 0.0, rest_cornered_ = 0.0;  // m/s: rest_speed() of the two kinds
-    // Per-body scratch of resolve() and settle(), valid where the stamp is current.
-    std::vector<std::uint32_t> mark_;     // reached / in the group / island member
-    std::uint32_t mark_id_ = 0;
-    std::vector<std::uint32_t> searched_; // contacts_of() ran for it in this search
-    std::uint32_t search_ = 0;
-    std::vector<std::size_t> parent_;     // settle()'s union-find
-    std::vector<typename Event<D>::Velocity> before_;  // resolve(): velocities before
-    std::unordered_map<std::uint32_t, std::vector<std::size_t>> members_;
-    std::uint32_t next_island_ = 1;
-    double time_ = 0.0;
-    double substep_end_ = 0.0;
-    // An advance that ended inside a substep (time_ < substep_end_): the next one goes on with
-    // its predictions (heap_), from the event loop's instant `now_`; bodies_now_ is every body
-    // at time_ (bodies_ stay where the substep's events left each of them).
-    bool open_ = false;
-    double now_ = 0.0;
-    std::uint64_t pops_at_now_ = 0;
-    std::vector<Body> bodies_now_;
     Counters counters_;
 
-    BroadPhase<D> grid_;
-    ContactSolver<D> solver_;
+    // The bodies' shapes and what follows from them, fixed for the run (world.cpp: the narrow
+    // phase and the motion bounds).
+    struct Shapes {
+        std::vector<Shape> of;
+        std::vector<double> radius;          // bounding radius (m); 0 for planes
+        std::vector<double> inv_min_moment;  // 1 / the smallest principal moment (spin bound)
+        std::vector<bool> round;             // disc or sphere: turning does not move the surface
+        std::vector<bool> plane;
+    } shapes_;
 
-    std::vector<char> stepped_;    // 1: advances by time steps
-    // 1: its motion is the last step's (a step taken again before its end gives back the
-    // gravity impulse of the time left, see "Stepped islands").
-    std::vector<char> solved_;
-    std::vector<double> until_;    // s: the end of a solved body's step
-    // Some body moves by exact events (not static, not stepped; awake or asleep): only then do
-    // stepped bodies predict impacts (with those bodies: they meet the rest at their steps).
-    // Set at each substep's start, and when a stepped body leaves its island.
-    bool exact_bodies_ = true;
-    bool restep_ = false;          // something joined, woke or was pushed: a step is taken now
-    std::vector<std::size_t> reseed_;  // ... these bodies: their islands are stepped again
-    std::vector<double> still_;    // s a stepped body has been slower than kStepSleepSpeed
-    struct Rate {                  // a pair's recent collisions (count_impact)
-        double since = 0.0;
-        int count = 0;
-    };
-    std::unordered_map<std::uint64_t, Rate> rates_;
-    double step_end_ = -std::numeric_limits<double>::infinity();  // the present step's end
-    IslandStepper<D> stepper_;
+    // The narrow phase's rules for a touching pair (world.cpp).
+    struct Narrow {
+        double rest_smooth = 0.0, rest_cornered = 0.0;  // m/s: rest_speed() of the two kinds
+        std::unordered_set<std::uint64_t> passed;       // pairs (a << 32 | b, a < b) the listing answered
+    } narrow_;
 
-    std::vector<Body> later_;  // solve_island's scratch: an island's bodies a step later
+    BroadPhase<D> grid_;       // broad phase (broad_phase.h)
+    ContactSolver<D> solver_;  // contact solver (contact_solver.h)
 
-    std::vector<Pending> heap_;
-    double stall_time_ = -1.0;                                  // see advance_to()
-    std::unordered_map<std::uint64_t, int> stalls_;
-    std::unordered_set<std::uint64_t> stalled_;
+    // The event loop (advance.cpp): the substep, its predicted impacts, and an advance paused
+    // inside it. An advance that ended inside a substep (time < substep_end) goes on with its
+    // predictions (heap) from the event loop's instant `now`; bodies_now is every body at time
+    // (bodies_ stay where the substep's events left each of them).
+    struct EventLoop {
+        double time = 0.0;
+        double substep_end = 0.0;
+        bool open = false;
+        double now = 0.0;
+        std::uint64_t pops_at_now = 0;
+        std::vector<Body> bodies_now;
+        std::vector<Pending> heap;
+        double stall_time = -1.0;  // see advance_to()
+        std::unordered_map<std::uint64_t, int> stalls;
+        std::unordered_set<std::uint64_t> stalled;
+    } loop_;
+
+    // Per-body scratch of one instant's searches (resolve(), settle(), step_islands()), valid
+    // where the stamp is current (fresh()).
+    struct Scratch {
+        std::vector<std::uint32_t> mark;  // reached / in the group / island member
+        std::uint32_t mark_id = 0;
+        std::vector<std::uint32_t> searched;  // contacts_of() ran for it in this search
+        std::uint32_t search = 0;
+        std::vector<std::size_t> parent;  // union-find of settle() and step_islands()
+        std::vector<typename Event<D>::Velocity> before;  // resolve(): velocities before
+    } scratch_;
+
+    // Islands and sleeping (islands.cpp).
+    struct Islands {
+        std::vector<std::uint32_t> of;  // per body: 0 free; else the id of its island solve
+        std::vector<char> asleep;       // 1: its island sleeps (v, w, a, alpha exactly 0)
+        std::unordered_map<std::uint32_t, std::vector<std::size_t>> members;
+        std::uint32_t next_id = 1;
+        std::vector<Body> later;  // solve_island's scratch: an island's bodies a step later
+    } islands_;
+
+    // Stuck bodies (weld.cpp).
+    struct Welds {
+        std::vector<Weld> all;  // (dissolved welds stay, with no members)
+        std::vector<int> of;    // per body: index into all; -1: not welded
+    } welds_;
+
+    // Stepped islands (stepped.cpp).
+    struct SteppedIslands {
+        std::vector<char> stepped;  // 1: advances by time steps
+        // 1: its motion is the last step's (a step taken again before its end gives back the
+        // gravity impulse of the time left, see "Stepped islands").
+        std::vector<char> solved;
+        std::vector<double> until;  // s: the end of a solved body's step
+        // Some body moves by exact events (not static, not stepped; awake or asleep): only then
+        // do stepped bodies predict impacts (with those bodies: they meet the rest at their
+        // steps). Set at each substep's start, and when a stepped body leaves its island.
+        bool exact_bodies = true;
+        bool restep = false;              // something joined, woke or was pushed: a step is taken now
+        std::vector<std::size_t> reseed;  // ... these bodies: their islands are stepped again
+        std::vector<double> still;        // s a stepped body has been slower than kStepSleepSpeed
+        struct Rate {                     // a pair's recent collisions (count_impact)
+            double since = 0.0;
+            int count = 0;
+        };
+        std::unordered_map<std::uint64_t, Rate> rates;
+        double end = -std::numeric_limits<double>::infinity();  // the present step's end
+        IslandStepper<D> stepper;
+    } steps_;
 };
 
 using World2 = World<2>;

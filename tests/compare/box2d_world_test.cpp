@@ -14,7 +14,7 @@
 #include "compare/match.h"
 #include "engine/response.h"
 #include "engine/world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide::compare {
 namespace {

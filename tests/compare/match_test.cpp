@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "compare/match.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide::compare {
 namespace {

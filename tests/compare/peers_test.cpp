@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "compare/box2d_world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 #ifdef COLLIDE_HAVE_BULLET
 #include "compare/bullet_world.h"
 #endif

@@ -1,10 +1,10 @@
-// Long runs (tests/engine/long_runs.h) cut to 10^5 output steps for the box and 2 x 10^4 for
+// Long runs (tests/scenes/long_runs.h) cut to 10^5 output steps for the box and 2 x 10^4 for
 // the gases (a few seconds in all); collide-long-run runs 10^6 and docs/tests.md gives its figures.
 // e = 1, frictionless, no gravity: the kinetic energy is exactly conserved by the physics, and
 // so is the free box's world angular momentum. Bounds: 1e-9 relative, where round-off grows
 // by about 1e-14 per impact and per 10^4 steps of torque-free turning (the implicit midpoint
 // rule keeps both invariants of the rotation to round-off whatever the step).
-#include "tests/engine/long_runs.h"
+#include "tests/scenes/long_runs.h"
 
 #include <cstdio>
 

@@ -10,7 +10,7 @@
 
 #include "engine/world.h"
 #include "engine/world1d.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide {
 namespace {

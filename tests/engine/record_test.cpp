@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/record.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide {
 namespace {

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace {
 
@@ -92,7 +92,7 @@ TEST(Stepped, PyramidOf20RowsStands) {
     EXPECT_EQ(awake, 0u) << "boxes still awake after 3 s";
 }
 
-// Boxes dropped into a bin (tests/engine/world_scenes.h, 40 of them here to keep the test
+// Boxes dropped into a bin (tests/scenes/world_scenes.h, 40 of them here to keep the test
 // short; the benchmarks run 100 and 400) with the default stepping = auto: the piles become
 // stepped, no two bodies overlap by more than 0.5 mm at any 1/60 s, every box stays inside
 // the bin, and the heap comes to rest.

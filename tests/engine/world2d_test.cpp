@@ -14,7 +14,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide {
 namespace {
@@ -250,7 +250,7 @@ TEST(World2d, RectangleDroppedFlatWithoutBounceRestsFlat) {
 
 // ---- 7b. Sleeping islands ------------------------------------------------------------------------
 
-// Box2D's pyramid (tests/engine/world_scenes.h): 20 rows, 210 unit boxes exactly touching,
+// Box2D's pyramid (tests/scenes/world_scenes.h): 20 rows, 210 unit boxes exactly touching,
 // Coulomb mu = 0.6, e = 0, at rest on the ground. Vertical forces alone hold it (every box's
 // load lies over its supports), so nothing may move at all: for 1 s every box keeps its
 // position and angle to 1e-12 m / rad and has no velocity (1e-12), no event happens, and the

@@ -15,7 +15,7 @@
 #include <gtest/gtest.h>
 
 #include "engine/world.h"
-#include "tests/engine/world_scenes.h"
+#include "tests/scenes/world_scenes.h"
 
 namespace collide {
 namespace {
