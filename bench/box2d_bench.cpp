@@ -38,8 +38,8 @@ double energy(const std::vector<Body2>& bodies, const Scene& scene, bool potenti
     return e;
 }
 
-void simulate_one_second(benchmark::State& state, const Scene& scene,
-                         const compare::Box2DSettings& settings, bool potential) {
+void simulate_one_second(benchmark::State& state, const Scene& scene, const compare::Box2DSettings& settings,
+                         bool potential) {
     std::vector<Body2> start;
     for (const SceneBody& b : scene.bodies) start.push_back(b.body2);
     const double e0 = energy(start, scene, potential);
@@ -80,9 +80,7 @@ void gas60(benchmark::State& state) {
 void gas600(benchmark::State& state) {
     simulate_one_second(state, gas_scene(static_cast<int>(state.range(0))), at(600.0), false);
 }
-void pyramid20(benchmark::State& state) {
-    simulate_one_second(state, scenes::pyramid({}), at(60.0), true);
-}
+void pyramid20(benchmark::State& state) { simulate_one_second(state, scenes::pyramid({}), at(60.0), true); }
 void pyramid20_awake(benchmark::State& state) {
     simulate_one_second(state, scenes::pyramid({}), at(60.0, false), true);
 }
@@ -124,12 +122,8 @@ void bin60(benchmark::State& state) { simulate_bin(state, 60.0); }
         benchmark::RegisterBenchmark("box2d/gas-600hz", gas600)->Arg(n)->Unit(benchmark::kMillisecond);
     }
     benchmark::RegisterBenchmark("box2d/pyramid20", pyramid20)->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("box2d/pyramid20-awake", pyramid20_awake)
-        ->Unit(benchmark::kMillisecond);
-    benchmark::RegisterBenchmark("box2d/bin", bin600)
-        ->Arg(100)
-        ->Arg(400)
-        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("box2d/pyramid20-awake", pyramid20_awake)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("box2d/bin", bin600)->Arg(100)->Arg(400)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("box2d-60hz/bin", bin60)->Arg(100)->Unit(benchmark::kMillisecond);
     return true;
 }();

@@ -87,8 +87,7 @@ render::RenderSettings settings(int w, int h, bool aa, bool view3d, bool region 
     return s;
 }
 
-void end_to_end(benchmark::State& state, const Run& run, int w, int h, bool aa, bool view3d,
-                bool region = true) {
+void end_to_end(benchmark::State& state, const Run& run, int w, int h, bool aa, bool view3d, bool region = true) {
     render::Renderer renderer(context(), run.scene, settings(w, h, aa, view3d, region));
     renderer.prepare(run.frames, run.impacts);
     const fs::path dir = fs::temp_directory_path() / ("collide-bench-" + std::to_string(::getpid()));
@@ -126,8 +125,8 @@ void encode_only(benchmark::State& state, int w, int h) {
     std::size_t bytes = 0;
     for (auto _ : state) {
         const render::Image& im = images[static_cast<std::size_t>(k++) % images.size()];
-        const std::vector<std::uint8_t> png = render::encode_png(im.width, im.height, im.rgba.data(),
-                                                                 render::PngOptions{1, true, false});
+        const std::vector<std::uint8_t> png =
+            render::encode_png(im.width, im.height, im.rgba.data(), render::PngOptions{1, true, false});
         bytes += png.size();
         benchmark::DoNotOptimize(png.data());
     }
@@ -138,16 +137,37 @@ void encode_only(benchmark::State& state, int w, int h) {
 }  // namespace
 
 BENCHMARK_CAPTURE(end_to_end, 720p_aa, billiards(), 1280, 720, true, false)
-    ->Name("render/720p/aa")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("render/720p/aa")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(end_to_end, 720p_plain, billiards(), 1280, 720, false, false)
-    ->Name("render/720p/plain")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("render/720p/plain")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(end_to_end, 1080p_aa, billiards(), 1920, 1080, true, false)
-    ->Name("render/1080p/aa")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("render/1080p/aa")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(encode_only, 720p, 1280, 720)
-    ->Name("encode/720p")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("encode/720p")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(end_to_end, 3d_720p_aa, dropped_box(), 1280, 720, true, true)
-    ->Name("render3d/720p/aa")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("render3d/720p/aa")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(end_to_end, 3d_720p_plain, dropped_box(), 1280, 720, false, true)
-    ->Name("render3d/720p/plain")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("render3d/720p/plain")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
 BENCHMARK_CAPTURE(end_to_end, 3d_720p_aa_whole, dropped_box(), 1280, 720, true, true, false)
-    ->Name("render3d/720p/aa-whole")->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+    ->Name("render3d/720p/aa-whole")
+    ->Iterations(kFrames)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();

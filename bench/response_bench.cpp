@@ -162,21 +162,21 @@ void run(benchmark::State& state, const Pool& pool, Solve solve) {
 
 }  // namespace
 
-#define RESPONSE_BENCH(NAME, POOL, EXPR) \
-    static void NAME(benchmark::State& s) { run(s, POOL(), [](const auto& c) { return EXPR; }); }
+#define RESPONSE_BENCH(NAME, POOL, EXPR)                                                                               \
+    static void NAME(benchmark::State& s) {                                                                            \
+        run(s, POOL(), [](const auto& c) { return EXPR; });                                                            \
+    }
 
 RESPONSE_BENCH(r3_frictionless, pool3, frictionless(c.a, c.b, c.n, e))
 RESPONSE_BENCH(r3_coulomb, pool3, coulomb(c.a, c.b, c.n, e, mu))
-RESPONSE_BENCH(r3_routh, pool3_slip_stops,
-               routh(c.a, c.b, c.n, e, kRouthMu, RestitutionLaw::stronge))
+RESPONSE_BENCH(r3_routh, pool3_slip_stops, routh(c.a, c.b, c.n, e, kRouthMu, RestitutionLaw::stronge))
 RESPONSE_BENCH(r3_matrix, pool3, matrix(c.a, c.b, c.n, e))
 RESPONSE_BENCH(r3_stick, pool3, stick(c.a, c.b, c.n))
 RESPONSE_BENCH(r3_stick_ne, pool3, stick_newton_euler(c.a, c.b, c.n))
 RESPONSE_BENCH(r3_page, pool3, page::listing(c.a, c.b, c.n, e))
 RESPONSE_BENCH(r2_frictionless, pool2, frictionless(c.a, c.b, c.n, e))
 RESPONSE_BENCH(r2_coulomb, pool2, coulomb(c.a, c.b, c.n, e, mu))
-RESPONSE_BENCH(r2_routh, pool2_slip_stops,
-               routh(c.a, c.b, c.n, e, kRouthMu, RestitutionLaw::stronge))
+RESPONSE_BENCH(r2_routh, pool2_slip_stops, routh(c.a, c.b, c.n, e, kRouthMu, RestitutionLaw::stronge))
 RESPONSE_BENCH(r2_matrix, pool2, matrix(c.a, c.b, c.n, e))
 RESPONSE_BENCH(r2_stick, pool2, stick(c.a, c.b, c.n))
 RESPONSE_BENCH(r1_frictionless, pool1, frictionless(c.a, c.b, c.n, e))

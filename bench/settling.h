@@ -36,17 +36,14 @@ void run_frames(Advance&& advance) {
 template <class Advance>
 double deepest_overlap_over_frames(const Scene& scene, Advance&& advance) {
     double deepest = 0.0;
-    run_frames([&](double t) {
-        deepest = std::max(deepest, scenes::deepest_overlap(scene, advance(t)));
-    });
+    run_frames([&](double t) { deepest = std::max(deepest, scenes::deepest_overlap(scene, advance(t))); });
     return deepest;
 }
 
 // Sets penetration_mm and resting_speed from the bodies at the end of the second, and
 // penetration_max_mm from deepest_overlap_over_frames (m).
 template <class Bodies>
-void settling_counters(benchmark::State& state, const Scene& scene, const Bodies& end,
-                       double deepest_over_frames) {
+void settling_counters(benchmark::State& state, const Scene& scene, const Bodies& end, double deepest_over_frames) {
     state.counters["penetration_mm"] = 1e3 * scenes::deepest_overlap(scene, end);
     state.counters["penetration_max_mm"] = 1e3 * deepest_over_frames;
     state.counters["resting_speed"] = scenes::fastest_surface_speed(scene, end);

@@ -78,9 +78,7 @@ void pile(benchmark::State& state) {
 
 // 20 rows of boxes (210) resting on the ground (tests/scenes/world_scenes.h, as Box2D's
 // pyramid benchmark), Coulomb friction 0.6, e = 0.
-void pyramid20(benchmark::State& state) {
-    simulate_one_second<2>(state, scenes::pyramid({}), true);
-}
+void pyramid20(benchmark::State& state) { simulate_one_second<2>(state, scenes::pyramid({}), true); }
 
 // One second of a contact-rich scene in 60 frames (bench/settling.h: where advance_to is asked
 // to stop shapes its substeps, so the frames are part of what is timed), from a copy of the
@@ -134,12 +132,9 @@ void tower(benchmark::State& state) {
     for (int n : {100, 1000, 10000})
         benchmark::RegisterBenchmark("world3d/gas", gas<3>)->Arg(n)->Unit(benchmark::kMillisecond);
     // Beside box2d/pyramid20: one iteration (the pyramid settles in one island solve and sleeps).
-    benchmark::RegisterBenchmark("world2d/pyramid20", pyramid20)
-        ->Iterations(1)
-        ->Unit(benchmark::kMillisecond);
-    for (const auto& [name, fn] :
-         std::vector<std::pair<std::string, void (*)(benchmark::State&)>>{{"world2d/pile", pile<2>},
-                                                                          {"world3d/pile", pile<3>}})
+    benchmark::RegisterBenchmark("world2d/pyramid20", pyramid20)->Iterations(1)->Unit(benchmark::kMillisecond);
+    for (const auto& [name, fn] : std::vector<std::pair<std::string, void (*)(benchmark::State&)>>{
+             {"world2d/pile", pile<2>}, {"world3d/pile", pile<3>}})
         benchmark::RegisterBenchmark(name.c_str(), fn)
             ->Arg(100)
             ->Arg(1000)
@@ -147,10 +142,7 @@ void tower(benchmark::State& state) {
             ->Iterations(1)
             ->Unit(benchmark::kMillisecond);
     // Beside box2d/bin/N and bullet/bin/100, bullet/tower/6.
-    benchmark::RegisterBenchmark("world2d/bin", bin<2>)
-        ->Arg(100)
-        ->Arg(400)
-        ->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark("world2d/bin", bin<2>)->Arg(100)->Arg(400)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("world3d/bin", bin<3>)->Arg(100)->Unit(benchmark::kMillisecond);
     benchmark::RegisterBenchmark("world3d/tower", tower)->Arg(6)->Unit(benchmark::kMillisecond);
     return true;

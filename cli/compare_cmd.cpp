@@ -23,9 +23,9 @@ namespace collide {
 
 namespace {
 
-using nlohmann::ordered_json;
 using compare::Box2DEvent;
 using compare::Comparison;
+using nlohmann::ordered_json;
 using Velocity = Event2::Velocity;
 
 constexpr int kBadInput = cli::kExitBadInput;
@@ -107,11 +107,10 @@ ordered_json or_null(const std::optional<T>& x) {
 }
 
 std::string materials(const compare::Box2DSettings& s) {
-    return s.box2d_defaults
-               ? "Box2D's defaults (restitution threshold 1 m/s, e = max(ea, eb), "
-                 "mu = sqrt(mua mub))"
-               : "matched to collide (e = min(ea, eb), mu = sqrt(mua mub) set per contact in "
-                 "PreSolve, restitution threshold 0)";
+    return s.box2d_defaults ? "Box2D's defaults (restitution threshold 1 m/s, e = max(ea, eb), "
+                              "mu = sqrt(mua mub))"
+                            : "matched to collide (e = min(ea, eb), mu = sqrt(mua mub) set per contact in "
+                              "PreSolve, restitution threshold 0)";
 }
 
 struct Summary {
@@ -132,8 +131,7 @@ Summary summarise(const Run& run) {
 // ---- Text ----
 
 // Rows of cells written in left-aligned columns two spaces apart.
-void write_columns(const std::vector<std::vector<std::string>>& rows, const std::string& indent,
-                   std::ostream& out) {
+void write_columns(const std::vector<std::vector<std::string>>& rows, const std::string& indent, std::ostream& out) {
     std::vector<std::size_t> width;
     for (const auto& r : rows)
         for (std::size_t c = 0; c < r.size(); ++c) {
@@ -151,14 +149,12 @@ void write_columns(const std::vector<std::vector<std::string>>& rows, const std:
 
 void write_header(const Run& run, const std::string& file, std::ostream& out) {
     const compare::Box2DSettings& s = run.settings;
-    out << "collide compare " << file << (run.scene.title.empty() ? "" : ": " + run.scene.title)
-        << "\n";
-    out << "Box2D 2.4.1 (float): dt = " << num(s.dt) << " s (" << num(1.0 / s.dt) << " Hz), "
-        << s.velocity_iterations << " velocity and " << s.position_iterations
-        << " position iterations\n";
+    out << "collide compare " << file << (run.scene.title.empty() ? "" : ": " + run.scene.title) << "\n";
+    out << "Box2D 2.4.1 (float): dt = " << num(s.dt) << " s (" << num(1.0 / s.dt) << " Hz), " << s.velocity_iterations
+        << " velocity and " << s.position_iterations << " position iterations\n";
     out << "materials: " << materials(s) << "\n";
-    out << "collide: model " << model_name(run.scene.model) << ", policy "
-        << policy_name(run.scene.policy) << ", exact impact times\n";
+    out << "collide: model " << model_name(run.scene.model) << ", policy " << policy_name(run.scene.policy)
+        << ", exact impact times\n";
     if (run.scene.model == Model::matrix || run.scene.model == Model::stick)
         out << "note: Box2D has no " << model_name(run.scene.model)
             << " model; it uses Coulomb friction with the scene's mu\n";
@@ -170,14 +166,13 @@ void write_header(const Run& run, const std::string& file, std::ostream& out) {
 
 void write_event(const Run& run, std::size_t k, const Comparison& c, std::ostream& out) {
     const Scene& s = run.scene;
-    out << "\nevent " << k + 1 << ": " << s.bodies[c.a].name << " - " << s.bodies[c.b].name
-        << "   t: collide " << (c.collide ? num(c.collide->t) + " s" : "-") << ", box2d "
+    out << "\nevent " << k + 1 << ": " << s.bodies[c.a].name << " - " << s.bodies[c.b].name << "   t: collide "
+        << (c.collide ? num(c.collide->t) + " s" : "-") << ", box2d "
         << (c.box2d ? num(c.box2d->t) + " s (step " + std::to_string(c.box2d->step) +
                           (c.box2d->continuous ? ", continuous" : "") + ")"
                     : "-")
         << "\n";
-    std::vector<std::vector<std::string>> rows{
-        {"", "", "v before", "w before", "v after", "w after"}};
+    std::vector<std::vector<std::string>> rows{{"", "", "v before", "w before", "v after", "w after"}};
     for (int side = 0; side < 2; ++side) {
         const std::size_t i = side == 0 ? c.a : c.b;
         if (s.bodies[i].is_static()) continue;
@@ -195,8 +190,8 @@ void write_event(const Run& run, std::size_t k, const Comparison& c, std::ostrea
     }
     write_columns(rows, "  ", out);
     if (c.collide && c.box2d)
-        out << "  normal: collide " << num(c.collide->normal) << ", box2d " << num(c.box2d->normal)
-            << " (" << c.box2d->points << (c.box2d->points == 1 ? " point" : " points")
+        out << "  normal: collide " << num(c.collide->normal) << ", box2d " << num(c.box2d->normal) << " ("
+            << c.box2d->points << (c.box2d->points == 1 ? " point" : " points")
             << (c.box2d->others > 0 ? ", " + std::to_string(c.box2d->others) + " other contact" +
                                           (c.box2d->others == 1 ? "" : "s") + " in its step"
                                     : "")
@@ -207,14 +202,14 @@ void write_event(const Run& run, std::size_t k, const Comparison& c, std::ostrea
 
 void write_samples_text(const Run& run, std::ostream& out) {
     out << "\nsamples (collide at t; Box2D at its last step at or before t)\n";
-    std::vector<std::vector<std::string>> rows{{"t (s)", "body", "engine", "x (m)", "angle (rad)",
-                                                "v (m/s)", "w (rad/s)"}};
+    std::vector<std::vector<std::string>> rows{
+        {"t (s)", "body", "engine", "x (m)", "angle (rad)", "v (m/s)", "w (rad/s)"}};
     for (const Sample& p : run.samples)
         for (std::size_t i = 0; i < run.scene.bodies.size(); ++i) {
             if (run.scene.bodies[i].is_static()) continue;
             const Body2 &x = p.ours[i], &y = p.theirs[i];
-            rows.push_back({num(p.t), run.scene.bodies[i].name, "collide", num(x.position),
-                            num(x.angle), num(x.v), num(x.w)});
+            rows.push_back(
+                {num(p.t), run.scene.bodies[i].name, "collide", num(x.position), num(x.angle), num(x.v), num(x.w)});
             rows.push_back({"", "", "box2d", num(y.position), num(y.angle), num(y.v), num(y.w)});
         }
     write_columns(rows, "", out);
@@ -225,8 +220,8 @@ void write_text(const Run& run, const std::string& file, std::ostream& out) {
     for (std::size_t k = 0; k < run.matched.size(); ++k) write_event(run, k, run.matched[k], out);
     if (!run.samples.empty()) write_samples_text(run, out);
     const Summary sum = summarise(run);
-    out << "\nsummary: " << run.ours.size() << " events in collide, " << run.theirs.size()
-        << " in Box2D; " << sum.matched << " matched, " << sum.agree << " agree";
+    out << "\nsummary: " << run.ours.size() << " events in collide, " << run.theirs.size() << " in Box2D; "
+        << sum.matched << " matched, " << sum.agree << " agree";
     if (sum.matched > 0) out << "; largest difference " << num(sum.largest);
     out << "\n";
 }
@@ -245,9 +240,8 @@ ordered_json event_json(const Run& run, const Comparison& c) {
     j["difference"] = or_null(c.difference);
     j["reason"] = c.reason;
     // Beyond the documented fields: the state before, the normals and Box2D's contact.
-    j["before"] = {
-        {"collide", c.collide ? pair_json(c.collide->before_a, c.collide->before_b) : ordered_json(nullptr)},
-        {"box2d", c.box2d ? pair_json(c.box2d->before_a, c.box2d->before_b) : ordered_json(nullptr)}};
+    j["before"] = {{"collide", c.collide ? pair_json(c.collide->before_a, c.collide->before_b) : ordered_json(nullptr)},
+                   {"box2d", c.box2d ? pair_json(c.box2d->before_a, c.box2d->before_b) : ordered_json(nullptr)}};
     j["difference_before"] = or_null(c.difference_before);
     j["normal"] = {{"collide", c.collide ? arr(c.collide->normal) : ordered_json(nullptr)},
                    {"box2d", c.box2d ? arr(c.box2d->normal) : ordered_json(nullptr)}};
@@ -255,14 +249,10 @@ ordered_json event_json(const Run& run, const Comparison& c) {
     j["impulse"] = {{"collide", c.collide ? arr(c.collide->impulse) : ordered_json(nullptr)},
                     {"box2d", c.box2d ? arr(c.box2d->impulse) : ordered_json(nullptr)}};
     if (c.box2d)
-        j["box2d_contact"] = {{"step", c.box2d->step},
-                              {"continuous", c.box2d->continuous},
-                              {"points", c.box2d->points},
-                              {"other_contacts", c.box2d->others},
-                              {"approach", c.box2d->approach},
-                              {"restitution", c.box2d->restitution},
-                              {"friction", c.box2d->friction},
-                              {"threshold", c.box2d->threshold}};
+        j["box2d_contact"] = {{"step", c.box2d->step},         {"continuous", c.box2d->continuous},
+                              {"points", c.box2d->points},     {"other_contacts", c.box2d->others},
+                              {"approach", c.box2d->approach}, {"restitution", c.box2d->restitution},
+                              {"friction", c.box2d->friction}, {"threshold", c.box2d->threshold}};
     return j;
 }
 
@@ -309,12 +299,9 @@ void write_json(const Run& run, std::ostream& out) {
 // An option out of range: "collide: error: --dt: ..." (exit 2).
 std::string check_options(const CompareOptions& o, const Scene& scene) {
     if (!(o.dt > 0.0) || !std::isfinite(o.dt)) return "--dt: expected a time step > 0 (s)";
-    if (scene.duration / o.dt > kMaxSteps)
-        return "--dt: the scene's duration / dt gives more than 10^8 Box2D steps";
-    if (o.velocity_iterations < 1 || o.velocity_iterations > 10000)
-        return "--velocity-iterations: expected 1 to 10000";
-    if (o.position_iterations < 0 || o.position_iterations > 10000)
-        return "--position-iterations: expected 0 to 10000";
+    if (scene.duration / o.dt > kMaxSteps) return "--dt: the scene's duration / dt gives more than 10^8 Box2D steps";
+    if (o.velocity_iterations < 1 || o.velocity_iterations > 10000) return "--velocity-iterations: expected 1 to 10000";
+    if (o.position_iterations < 0 || o.position_iterations > 10000) return "--position-iterations: expected 0 to 10000";
     return "";
 }
 

@@ -17,11 +17,11 @@
 namespace collide {
 
 struct CompareOptions {
-    std::string file;                // scenario file (TOML), 2D
+    std::string file;  // scenario file (TOML), 2D
     bool json = false;
     bool samples = false;
-    bool box2d_defaults = false;     // Box2D's threshold (1 m/s) and mixing; else collide's rules
-    double dt = 1.0 / 600.0;         // s: Box2D's step
+    bool box2d_defaults = false;  // Box2D's threshold (1 m/s) and mixing; else collide's rules
+    double dt = 1.0 / 600.0;      // s: Box2D's step
     int velocity_iterations = 8;
     int position_iterations = 3;
 };

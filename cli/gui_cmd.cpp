@@ -203,8 +203,8 @@ private:
 struct Ui {
     bool help = false;
     int speed = 0;
-    std::string status;     // the last thing done ("saved ...")
-    int saved = 0;          // frames saved, for their names
+    std::string status;  // the last thing done ("saved ...")
+    int saved = 0;       // frames saved, for their names
 };
 
 // Under a frame shorter than the window: the keys, and what was done last.
@@ -213,8 +213,7 @@ void draw_keys(const Ui& ui, bool perspective, int y, int width, int height) {
     ImGui::SetNextWindowSize(ImVec2(static_cast<float>(width), static_cast<float>(height)));
     ImGui::Begin("keys", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings);
-    ImGui::TextWrapped(
-        "Space play / pause    → ← one frame    N next collision    Home the start    S slower");
+    ImGui::TextWrapped("Space play / pause    → ← one frame    N next collision    Home the start    S slower");
     ImGui::TextWrapped("R reset    F save the frame    G save the figure    H help    Q quit");
     if (perspective) ImGui::TextWrapped("Drag over the frame to turn the camera; the wheel zooms.");
     ImGui::TextWrapped(
@@ -293,7 +292,7 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
     // Physics: scene-wide.
     const Scene& sc = m.scene();
     float e = static_cast<float>(sc.restitution);
-    if (ImGui::SliderFloat("e (restitution)", &e, 0.0f, 1.0f, "%.2f") ) {
+    if (ImGui::SliderFloat("e (restitution)", &e, 0.0f, 1.0f, "%.2f")) {
         m.set_restitution(e);
     }
     float mu = static_cast<float>(sc.friction);
@@ -316,7 +315,8 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
         ImGui::PushID(static_cast<int>(i));
         if (ImGui::CollapsingHeader(b.name.c_str())) {
             double mass = render::body_mass(sc, i);
-            if (ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) && mass > 0) {
+            if (ImGui::InputDouble("mass (kg)", &mass, 0.0, 0.0, "%.4g", ImGuiInputTextFlags_EnterReturnsTrue) &&
+                mass > 0) {
                 m.set_mass(i, mass);
             }
             // Size: the shape scaled about its centre (mass kept).
@@ -328,8 +328,13 @@ bool draw_panel(Session& s, Ui& ui, int x, int height, const std::vector<std::st
             }
             ImGui::Text("size");
             const int d = sc.dimension;
-            double v[3] = {d == 1 ? b.body1.v : d == 2 ? b.body2.v.x() : b.body3.v.x(),
-                           d == 2 ? b.body2.v.y() : d == 3 ? b.body3.v.y() : 0.0, d == 3 ? b.body3.v.z() : 0.0};
+            double v[3] = {d == 1   ? b.body1.v
+                           : d == 2 ? b.body2.v.x()
+                                    : b.body3.v.x(),
+                           d == 2   ? b.body2.v.y()
+                           : d == 3 ? b.body3.v.y()
+                                    : 0.0,
+                           d == 3 ? b.body3.v.z() : 0.0};
             if (ImGui::InputScalarN("v (m/s)", ImGuiDataType_Double, v, d, nullptr, nullptr, "%.4g",
                                     ImGuiInputTextFlags_EnterReturnsTrue)) {
                 m.set_velocity(i, Vec3(v[0], v[1], v[2]));
@@ -448,7 +453,9 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
             controls.make_current();
             const bool scripted = next_action < script.size();
             // Waiting for events, the progress bar of a re-run still moves.
-            controls.poll_events(scripted || session->model().playing ? 0.0 : session->model().running() ? 1.0 / 30 : 0.1);
+            controls.poll_events(scripted || session->model().playing ? 0.0
+                                 : session->model().running()         ? 1.0 / 30
+                                                                      : 0.1);
             session->poll();  // a re-run that has finished replaces the frames
             const auto now = std::chrono::steady_clock::now();
             session->model().advance(std::chrono::duration<double>(now - last).count());
@@ -500,13 +507,14 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
                 if (controls.letter_pressed('F')) ui.status = "save-frame";
                 if (controls.letter_pressed('G')) ui.status = "save-figure";
                 if (controls.letter_pressed('H')) ui.help = !ui.help;
-                if (controls.letter_pressed('Q') || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) quit = true;
+                if (controls.letter_pressed('Q') || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)))
+                    quit = true;
             }
 
             // The 3D view's camera: drag to orbit, wheel to zoom, over the frame.
             const ImGuiIO& io = ImGui::GetIO();
-            const bool over_frame = io.MousePos.x >= 0 && io.MousePos.x < frame_w && io.MousePos.y >= 0 &&
-                                    io.MousePos.y < frame_h;
+            const bool over_frame =
+                io.MousePos.x >= 0 && io.MousePos.x < frame_w && io.MousePos.y >= 0 && io.MousePos.y < frame_h;
             if (!io.WantCaptureMouse && over_frame)
                 session->orbit(ImGui::IsMouseDragging(ImGuiMouseButton_Left) ? io.MouseDelta.x : 0.0f,
                                ImGui::IsMouseDragging(ImGuiMouseButton_Left) ? io.MouseDelta.y : 0.0f, io.MouseWheel);
@@ -517,8 +525,7 @@ int run_gui(const GuiOptions& o, std::ostream& out, std::ostream& err) {
             session->draw_frame_behind();
             if (window_h > frame_h) draw_keys(ui, session->perspective(), frame_h, frame_w, window_h - frame_h);
             std::string switch_to;
-            if (draw_panel(*session, ui, frame_w, window_h, lesson_ids, &switch_to, &quit))
-                session->rebuild_renderer();
+            if (draw_panel(*session, ui, frame_w, window_h, lesson_ids, &switch_to, &quit)) session->rebuild_renderer();
             const float background[4] = {0.93f, 0.93f, 0.91f, 1.0f};
             controls.end_frame(background);
             if (!screenshot.empty()) {

@@ -20,7 +20,7 @@ namespace collide {
 
 namespace {
 
-constexpr double kMaxMagnitude = 1e12;      // as in scenario files
+constexpr double kMaxMagnitude = 1e12;  // as in scenario files
 
 const char* const kHelp[] = {
     "commands:",
@@ -56,11 +56,9 @@ std::string num(double x) { return notation::num_text(x); }
 // The optional count of `step [n]` and `back [n]`.
 std::size_t count(const Words& words) {
     if (words.size() == 1) return 1;
-    if (words.size() > 2)
-        throw std::runtime_error(words[0] + " takes at most one number: " + words[0] + " [n]");
+    if (words.size() > 2) throw std::runtime_error(words[0] + " takes at most one number: " + words[0] + " [n]");
     const std::string& w = words[1];
-    if (w.find_first_not_of("0123456789") != std::string::npos || w.size() > 9 ||
-        std::stoul(w) == 0)
+    if (w.find_first_not_of("0123456789") != std::string::npos || w.size() > 9 || std::stoul(w) == 0)
         throw std::runtime_error("n must be a whole number >= 1, not '" + w + "'");
     return std::stoul(w);
 }
@@ -74,27 +72,23 @@ std::vector<double> numbers(std::string text) {
     for (std::string w; in >> w;) {
         char* end = nullptr;
         const double x = std::strtod(w.c_str(), &end);
-        if (end != w.c_str() + w.size() || !std::isfinite(x))
-            throw std::runtime_error("'" + w + "' is not a number");
+        if (end != w.c_str() + w.size() || !std::isfinite(x)) throw std::runtime_error("'" + w + "' is not a number");
         if (std::abs(x) > kMaxMagnitude) throw std::runtime_error(w + " is larger than 1e12");
         values.push_back(x);
     }
     return values;
 }
 
-void need(const std::vector<double>& values, std::size_t n, const std::string& field,
-          const std::string& example) {
+void need(const std::vector<double>& values, std::size_t n, const std::string& field, const std::string& example) {
     if (values.size() != n)
-        throw std::runtime_error(field + " takes " +
-                                 (n == 1 ? "one number" : std::to_string(n) + " numbers") +
+        throw std::runtime_error(field + " takes " + (n == 1 ? "one number" : std::to_string(n) + " numbers") +
                                  ", e.g. " + example + "; got " + std::to_string(values.size()));
 }
 
 // ---- set: one field of one body ----
 
 void set_field(Body1* b, const std::string& field, const std::vector<double>& x) {
-    if (field != "x" && field != "v")
-        throw std::runtime_error("no field '" + field + "': 1D bodies have x and v");
+    if (field != "x" && field != "v") throw std::runtime_error("no field '" + field + "': 1D bodies have x and v");
     need(x, 1, field, field == "x" ? "0.5" : "-2");
     (field == "x" ? b->position : b->v) = x[0];
 }
@@ -130,8 +124,7 @@ double overlap(const Scene& s, std::size_t i, const Body1& bi, std::size_t j, co
     return 0.5 * (s.bodies[i].length + s.bodies[j].length) - std::abs(bi.position - bj.position);
 }
 double overlap(const Scene& s, std::size_t i, const Body2& bi, std::size_t j, const Body2& bj) {
-    return -collide(s.bodies[i].shape2, Pose2{bi.position, bi.angle}, s.bodies[j].shape2,
-                    Pose2{bj.position, bj.angle})
+    return -collide(s.bodies[i].shape2, Pose2{bi.position, bi.angle}, s.bodies[j].shape2, Pose2{bj.position, bj.angle})
                 .separation;
 }
 double overlap(const Scene& s, std::size_t i, const Body3& bi, std::size_t j, const Body3& bj) {
@@ -218,8 +211,7 @@ private:
         const std::size_t steps = on_grid_ ? n : n - 1;
         const std::size_t to = steps > k() ? 0 : k() - steps;
         now_ = past_[to].world;
-        events_.erase(events_.begin() + static_cast<std::ptrdiff_t>(past_[to].events),
-                      events_.end());
+        events_.erase(events_.begin() + static_cast<std::ptrdiff_t>(past_[to].events), events_.end());
         past_.erase(past_.begin() + static_cast<std::ptrdiff_t>(to) + 1, past_.end());
         on_grid_ = true;
         print(now_);
@@ -239,8 +231,7 @@ private:
         }
         if (fresh.empty())
             throw std::runtime_error("no collision from t = " + num(now_.time()) +
-                                     " s to the end of the scene (t = " + num(times_.back()) +
-                                     " s)");
+                                     " s to the end of the scene (t = " + num(times_.back()) + " s)");
         const double t = fresh.front().t;
         World at = before;
         std::vector<Event> hit;
@@ -252,16 +243,12 @@ private:
             after = std::nextafter(after, std::numeric_limits<double>::infinity());
             at.advance_to(after, &hit);
         }
-        if (hit.empty())
-            throw std::runtime_error("the collision at t = " + num(t) +
-                                     " s did not recur when replayed");
+        if (hit.empty()) throw std::runtime_error("the collision at t = " + num(t) + " s did not recur when replayed");
         commit(at, passed, hit, false);
         if (json_) {
-            out_ << "{\"before\":" << state_json(scene_, before.time(), before.bodies())
-                 << ",\"at\":[";
+            out_ << "{\"before\":" << state_json(scene_, before.time(), before.bodies()) << ",\"at\":[";
             const std::vector<bool> gains = energy_gains(scene_, hit);
-            for (std::size_t e = 0; e < hit.size(); ++e)
-                out_ << (e ? "," : "") << event_json(scene_, hit[e], gains[e]);
+            for (std::size_t e = 0; e < hit.size(); ++e) out_ << (e ? "," : "") << event_json(scene_, hit[e], gains[e]);
             out_ << "],\"after\":" << state_json(scene_, at.time(), at.bodies()) << "}\n";
             return;
         }
@@ -279,26 +266,22 @@ private:
     }
 
     void set(const Words& words) {
-        const std::string example =
-            D == 1 ? "set ball.v -2" : D == 2 ? "set ball.v 1,2" : "set ball.v 1,2,0";
-        if (words.size() < 3)
-            throw std::runtime_error("write set BODY.FIELD VALUE, e.g. " + example);
+        const std::string example = D == 1 ? "set ball.v -2" : D == 2 ? "set ball.v 1,2" : "set ball.v 1,2,0";
+        if (words.size() < 3) throw std::runtime_error("write set BODY.FIELD VALUE, e.g. " + example);
         const std::size_t dot = words[1].rfind('.');
         if (dot == std::string::npos)
-            throw std::runtime_error("'" + words[1] + "' names no field; write BODY.FIELD, e.g. " +
-                                     example);
+            throw std::runtime_error("'" + words[1] + "' names no field; write BODY.FIELD, e.g. " + example);
         const std::size_t i = body(words[1].substr(0, dot));
         if (scene_.bodies[i].is_static())
-            throw std::runtime_error("'" + scene_.bodies[i].name +
-                                     "' is static and stays where it is");
+            throw std::runtime_error("'" + scene_.bodies[i].name + "' is static and stays where it is");
         auto b = now_.bodies()[i];
         set_field(&b, words[1].substr(dot + 1), numbers(join(words, 2)));
         for (std::size_t j = 0; j < scene_.bodies.size(); ++j) {
             if (j == i) continue;
             const double depth = overlap(scene_, i, b, j, now_.bodies()[j]);
             if (depth > kOverlapTolerance)
-                throw std::runtime_error("'" + scene_.bodies[i].name + "' would overlap '" +
-                                         scene_.bodies[j].name + "' by " + num(depth) + " m");
+                throw std::runtime_error("'" + scene_.bodies[i].name + "' would overlap '" + scene_.bodies[j].name +
+                                         "' by " + num(depth) + " m");
         }
         World w = now_;
         w.set_body(i, b);
@@ -324,8 +307,7 @@ private:
         throw std::runtime_error("no body named '" + name + "'; the bodies are " + names);
     }
 
-    void commit(const World& w, const std::vector<Snapshot>& passed, const std::vector<Event>& fresh,
-                bool on_grid) {
+    void commit(const World& w, const std::vector<Snapshot>& passed, const std::vector<Event>& fresh, bool on_grid) {
         now_ = w;
         past_.insert(past_.end(), passed.begin(), passed.end());
         events_.insert(events_.end(), fresh.begin(), fresh.end());
@@ -343,13 +325,13 @@ private:
 };
 
 template <int D>
-void loop(const Scene& scene, const InteractiveOptions& options, std::istream& in,
-          std::ostream& out, std::ostream& err) {
+void loop(const Scene& scene, const InteractiveOptions& options, std::istream& in, std::ostream& out,
+          std::ostream& err) {
     Session<D> session(scene, options.json, out);
     if (options.prompt) {
-        out << (scene.title.empty() ? "Scene" : scene.title) << " (" << D << "D, "
-            << scene.bodies.size() << " bodies): t = 0 to " << num(scene.duration)
-            << " s in steps of " << num(scene.output_dt) << " s. help lists the commands.\n";
+        out << (scene.title.empty() ? "Scene" : scene.title) << " (" << D << "D, " << scene.bodies.size()
+            << " bodies): t = 0 to " << num(scene.duration) << " s in steps of " << num(scene.output_dt)
+            << " s. help lists the commands.\n";
         session.print(session.now());
     }
     for (std::string line;;) {
@@ -371,8 +353,8 @@ void loop(const Scene& scene, const InteractiveOptions& options, std::istream& i
 
 }  // namespace
 
-void run_interactive(const Scene& scene, const InteractiveOptions& options, std::istream& in,
-                     std::ostream& out, std::ostream& err) {
+void run_interactive(const Scene& scene, const InteractiveOptions& options, std::istream& in, std::ostream& out,
+                     std::ostream& err) {
     if (scene.dimension == 1) loop<1>(scene, options, in, out, err);
     else if (scene.dimension == 2) loop<2>(scene, options, in, out, err);
     else loop<3>(scene, options, in, out, err);

@@ -15,7 +15,7 @@ struct InteractiveOptions {
 
 // Reads commands from in until `quit` or the end of input. Replies go to out, errors in
 // commands to err; a failed command changes nothing and the loop goes on.
-void run_interactive(const Scene& scene, const InteractiveOptions& options, std::istream& in,
-                     std::ostream& out, std::ostream& err);
+void run_interactive(const Scene& scene, const InteractiveOptions& options, std::istream& in, std::ostream& out,
+                     std::ostream& err);
 
 }  // namespace collide

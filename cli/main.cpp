@@ -39,8 +39,7 @@ int run_solve(const std::string& file, const std::string& format, const std::str
 int run_step(const std::string& file, const collide::StepOptions& options, bool interactive) {
     const collide::Scene scene = collide::load_scenario(file);
     if (interactive) {
-        collide::run_interactive(scene, {options.json, isatty(0) != 0}, std::cin, std::cout,
-                                 std::cerr);
+        collide::run_interactive(scene, {options.json, isatty(0) != 0}, std::cin, std::cout, std::cerr);
         return 0;
     }
     std::ostringstream out;
@@ -52,23 +51,24 @@ int run_step(const std::string& file, const collide::StepOptions& options, bool 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"collide: an educational rigid-body collision simulator (1D, 2D, 3D).\n"
-                 "Conventions: SI units; the contact normal n points from body A into body B;\n"
-                 "the impulse P acts as +P on B and -P on A."};
+    CLI::App app{
+        "collide: an educational rigid-body collision simulator (1D, 2D, 3D).\n"
+        "Conventions: SI units; the contact normal n points from body A into body B;\n"
+        "the impulse P acts as +P on B and -P on A."};
     app.name("collide");
     app.set_version_flag("--version", std::string("collide ") + COLLIDE_VERSION);
     app.require_subcommand(1);
 
     std::string file, format = "text", model;
-    CLI::App* solve = app.add_subcommand(
-        "solve", "Solve one collision from a TOML file and show the worked example");
+    CLI::App* solve = app.add_subcommand("solve", "Solve one collision from a TOML file and show the worked example");
     solve->add_option("FILE", file, "collision description (TOML); - reads stdin")->required();
     solve->add_option("--format", format, "text (worked example), markdown (with LaTeX) or json")
         ->check(CLI::IsMember({"text", "markdown", "json"}))
         ->capture_default_str();
-    solve->add_option("--model", model,
-                      "use this response model instead of the file's: frictionless, coulomb, "
-                      "matrix, stick, page-listing or routh (Stronge's law unless the file names one)")
+    solve
+        ->add_option("--model", model,
+                     "use this response model instead of the file's: frictionless, coulomb, "
+                     "matrix, stick, page-listing or routh (Stronge's law unless the file names one)")
         ->check(CLI::IsMember({"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"}));
     solve->footer(
         "Example: collide solve lessons/solve/rod-on-ground.toml --format markdown\n"
@@ -76,63 +76,65 @@ int main(int argc, char** argv) {
 
     std::string scene_file;
     collide::StepOptions step_options;
-    CLI::App* step = app.add_subcommand(
-        "step", "Run a scenario file and print its state at every output step (or its events)");
+    CLI::App* step =
+        app.add_subcommand("step", "Run a scenario file and print its state at every output step (or its events)");
     step->add_option("FILE", scene_file, "scenario (TOML) or lesson id; - reads stdin")->required();
     step->add_flag("--json", step_options.json, "one JSON object per line");
-    CLI::Option* events = step->add_flag(
-        "--events", step_options.events,
-        "only the collision events: time, bodies, point, normal, impulse, velocities before and "
-        "after");
+    CLI::Option* events =
+        step->add_flag("--events", step_options.events,
+                       "only the collision events: time, bodies, point, normal, impulse, velocities before and "
+                       "after");
     bool interactive = false, no_interactive = false;
-    CLI::Option* interactive_flag = step->add_flag(
-        "--interactive", interactive,
-        "read commands from stdin (step, next, back, show, set, events, help, quit); the default "
-        "when stdin and stdout are terminals and neither --json nor --events is given");
+    CLI::Option* interactive_flag =
+        step->add_flag("--interactive", interactive,
+                       "read commands from stdin (step, next, back, show, set, events, help, quit); the default "
+                       "when stdin and stdout are terminals and neither --json nor --events is given");
     step->add_flag("--no-interactive", no_interactive, "print the table even in a terminal")
         ->excludes(interactive_flag);
     interactive_flag->excludes(events);
-    step->footer("Steps 1D, 2D and 3D scenes from impact to impact at the exact instants.\n"
-                 "Scenario format and commands: docs/formats/scenario-files.md, docs/commands/step.md.");
+    step->footer(
+        "Steps 1D, 2D and 3D scenes from impact to impact at the exact instants.\n"
+        "Scenario format and commands: docs/formats/scenario-files.md, docs/commands/step.md.");
 
     collide::RenderOptions render_options;
-    CLI::App* render = app.add_subcommand(
-        "render", "Render a scenario headless: PNG frames, the before / at / after figure, data");
-    render->add_option("SCENARIO", render_options.scenario,
-                       "a scenario file (TOML), a lesson file, or a lesson id (collide lessons)")
+    CLI::App* render =
+        app.add_subcommand("render", "Render a scenario headless: PNG frames, the before / at / after figure, data");
+    render
+        ->add_option("SCENARIO", render_options.scenario,
+                     "a scenario file (TOML), a lesson file, or a lesson id (collide lessons)")
         ->required();
-    render->add_option("-o,--output", render_options.out_dir, "output directory (created)")
-        ->required();
-    render->add_option("--size", render_options.size, "WxH, or 480p, 720p, 1080p, 1440p")
-        ->capture_default_str();
-    render->add_option("--fps", render_options.fps, "frames per simulated second")
-        ->capture_default_str();
+    render->add_option("-o,--output", render_options.out_dir, "output directory (created)")->required();
+    render->add_option("--size", render_options.size, "WxH, or 480p, 720p, 1080p, 1440p")->capture_default_str();
+    render->add_option("--fps", render_options.fps, "frames per simulated second")->capture_default_str();
     // CLI11's IsMember checks below list the values in --help and refuse others in CLI11's own
     // words; they are handed the lists of collide::render_choices(), the names that
     // collide::parse_render_request (cli/render_request.h) reads. That parse is the one place the
     // options are turned into what the render does: run_render calls it.
     const collide::RenderChoices& choices = collide::render_choices();
-    render->add_option("--quality", render_options.quality,
-                       "low (no anti-aliasing), medium (anti-aliased, fast PNGs) or high "
-                       "(anti-aliased, smaller PNGs)")
+    render
+        ->add_option("--quality", render_options.quality,
+                     "low (no anti-aliasing), medium (anti-aliased, fast PNGs) or high "
+                     "(anti-aliased, smaller PNGs)")
         ->check(CLI::IsMember(choices.quality))
         ->capture_default_str();
-    render->add_option("--view", render_options.view,
-                       "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, "
-                       "3d for 3D")
+    render
+        ->add_option("--view", render_options.view,
+                     "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, "
+                     "3d for 3D")
         ->check(CLI::IsMember(choices.view));
-    render->add_option("--format", render_options.format,
-                       "png (the frames), or also DIR/animation.mp4 or DIR/animation.gif "
-                       "(needs ffmpeg)")
+    render
+        ->add_option("--format", render_options.format,
+                     "png (the frames), or also DIR/animation.mp4 or DIR/animation.gif "
+                     "(needs ffmpeg)")
         ->check(CLI::IsMember(choices.format))
         ->capture_default_str();
-    render->add_option("--backend", render_options.backend,
-                       "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)")
+    render
+        ->add_option("--backend", render_options.backend,
+                     "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)")
         ->check(CLI::IsMember(choices.backend))
         ->capture_default_str();
     render->add_flag("--quiet", render_options.quiet, "no progress bar and no summary");
-    render->add_flag("--force", render_options.force,
-                     "write into a directory that is not empty (replacing our files)");
+    render->add_flag("--force", render_options.force, "write into a directory that is not empty (replacing our files)");
     render->footer(
         "Writes DIR/frames/frame_00000.png ..., DIR/before.png, DIR/at.png, DIR/after.png,\n"
         "DIR/figure.png (the three side by side), DIR/worked-example.md, DIR/data.csv,\n"
@@ -146,11 +148,11 @@ int main(int argc, char** argv) {
     bool lessons_json = false;
     CLI::App* lessons = app.add_subcommand("lessons", "List the bundled lessons: id, title, dimension, duration");
     lessons->add_flag("--json", lessons_json, "one JSON object per lesson, one per line");
-    lessons->footer("Render one: collide render ID -o DIR. Lessons live in lessons/*.toml (docs/formats/lesson-files.md).");
+    lessons->footer(
+        "Render one: collide render ID -o DIR. Lessons live in lessons/*.toml (docs/formats/lesson-files.md).");
 
     collide::MaterialOptions material_options;
-    CLI::App* material = app.add_subcommand(
-        "material", "Write a self-contained HTML site of lessons (works offline)");
+    CLI::App* material = app.add_subcommand("material", "Write a self-contained HTML site of lessons (works offline)");
     material->add_option("LESSON", material_options.lessons,
                          "lesson ids or lesson files (default: every bundled lesson)");
     material->add_option("-o,--output", material_options.out_dir, "output directory")->required();
@@ -170,8 +172,8 @@ int main(int argc, char** argv) {
         "Example: collide material -o out/site && chromium out/site/index.html\n"
         "See docs/commands/material.md.");
     collide::WorksheetOptions worksheet_options;
-    CLI::App* worksheet = app.add_subcommand(
-        "worksheet", "Write printable worksheets: each student's own numbers, and an answer key");
+    CLI::App* worksheet =
+        app.add_subcommand("worksheet", "Write printable worksheets: each student's own numbers, and an answer key");
     worksheet->add_option("LESSON", worksheet_options.lessons, "lesson ids or lesson files")->required();
     worksheet->add_option("-o,--output", worksheet_options.out_dir, "output directory")->required();
     worksheet->add_option("--students", worksheet_options.students, "how many sheets (1 to 1000)")
@@ -188,14 +190,12 @@ int main(int argc, char** argv) {
         "Example: collide worksheet catch-up -o out/ws --students 30 --seed 7\n"
         "See docs/commands/worksheet.md.");
     collide::GuiOptions gui_options;
-    CLI::App* gui = app.add_subcommand(
-        "gui", "Open a window: the scene's frame with controls to change it, play it and step it");
+    CLI::App* gui =
+        app.add_subcommand("gui", "Open a window: the scene's frame with controls to change it, play it and step it");
     gui->add_option("SCENARIO", gui_options.scenario, "a lesson id, a lesson file or a scenario file")
         ->capture_default_str();
-    gui->add_option("--size", gui_options.size, "the frame: WxH, or 480p, 720p, 1080p, 1440p")
-        ->capture_default_str();
-    gui->add_option("--fps", gui_options.fps, "frames per simulated second (as collide render)")
-        ->capture_default_str();
+    gui->add_option("--size", gui_options.size, "the frame: WxH, or 480p, 720p, 1080p, 1440p")->capture_default_str();
+    gui->add_option("--fps", gui_options.fps, "frames per simulated second (as collide render)")->capture_default_str();
     gui->add_option("--view", gui_options.view, "2d or 3d (default: 2d for 1D and 2D scenes, 3d for 3D)")
         ->check(CLI::IsMember(choices.view));
     gui->add_option("--script", gui_options.script,
@@ -218,9 +218,10 @@ int main(int argc, char** argv) {
         "Example: collide gui rotation-directions --size 720p\n"
         "See docs/commands/gui.md.");
     collide::CompareOptions compare_options;
-    CLI::App* compare = app.add_subcommand(
-        "compare", "Run a 2D scenario through collide and through Box2D 2.4.1 and compare their "
-                   "collisions");
+    CLI::App* compare =
+        app.add_subcommand("compare",
+                           "Run a 2D scenario through collide and through Box2D 2.4.1 and compare their "
+                           "collisions");
     compare->add_option("FILE", compare_options.file, "a 2D scenario (TOML), lesson file or lesson id; - reads stdin")
         ->required();
     compare->add_flag("--json", compare_options.json,
@@ -232,13 +233,14 @@ int main(int argc, char** argv) {
                       "Box2D's own material rules: restitution threshold 1 m/s, e = max(ea, eb), "
                       "mu = sqrt(mua mub) (default: collide's rules, e = min(ea, eb), threshold 0, "
                       "set per contact)");
-    compare->add_option("--dt", compare_options.dt, "Box2D's time step (s), > 0")
+    compare->add_option("--dt", compare_options.dt, "Box2D's time step (s), > 0")->capture_default_str();
+    compare
+        ->add_option("--velocity-iterations", compare_options.velocity_iterations,
+                     "Box2D's velocity iterations per step, >= 1")
         ->capture_default_str();
-    compare->add_option("--velocity-iterations", compare_options.velocity_iterations,
-                        "Box2D's velocity iterations per step, >= 1")
-        ->capture_default_str();
-    compare->add_option("--position-iterations", compare_options.position_iterations,
-                        "Box2D's position iterations per step, >= 0")
+    compare
+        ->add_option("--position-iterations", compare_options.position_iterations,
+                     "Box2D's position iterations per step, >= 0")
         ->capture_default_str();
     compare->footer(
         "Events are matched by their pair of bodies and their order for that pair. difference:\n"
@@ -274,9 +276,8 @@ int main(int argc, char** argv) {
             // In a terminal `collide step FILE` starts the command loop; a run that asks for a
             // format, or writes into a pipe or a file, stays plain, so scripts never wait for
             // input.
-            const bool loop = interactive ||
-                              (!no_interactive && !step_options.json && !step_options.events &&
-                               scene_file != "-" && isatty(0) && isatty(1));
+            const bool loop = interactive || (!no_interactive && !step_options.json && !step_options.events &&
+                                              scene_file != "-" && isatty(0) && isatty(1));
             return run_step(scene_file, step_options, loop);
         }
         if (*render) return collide::run_render(render_options, std::cout, std::cerr);

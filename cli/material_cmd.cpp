@@ -24,8 +24,10 @@ std::string engine_js_path(const std::string& installed) {
     std::error_code ec;
     if (const char* env = std::getenv("COLLIDE_ENGINE_JS"); env && *env) {
         if (!fs::is_regular_file(env, ec))
-            throw InputError("", {}, "COLLIDE_ENGINE_JS", std::string("'") + env + "' is not a file (the WebAssembly "
-                             "module collide-engine.js: scripts/build-wasm.sh builds it)");
+            throw InputError("", {}, "COLLIDE_ENGINE_JS",
+                             std::string("'") + env +
+                                 "' is not a file (the WebAssembly "
+                                 "module collide-engine.js: scripts/build-wasm.sh builds it)");
         return env;
     }
     if (!installed.empty() && fs::is_regular_file(installed, ec)) return installed;
@@ -36,70 +38,76 @@ std::string engine_js_path(const std::string& installed) {
 std::string engine_js_path() {
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);  // Linux: the running program
-    return engine_js_path(ec ? std::string() : (exe.parent_path() / COLLIDE_ENGINE_JS_FROM_BINDIR).lexically_normal().string());
+    return engine_js_path(ec ? std::string()
+                             : (exe.parent_path() / COLLIDE_ENGINE_JS_FROM_BINDIR).lexically_normal().string());
 }
 
 int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& err) {
     const auto start = std::chrono::steady_clock::now();
     // The staged directory is gone with the body's scope when it throws: DIR is untouched.
-    return cli::run_command(err, [&] {
-        if (opt.out_dir.empty()) throw InputError("", {}, "-o", "the output directory is required");
-        // The lessons first: nothing is written when one is wrong.
-        std::vector<Lesson> lessons;
-        if (opt.lessons.empty()) {
-            lessons = load_lessons(lessons_dir());
-        } else {
-            for (const std::string& arg : opt.lessons) {
-                const std::string file = resolve_lesson(arg, lessons_dir());
-                SceneView view;
-                std::optional<Lesson> lesson;
-                load_scenario(file, &view, &lesson);
-                if (!lesson) throw InputError(file, {}, "", "is a scenario, not a lesson (it has no [lesson] table)");
-                lessons.push_back(*lesson);
+    return cli::run_command(
+        err,
+        [&] {
+            if (opt.out_dir.empty()) throw InputError("", {}, "-o", "the output directory is required");
+            // The lessons first: nothing is written when one is wrong.
+            std::vector<Lesson> lessons;
+            if (opt.lessons.empty()) {
+                lessons = load_lessons(lessons_dir());
+            } else {
+                for (const std::string& arg : opt.lessons) {
+                    const std::string file = resolve_lesson(arg, lessons_dir());
+                    SceneView view;
+                    std::optional<Lesson> lesson;
+                    load_scenario(file, &view, &lesson);
+                    if (!lesson)
+                        throw InputError(file, {}, "", "is a scenario, not a lesson (it has no [lesson] table)");
+                    lessons.push_back(*lesson);
+                }
             }
-        }
-        if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
-        // The WebAssembly module, for the pages' Try-it panels (docs/commands/material.md, "The Try-it panel").
-        const std::string engine_js = engine_js_path();
-        StagedDirectory staged(opt.out_dir, opt.force);
-        // The options, read once as collide render reads them: every lesson renders with them,
-        // and with an MP4 when ffmpeg is installed.
-        RenderOptions ro;
-        ro.out_dir = opt.out_dir;
-        ro.size = opt.size;
-        ro.fps = opt.fps;
-        ro.quality = opt.quality;
-        ro.quiet = true;
-        RenderRequest request = parse_render_request(ro);
-        if (const std::string ffmpeg = render::find_program("ffmpeg"); !ffmpeg.empty())
-            request.video = VideoRequest{render::VideoFormat::mp4, ffmpeg};
-        const bool video = request.video.has_value();
-        // Build beside DIR, rename at the end.
-        const fs::path& tmp = staged.begin();
-        const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+            if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
+            // The WebAssembly module, for the pages' Try-it panels (docs/commands/material.md, "The Try-it panel").
+            const std::string engine_js = engine_js_path();
+            StagedDirectory staged(opt.out_dir, opt.force);
+            // The options, read once as collide render reads them: every lesson renders with them,
+            // and with an MP4 when ffmpeg is installed.
+            RenderOptions ro;
+            ro.out_dir = opt.out_dir;
+            ro.size = opt.size;
+            ro.fps = opt.fps;
+            ro.quality = opt.quality;
+            ro.quiet = true;
+            RenderRequest request = parse_render_request(ro);
+            if (const std::string ffmpeg = render::find_program("ffmpeg"); !ffmpeg.empty())
+                request.video = VideoRequest{render::VideoFormat::mp4, ffmpeg};
+            const bool video = request.video.has_value();
+            // Build beside DIR, rename at the end.
+            const fs::path& tmp = staged.begin();
+            const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
 
-        const auto progress = [&](const SiteProgress& p) {
-            if (!terminal) return;
-            char line[200];
-            std::snprintf(line, sizeof line, "[%zu/%zu] %-24s %5.1f s\n", p.done, p.total, p.id.c_str(), p.seconds);
-            err << line << std::flush;
-        };
-        const cli::SignalGuard signals;
-        build_site(SiteRequest{lessons, request, engine_js}, tmp, progress, cli::stop_requested);
-        staged.commit();
-        if (!opt.quiet) {
-            char line[200];
-            std::snprintf(line, sizeof line, "wrote %zu lessons to %s/index.html in %.1f s%s\n", lessons.size(),
-                          opt.out_dir.c_str(),
-                          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
-                          video ? "" : " (no ffmpeg: pages link the PNG frames instead of a video)");
-            out << line;
-            if (engine_js.empty())
-                out << "no Try-it panels: the WebAssembly module collide-engine.js is not built (scripts/build-wasm.sh "
-                       "builds it where this command finds it, " COLLIDE_ENGINE_JS_BUILD "; or set COLLIDE_ENGINE_JS)\n";
-        }
-        return 0;
-    }, [&opt](const Interrupted&) { return opt.out_dir + " is untouched"; });
+            const auto progress = [&](const SiteProgress& p) {
+                if (!terminal) return;
+                char line[200];
+                std::snprintf(line, sizeof line, "[%zu/%zu] %-24s %5.1f s\n", p.done, p.total, p.id.c_str(), p.seconds);
+                err << line << std::flush;
+            };
+            const cli::SignalGuard signals;
+            build_site(SiteRequest{lessons, request, engine_js}, tmp, progress, cli::stop_requested);
+            staged.commit();
+            if (!opt.quiet) {
+                char line[200];
+                std::snprintf(line, sizeof line, "wrote %zu lessons to %s/index.html in %.1f s%s\n", lessons.size(),
+                              opt.out_dir.c_str(),
+                              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
+                              video ? "" : " (no ffmpeg: pages link the PNG frames instead of a video)");
+                out << line;
+                if (engine_js.empty())
+                    out << "no Try-it panels: the WebAssembly module collide-engine.js is not built (scripts/build-wasm.sh "
+                           "builds it where this command finds it, " COLLIDE_ENGINE_JS_BUILD
+                           "; or set COLLIDE_ENGINE_JS)\n";
+            }
+            return 0;
+        },
+        [&opt](const Interrupted&) { return opt.out_dir + " is untouched"; });
 }
 
 }  // namespace collide

@@ -16,8 +16,8 @@ struct MaterialOptions {
     std::string size = "720p";         // as collide render
     double fps = 30.0;
     std::string quality = "medium";
-    bool quiet = false;                // no progress, no summary
-    bool force = false;                // replace a DIR that is not empty
+    bool quiet = false;  // no progress, no summary
+    bool force = false;  // replace a DIR that is not empty
 };
 
 // Where `collide material` finds the WebAssembly module collide-engine.js for the Try-it

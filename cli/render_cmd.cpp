@@ -37,17 +37,20 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
         return std::to_string(e.frames) + " complete frames written to " + o.out_dir +
                "/frames (no partial file is left)";
     };
-    return cli::run_command(err, [&] {
-        RenderRequest request = parse_render_request(o);
-        // Progress only where someone watches it: the process's stderr, a terminal.
-        const bool shown = !request.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
-        const cli::SignalGuard signals;
-        const bool summary = !request.quiet;
-        request.quiet = !shown;
-        const RenderReport r = render_scenario(request, err, cli::stop_requested);
-        if (summary) print_summary(request, r, out);
-        return 0;
-    }, interrupted);
+    return cli::run_command(
+        err,
+        [&] {
+            RenderRequest request = parse_render_request(o);
+            // Progress only where someone watches it: the process's stderr, a terminal.
+            const bool shown = !request.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+            const cli::SignalGuard signals;
+            const bool summary = !request.quiet;
+            request.quiet = !shown;
+            const RenderReport r = render_scenario(request, err, cli::stop_requested);
+            if (summary) print_summary(request, r, out);
+            return 0;
+        },
+        interrupted);
 }
 
 }  // namespace collide

@@ -14,7 +14,8 @@ extern "C" void on_signal(int) { g_interrupted.store(true); }
 }  // namespace
 
 struct SignalGuard::Saved {
-    struct sigaction old_int {}, old_term {};
+    struct sigaction old_int {
+    }, old_term{};
 };
 
 SignalGuard::SignalGuard() : saved_(std::make_unique<Saved>()) {

@@ -67,7 +67,8 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
         // Not an error (a sheet of the lesson's own numbers is still a sheet), but rarely meant.
         for (const Lesson& L : lessons)
             if (L.vary.empty())
-                err << "collide: note: " << L.id << " has no [[vary]] ranges: every student gets the lesson's own numbers\n";
+                err << "collide: note: " << L.id
+                    << " has no [[vary]] ranges: every student gets the lesson's own numbers\n";
         const std::string weasyprint = render::find_program("weasyprint");
         const fs::path& tmp = staged.begin();
         std::vector<std::string> files;
@@ -86,7 +87,8 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
         for (const Lesson& L : lessons) ids += (ids.empty() ? "" : ", ") + L.id;
         for (const std::string& f : files) list += (list.empty() ? "" : ", ") + f;
         char secs[32];
-        std::snprintf(secs, sizeof secs, "%.1f", std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+        std::snprintf(secs, sizeof secs, "%.1f",
+                      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
         out << "wrote " << opt.students << " worksheets of " << ids << " to " << opt.out_dir
             << (lessons.size() > 1 ? "/ID" : "") << " (" << list << (lessons.size() > 1 ? "; index.html" : "")
             << ") in " << secs << " s\n";

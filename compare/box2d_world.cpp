@@ -13,9 +13,7 @@ namespace {
 b2Vec2 to_b2(const Vec2& v) { return b2Vec2(static_cast<float>(v.x()), static_cast<float>(v.y())); }
 Vec2 from_b2(const b2Vec2& v) { return Vec2(v.x, v.y); }
 
-double restitution_of(const Scene& s, std::size_t i) {
-    return s.bodies[i].restitution.value_or(s.restitution);
-}
+double restitution_of(const Scene& s, std::size_t i) { return s.bodies[i].restitution.value_or(s.restitution); }
 // The frictionless model ignores mu; Box2D then gets none either.
 double friction_of(const Scene& s, std::size_t i) {
     if (s.model == Model::frictionless) return 0.0;
@@ -56,8 +54,7 @@ std::optional<Unsupported> box2d_unsupported(const Scene& scene) {
         if (p.count > kBox2DMaxVertices)
             return Unsupported{b.name, "vertices",
                                "Box2D polygons have at most " + std::to_string(kBox2DMaxVertices) +
-                                   " vertices (b2_maxPolygonVertices); this one has " +
-                                   std::to_string(p.count)};
+                                   " vertices (b2_maxPolygonVertices); this one has " + std::to_string(p.count)};
         for (int k = 0; k < p.count; ++k)
             if ((p.vertices[(k + 1) % p.count] - p.vertices[k]).norm() < b2_linearSlop)
                 return Unsupported{b.name, b.shape == "rectangle" ? "size" : "vertices",
@@ -72,14 +69,14 @@ struct Box2DWorld::Impl final : b2ContactListener {
     Scene scene;
     Box2DSettings settings;
     b2World world;
-    std::vector<b2Body*> body;   // per scene body
+    std::vector<b2Body*> body;  // per scene body
     std::size_t steps = 0;
 
     // Events of the step being taken.
     struct Open {
         b2Contact* contact;
-        bool swapped;            // Box2D's fixture A is our body b
-        b2Vec2 normal;           // Box2D's, from its A into its B, at PreSolve
+        bool swapped;   // Box2D's fixture A is our body b
+        b2Vec2 normal;  // Box2D's, from its A into its B, at PreSolve
         Box2DEvent event;
     };
     std::vector<Open> open;
@@ -88,8 +85,7 @@ struct Box2DWorld::Impl final : b2ContactListener {
     double resting_speed = 0.0;     // m/s: 2 |g| dt, slower approaches are resting contact
 
     Impl(const Scene& s, const Box2DSettings& st)
-        : scene(s), settings(st), world(b2Vec2(static_cast<float>(s.gravity.x()),
-                                               static_cast<float>(s.gravity.y()))) {
+        : scene(s), settings(st), world(b2Vec2(static_cast<float>(s.gravity.x()), static_cast<float>(s.gravity.y()))) {
         world.SetContactListener(this);
         resting_speed = 2.0 * s.gravity.norm() * st.dt;
         for (std::size_t i = 0; i < scene.bodies.size(); ++i) body.push_back(create(i));
@@ -182,8 +178,8 @@ struct Box2DWorld::Impl final : b2ContactListener {
         const std::size_t ia = index(A), ib = index(B);
         if (!settings.box2d_defaults) {  // collide's pair rules, no threshold
             contact->SetRestitution(static_cast<float>(scene.pair_restitution(ia, ib)));
-            contact->SetFriction(static_cast<float>(
-                scene.model == Model::frictionless ? 0.0 : scene.pair_friction(ia, ib)));
+            contact->SetFriction(
+                static_cast<float>(scene.model == Model::frictionless ? 0.0 : scene.pair_friction(ia, ib)));
             contact->SetRestitutionThreshold(0.0f);
         }
         if (!settings.record_events) return;
@@ -195,8 +191,7 @@ struct Box2DWorld::Impl final : b2ContactListener {
         bool fresh = false;
         for (int k = 0; k < m->pointCount; ++k) {
             bool known = false;
-            for (int q = 0; q < old->pointCount; ++q)
-                known = known || old->points[q].id.key == m->points[k].id.key;
+            for (int q = 0; q < old->pointCount; ++q) known = known || old->points[q].id.key == m->points[k].id.key;
             if (known) continue;
             const b2Vec2 u = point_velocity(B, wm.points[k]) - point_velocity(A, wm.points[k]);
             const double un = b2Dot(u, wm.normal);
@@ -235,7 +230,7 @@ struct Box2DWorld::Impl final : b2ContactListener {
         for (Open& o : open) {
             if (o.contact != contact) continue;
             const b2Vec2 n = o.normal, t = b2Cross(n, 1.0f);  // Box2D's tangent
-            b2Vec2 P(0.0f, 0.0f);                              // on Box2D's body B
+            b2Vec2 P(0.0f, 0.0f);                             // on Box2D's body B
             for (int k = 0; k < impulse->count; ++k)
                 P += impulse->normalImpulses[k] * n + impulse->tangentImpulses[k] * t;
             o.event.impulse += (o.swapped ? -1.0 : 1.0) * from_b2(P);
@@ -256,8 +251,7 @@ struct Box2DWorld::Impl final : b2ContactListener {
     void step(std::vector<Box2DEvent>* events) {
         open.clear();
         continuous_phase = false;
-        world.Step(static_cast<float>(settings.dt), settings.velocity_iterations,
-                   settings.position_iterations);
+        world.Step(static_cast<float>(settings.dt), settings.velocity_iterations, settings.position_iterations);
         ++steps;
         for (Open& o : open) {
             o.event.after_a = velocity(o.event.a);
@@ -271,8 +265,8 @@ struct Box2DWorld::Impl final : b2ContactListener {
 
 Box2DWorld::Box2DWorld(const Scene& scene, const Box2DSettings& settings) {
     if (const auto why = box2d_unsupported(scene))
-        throw std::invalid_argument((why->body.empty() ? "" : "body \"" + why->body + "\": ") +
-                                    why->key + ": " + why->message);
+        throw std::invalid_argument((why->body.empty() ? "" : "body \"" + why->body + "\": ") + why->key + ": " +
+                                    why->message);
     if (!(settings.dt > 0.0)) throw std::invalid_argument("dt must be positive");
     impl_ = std::make_unique<Impl>(scene, settings);
 }

@@ -44,35 +44,35 @@
 namespace collide::compare {
 
 struct Box2DSettings {
-    double dt = 1.0 / 600.0;       // s: Box2D's fixed step
-    int velocity_iterations = 8;   // Box2D's recommended 8 and 3 (its manual)
+    double dt = 1.0 / 600.0;      // s: Box2D's fixed step
+    int velocity_iterations = 8;  // Box2D's recommended 8 and 3 (its manual)
     int position_iterations = 3;
-    bool box2d_defaults = false;   // Box2D's threshold and mixing instead of collide's rules
-    bool record_events = true;     // off for benchmarks
-    bool allow_sleep = true;       // Box2D's default: bodies at rest for 0.5 s sleep
+    bool box2d_defaults = false;  // Box2D's threshold and mixing instead of collide's rules
+    bool record_events = true;    // off for benchmarks
+    bool allow_sleep = true;      // Box2D's default: bodies at rest for 0.5 s sleep
 };
 
 // Box2D 2.4.1's constants that explain differences (b2_common.h), in SI units.
-constexpr double kBox2DThreshold = 1.0;        // m/s: b2FixtureDef::restitutionThreshold default
-constexpr double kBox2DMaxTranslation = 2.0;   // m per step: b2_maxTranslation
+constexpr double kBox2DThreshold = 1.0;          // m/s: b2FixtureDef::restitutionThreshold default
+constexpr double kBox2DMaxTranslation = 2.0;     // m per step: b2_maxTranslation
 constexpr double kBox2DMaxRotation = 0.5 * kPi;  // rad per step: b2_maxRotation
-constexpr double kBox2DSkin = 0.01;            // m: b2_polygonRadius
-constexpr int kBox2DMaxVertices = 8;           // b2_maxPolygonVertices
-constexpr double kPlaneLength = 1.0e3;         // m: half-length of the edge standing for a plane
+constexpr double kBox2DSkin = 0.01;              // m: b2_polygonRadius
+constexpr int kBox2DMaxVertices = 8;             // b2_maxPolygonVertices
+constexpr double kPlaneLength = 1.0e3;           // m: half-length of the edge standing for a plane
 
 struct Box2DEvent {
     using Velocity = Event2::Velocity;
-    double t = 0.0;               // s: start of the step whose solve applied the collision
-    std::size_t step = 0;         // that step's index (t = step dt)
-    bool continuous = false;      // found in a continuous-collision (TOI) sub-step of that step
-    std::size_t a = 0, b = 0;     // scene body indices, a < b (as collide's events)
-    Vec2 normal = Vec2::Zero();   // unit, from a into b: Box2D's manifold normal
-    int points = 0;               // manifold points Box2D solved together (1 or 2)
-    int others = 0;               // other touching contacts of its dynamic bodies in that step
-                                  // (Box2D solves them together with this one, by iteration)
-    double approach = 0.0;        // m/s: the largest approach speed -un of a new point, with the
-                                  // velocities Box2D's solver used (this step's gravity added)
-    double restitution = 0.0;     // what the contact used
+    double t = 0.0;              // s: start of the step whose solve applied the collision
+    std::size_t step = 0;        // that step's index (t = step dt)
+    bool continuous = false;     // found in a continuous-collision (TOI) sub-step of that step
+    std::size_t a = 0, b = 0;    // scene body indices, a < b (as collide's events)
+    Vec2 normal = Vec2::Zero();  // unit, from a into b: Box2D's manifold normal
+    int points = 0;              // manifold points Box2D solved together (1 or 2)
+    int others = 0;              // other touching contacts of its dynamic bodies in that step
+                                 // (Box2D solves them together with this one, by iteration)
+    double approach = 0.0;       // m/s: the largest approach speed -un of a new point, with the
+                                 // velocities Box2D's solver used (this step's gravity added)
+    double restitution = 0.0;    // what the contact used
     double friction = 0.0;
     double threshold = 0.0;       // m/s
     Vec2 impulse = Vec2::Zero();  // N s on b (a receives -impulse): PostSolve, summed
@@ -98,7 +98,7 @@ public:
 
     const Scene& scene() const;
     const Box2DSettings& settings() const;
-    double time() const;           // s: steps() dt
+    double time() const;  // s: steps() dt
     std::size_t steps() const;
 
     // One b2World::Step of dt; appends the events it recorded (record_events) to `events`.

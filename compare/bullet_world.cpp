@@ -10,19 +10,16 @@ namespace collide::compare {
 namespace {
 
 btVector3 to_bt(const Vec3& v) {
-    return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()),
-                     static_cast<btScalar>(v.z()));
+    return btVector3(static_cast<btScalar>(v.x()), static_cast<btScalar>(v.y()), static_cast<btScalar>(v.z()));
 }
 Vec3 from_bt(const btVector3& v) { return Vec3(v.x(), v.y(), v.z()); }
 btQuaternion to_bt(const Quat& q) {  // Bullet's order is x, y, z, w
-    return btQuaternion(static_cast<btScalar>(q.x()), static_cast<btScalar>(q.y()),
-                        static_cast<btScalar>(q.z()), static_cast<btScalar>(q.w()));
+    return btQuaternion(static_cast<btScalar>(q.x()), static_cast<btScalar>(q.y()), static_cast<btScalar>(q.z()),
+                        static_cast<btScalar>(q.w()));
 }
 Quat from_bt(const btQuaternion& q) { return Quat(q.w(), q.x(), q.y(), q.z()); }
 
-double restitution_of(const Scene& s, std::size_t i) {
-    return s.bodies[i].restitution.value_or(s.restitution);
-}
+double restitution_of(const Scene& s, std::size_t i) { return s.bodies[i].restitution.value_or(s.restitution); }
 double friction_of(const Scene& s, std::size_t i) {
     if (s.model == Model::frictionless) return 0.0;
     return s.bodies[i].friction.value_or(s.friction);
@@ -36,13 +33,14 @@ std::optional<std::string> bullet_unsupported(const Scene& scene) {
     for (std::size_t i = 0; i < scene.bodies.size(); ++i) {
         const SceneBody& b = scene.bodies[i];
         if (restitution_of(scene, i) != restitution_of(scene, 0))
-            return "body \"" + b.name + "\": restitution: Bullet multiplies the bodies' values, "
+            return "body \"" + b.name +
+                   "\": restitution: Bullet multiplies the bodies' values, "
                    "which gives collide's min(e_a, e_b) only when every body's is the same";
         if (b.body3.is_static) continue;
         const Mat3& I = b.body3.inertia;
-        if (I(0, 1) != 0.0 || I(0, 2) != 0.0 || I(1, 2) != 0.0 || I(1, 0) != 0.0 ||
-            I(2, 0) != 0.0 || I(2, 1) != 0.0)
-            return "body \"" + b.name + "\": inertia: Bullet takes principal moments about the "
+        if (I(0, 1) != 0.0 || I(0, 2) != 0.0 || I(1, 2) != 0.0 || I(1, 0) != 0.0 || I(2, 0) != 0.0 || I(2, 1) != 0.0)
+            return "body \"" + b.name +
+                   "\": inertia: Bullet takes principal moments about the "
                    "body axes; this tensor is not diagonal there";
     }
     return std::nullopt;
@@ -64,8 +62,7 @@ struct BulletWorld::Impl {
 
     Impl(const Scene& s, const BulletSettings& st) : scene(s), settings(st) {
         world.setGravity(to_bt(s.gravity));
-        world.getSolverInfo().m_restitutionVelocityThreshold =
-            static_cast<btScalar>(st.restitution_threshold);
+        world.getSolverInfo().m_restitutionVelocityThreshold = static_cast<btScalar>(st.restitution_threshold);
         for (std::size_t i = 0; i < scene.bodies.size(); ++i) create(i);
     }
 
@@ -79,20 +76,16 @@ struct BulletWorld::Impl {
         const Shape3& shape = sb.shape3;
         switch (shape.kind) {
             case Shape3::Kind::sphere:
-                shapes.push_back(
-                    std::make_unique<btSphereShape>(static_cast<btScalar>(shape.radius)));
+                shapes.push_back(std::make_unique<btSphereShape>(static_cast<btScalar>(shape.radius)));
                 break;
-            case Shape3::Kind::box:
-                shapes.push_back(std::make_unique<btBoxShape>(to_bt(shape.half)));
-                break;
+            case Shape3::Kind::box: shapes.push_back(std::make_unique<btBoxShape>(to_bt(shape.half))); break;
             case Shape3::Kind::half_space:
-                shapes.push_back(std::make_unique<btStaticPlaneShape>(
-                    to_bt(shape.normal), static_cast<btScalar>(shape.offset)));
+                shapes.push_back(
+                    std::make_unique<btStaticPlaneShape>(to_bt(shape.normal), static_cast<btScalar>(shape.offset)));
                 break;
         }
         const btScalar mass = b.is_static ? 0.0f : static_cast<btScalar>(b.mass);
-        const btVector3 inertia = b.is_static ? btVector3(0, 0, 0)
-                                              : to_bt(Vec3(b.inertia.diagonal()));
+        const btVector3 inertia = b.is_static ? btVector3(0, 0, 0) : to_bt(Vec3(b.inertia.diagonal()));
         btRigidBody::btRigidBodyConstructionInfo info(mass, nullptr, shapes.back().get(), inertia);
         // A half-space's pose is ignored (the plane is in world coordinates).
         if (shape.kind != Shape3::Kind::half_space)
@@ -164,8 +157,7 @@ BulletMass BulletWorld::mass_of(std::size_t i) const {
 
 BulletMaterial BulletWorld::material_of(std::size_t i, std::size_t j) const {
     const btRigidBody *a = impl_->body.at(i).get(), *b = impl_->body.at(j).get();
-    return {btManifoldResult::calculateCombinedFriction(a, b),
-            btManifoldResult::calculateCombinedRestitution(a, b)};
+    return {btManifoldResult::calculateCombinedFriction(a, b), btManifoldResult::calculateCombinedRestitution(a, b)};
 }
 
 }  // namespace collide::compare

@@ -46,11 +46,11 @@ std::optional<std::string> bullet_unsupported(const Scene& scene);
 
 // What Bullet holds for one body (read back from it, for tests).
 struct BulletMass {
-    double mass = 0.0;               // kg (0: static)
-    Vec3 inertia = Vec3::Zero();     // kg m^2: principal moments about the body axes
+    double mass = 0.0;            // kg (0: static)
+    Vec3 inertia = Vec3::Zero();  // kg m^2: principal moments about the body axes
 };
 struct BulletMaterial {
-    double friction = 0.0;           // the pair's combined values, as Bullet's solver uses them
+    double friction = 0.0;  // the pair's combined values, as Bullet's solver uses them
     double restitution = 0.0;
 };
 

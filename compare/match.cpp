@@ -33,12 +33,14 @@ std::string speed_cap(const Scene& scene, const Comparison& c, double dt) {
             if (scene.bodies[i].is_static()) continue;
             if (u.v.norm() * dt > kBox2DMaxTranslation)
                 return "speed cap (Box2D moves a body at most b2_maxTranslation = 2 m per step: "
-                       "|v| <= " + short_number(kBox2DMaxTranslation / dt) + " m/s at this dt; " +
-                       scene.bodies[i].name + " has " + short_number(u.v.norm()) + " m/s)";
+                       "|v| <= " +
+                       short_number(kBox2DMaxTranslation / dt) + " m/s at this dt; " + scene.bodies[i].name + " has " +
+                       short_number(u.v.norm()) + " m/s)";
             if (std::abs(u.w) * dt > kBox2DMaxRotation)
                 return "speed cap (Box2D turns a body at most b2_maxRotation = pi/2 per step: "
-                       "|w| <= " + short_number(kBox2DMaxRotation / dt) + " rad/s at this dt; " +
-                       scene.bodies[i].name + " has " + short_number(std::abs(u.w)) + " rad/s)";
+                       "|w| <= " +
+                       short_number(kBox2DMaxRotation / dt) + " rad/s at this dt; " + scene.bodies[i].name + " has " +
+                       short_number(std::abs(u.w)) + " rad/s)";
         }
     return "";
 }
@@ -62,56 +64,59 @@ void explain(const Scene& scene, const Box2DSettings& settings, Comparison* c) {
     const Event2& ours = *c->collide;
     const Box2DEvent& theirs = *c->box2d;
     const std::vector<double> radii = lever_radii(scene);
-    const double scale = velocity_scale(radii, c->a, c->b,
-                                        {before(ours), after(ours), before(theirs), after(theirs)});
+    const double scale = velocity_scale(radii, c->a, c->b, {before(ours), after(ours), before(theirs), after(theirs)});
     const double e = scene.pair_restitution(c->a, c->b);
     const Vec2 g = scene.gravity.head<2>();
     const double un = (ours.before_b.v - ours.before_a.v).dot(ours.normal);  // centres only
-    const bool suppressed =
-        theirs.threshold > 0.0 && theirs.approach < theirs.threshold && theirs.restitution > 0.0;
+    const bool suppressed = theirs.threshold > 0.0 && theirs.approach < theirs.threshold && theirs.restitution > 0.0;
 
     std::vector<Cause> causes;
     const std::string cap = speed_cap(scene, *c, settings.dt);
     if (!cap.empty()) causes.push_back({-1.0, cap, false});
     if (scene.model == Model::matrix || scene.model == Model::stick)
-        causes.push_back({-1.0, std::string("model (collide's ") + model_name(scene.model) +
-                                    "; Box2D has Coulomb friction only)", false});
+        causes.push_back(
+            {-1.0, std::string("model (collide's ") + model_name(scene.model) + "; Box2D has Coulomb friction only)",
+             false});
     if (theirs.points == 2 && scene.policy == Policy::sequential)
-        causes.push_back({-1.0, "two-point contact (Box2D's block solver solved both points "
-                                "together; collide's sequential policy one at a time)", false});
+        causes.push_back({-1.0,
+                          "two-point contact (Box2D's block solver solved both points "
+                          "together; collide's sequential policy one at a time)",
+                          false});
     if (suppressed)
         causes.push_back({e * theirs.approach / scale,
-                          "restitution threshold (approach " + short_number(theirs.approach) +
-                              " m/s < " + short_number(theirs.threshold) +
-                              " m/s: Box2D does not bounce)"});
+                          "restitution threshold (approach " + short_number(theirs.approach) + " m/s < " +
+                              short_number(theirs.threshold) + " m/s: Box2D does not bounce)"});
     if (std::abs(theirs.restitution - e) > 1e-6)
         causes.push_back({std::abs(theirs.restitution - e) * theirs.approach / scale,
                           "restitution mixing (Box2D e = " + short_number(theirs.restitution) +
                               ", the larger; collide e = " + short_number(e) + ", the smaller)"});
     if (!suppressed && theirs.restitution > 0.0 && g.norm() > 0.0)
         causes.push_back({theirs.restitution * std::abs(g.dot(theirs.normal)) * settings.dt / scale,
-                          "step gravity (Box2D adds this step's g dt = " +
-                              short_number(g.norm() * settings.dt) +
+                          "step gravity (Box2D adds this step's g dt = " + short_number(g.norm() * settings.dt) +
                               " m/s before it applies restitution)"});
     causes.push_back({(1.0 + e) * *c->difference_before,
-                      "velocities before differ (by " + short_number(*c->difference_before) +
-                          "; Box2D's step began " + short_number(std::abs(theirs.t - ours.t) * 1e3) +
-                          " ms " + (theirs.t <= ours.t ? "before" : "after") + " collide's instant)"});
+                      "velocities before differ (by " + short_number(*c->difference_before) + "; Box2D's step began " +
+                          short_number(std::abs(theirs.t - ours.t) * 1e3) + " ms " +
+                          (theirs.t <= ours.t ? "before" : "after") + " collide's instant)"});
     if (*c->normal_degrees > kNormalDegrees)
         causes.push_back({(1.0 + e) * std::abs(un) * std::sin(*c->normal_degrees / kDegrees) / scale,
                           "normal off by " + short_number(*c->normal_degrees) + " degrees"});
     if (theirs.points == 2 && scene.policy == Policy::simultaneous)
         causes.push_back({-1.0, "two-point contact (Box2D had two manifold points)", true});
     if (theirs.others > 0)
-        causes.push_back({-1.0, "other contacts in the same step (Box2D solves this one with " +
-                                    std::to_string(theirs.others) +
-                                    " more together, by iteration; collide resolves each at its "
-                                    "own instant)", true});
+        causes.push_back({-1.0,
+                          "other contacts in the same step (Box2D solves this one with " +
+                              std::to_string(theirs.others) +
+                              " more together, by iteration; collide resolves each at its "
+                              "own instant)",
+                          true});
     if (theirs.friction > 0.0)
-        causes.push_back({-1.0, "friction (Box2D iterates Coulomb friction per point, " +
-                                    std::to_string(settings.velocity_iterations) +
-                                    " velocity iterations, against the slip as it ends; "
-                                    "collide's one-step model against the slip before)", true});
+        causes.push_back({-1.0,
+                          "friction (Box2D iterates Coulomb friction per point, " +
+                              std::to_string(settings.velocity_iterations) +
+                              " velocity iterations, against the slip as it ends; "
+                              "collide's one-step model against the slip before)",
+                          true});
 
     // Named: the causes without an estimate, then the estimated ones that matter, largest
     // first; then, if those leave most of it unexplained, the conditional ones.
@@ -122,8 +127,7 @@ void explain(const Scene& scene, const Box2DSettings& settings, Comparison* c) {
     std::vector<const Cause*> sized;
     for (const Cause& k : causes)
         if (k.size >= 0.0 && k.size >= std::max(0.5 * kAgree, 0.1 * difference)) sized.push_back(&k);
-    std::stable_sort(sized.begin(), sized.end(),
-                     [](const Cause* x, const Cause* y) { return x->size > y->size; });
+    std::stable_sort(sized.begin(), sized.end(), [](const Cause* x, const Cause* y) { return x->size > y->size; });
     for (const Cause* k : sized) {
         named.push_back(k);
         explained += k->size;
@@ -146,8 +150,7 @@ void explain(const Scene& scene, const Box2DSettings& settings, Comparison* c) {
 
 std::vector<double> lever_radii(const Scene& scene) {
     std::vector<double> r;
-    for (const SceneBody& b : scene.bodies)
-        r.push_back(b.is_static() ? 0.0 : bounding_radius(b.shape2));
+    for (const SceneBody& b : scene.bodies) r.push_back(b.is_static() ? 0.0 : bounding_radius(b.shape2));
     return r;
 }
 
@@ -162,8 +165,8 @@ double velocity_scale(const std::vector<double>& radii, std::size_t a, std::size
 }
 
 double velocity_difference(const std::vector<double>& radii, std::size_t a, std::size_t b,
-                           const std::pair<Velocity, Velocity>& one,
-                           const std::pair<Velocity, Velocity>& two, double scale) {
+                           const std::pair<Velocity, Velocity>& one, const std::pair<Velocity, Velocity>& two,
+                           double scale) {
     if (!(scale > 0.0)) return 0.0;
     auto gap = [&](std::size_t i, const Velocity& x, const Velocity& y) {
         return std::max((x.v - y.v).norm(), radii[i] * std::abs(x.w - y.w));
@@ -171,8 +174,7 @@ double velocity_difference(const std::vector<double>& radii, std::size_t a, std:
     return std::max(gap(a, one.first, two.first), gap(b, one.second, two.second)) / scale;
 }
 
-std::vector<Comparison> match_events(const Scene& scene, const Box2DSettings& settings,
-                                     const std::vector<Event2>& ours,
+std::vector<Comparison> match_events(const Scene& scene, const Box2DSettings& settings, const std::vector<Event2>& ours,
                                      const std::vector<Box2DEvent>& theirs) {
     using Key = std::pair<std::size_t, std::size_t>;
     std::map<Key, std::vector<const Event2*>> by_pair_ours;
@@ -206,12 +208,9 @@ std::vector<Comparison> match_events(const Scene& scene, const Box2DSettings& se
             if (k < y.size()) c.box2d = *y[k];
             if (c.collide && c.box2d) {
                 const double scale = velocity_scale(
-                    radii, c.a, c.b,
-                    {before(*c.collide), after(*c.collide), before(*c.box2d), after(*c.box2d)});
-                c.difference = velocity_difference(radii, c.a, c.b, after(*c.collide),
-                                                   after(*c.box2d), scale);
-                c.difference_before = velocity_difference(radii, c.a, c.b, before(*c.collide),
-                                                          before(*c.box2d), scale);
+                    radii, c.a, c.b, {before(*c.collide), after(*c.collide), before(*c.box2d), after(*c.box2d)});
+                c.difference = velocity_difference(radii, c.a, c.b, after(*c.collide), after(*c.box2d), scale);
+                c.difference_before = velocity_difference(radii, c.a, c.b, before(*c.collide), before(*c.box2d), scale);
                 const Vec2 &n1 = c.collide->normal, &n2 = c.box2d->normal;
                 c.normal_degrees = std::atan2(std::abs(cross(n1, n2)), n1.dot(n2)) * kDegrees;
             }
@@ -221,8 +220,7 @@ std::vector<Comparison> match_events(const Scene& scene, const Box2DSettings& se
     }
     auto when = [](const Comparison& c) { return c.collide ? c.collide->t : c.box2d->t; };
     std::stable_sort(out.begin(), out.end(), [&](const Comparison& p, const Comparison& q) {
-        return when(p) != when(q) ? when(p) < when(q)
-                                  : (p.a != q.a ? p.a < q.a : p.b < q.b);
+        return when(p) != when(q) ? when(p) < when(q) : (p.a != q.a ? p.a < q.a : p.b < q.b);
     });
     return out;
 }

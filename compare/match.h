@@ -51,11 +51,11 @@
 
 namespace collide::compare {
 
-constexpr double kAgree = 1e-4;           // difference up to which the engines agree
-constexpr double kNormalDegrees = 0.01;   // normals closer than this are the same
+constexpr double kAgree = 1e-4;          // difference up to which the engines agree
+constexpr double kNormalDegrees = 0.01;  // normals closer than this are the same
 
 struct Comparison {
-    std::size_t a = 0, b = 0;                 // scene body indices, a < b
+    std::size_t a = 0, b = 0;  // scene body indices, a < b
     std::optional<Event2> collide;
     std::optional<Box2DEvent> box2d;
     std::optional<double> difference;         // after the event (both sides present)
@@ -74,13 +74,12 @@ double velocity_scale(const std::vector<double>& radii, std::size_t a, std::size
                       const std::vector<std::pair<Velocity, Velocity>>& states);
 // max over a, b of max(|v1 - v2|, R |w1 - w2|) / scale (0 when scale is 0).
 double velocity_difference(const std::vector<double>& radii, std::size_t a, std::size_t b,
-                           const std::pair<Velocity, Velocity>& one,
-                           const std::pair<Velocity, Velocity>& two, double scale);
+                           const std::pair<Velocity, Velocity>& one, const std::pair<Velocity, Velocity>& two,
+                           double scale);
 
 // Matches the two runs' events of `scene` and fills in differences and reasons. The result is
 // in time order (collide's time, or Box2D's for an event only Box2D has).
-std::vector<Comparison> match_events(const Scene& scene, const Box2DSettings& settings,
-                                     const std::vector<Event2>& ours,
+std::vector<Comparison> match_events(const Scene& scene, const Box2DSettings& settings, const std::vector<Event2>& ours,
                                      const std::vector<Box2DEvent>& theirs);
 
 }  // namespace collide::compare

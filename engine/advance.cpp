@@ -31,7 +31,7 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     if (same_weld(i, j)) return kNever;  // stuck together
     // Stepped bodies meet each other and static ones at their steps (see "Stepped islands").
     if (meet_at_steps(i, j)) return kNever;
-    if (passed(i, j)) return kNever;     // let through each other by the page's listing
+    if (passed(i, j)) return kNever;  // let through each other by the page's listing
     if (t == loop_.stall_time && loop_.stalled.count(static_cast<std::uint64_t>(std::min(i, j)) << 32 | std::max(i, j)))
         return kNever;
     drift(i, t);
@@ -44,10 +44,10 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     if (welds_.of[a] < 0 && welds_.of[b] < 0 && !(shapes_.plane[a] && shapes_.plane[b])) {
         const double h = t1 - t;
         const std::size_t q = shapes_.plane[a] ? b : a;  // with a plane: the body that is not one
-        const double closing = shapes_.plane[a] || shapes_.plane[b]
-                                   ? bodies_[q].v.norm() * h + 0.5 * track_[q].a.norm() * h * h
-                                   : (bodies_[b].v - bodies_[a].v).norm() * h +
-                                         0.5 * (track_[b].a - track_[a].a).norm() * h * h;
+        const double closing =
+            shapes_.plane[a] || shapes_.plane[b]
+                ? bodies_[q].v.norm() * h + 0.5 * track_[q].a.norm() * h * h
+                : (bodies_[b].v - bodies_[a].v).norm() * h + 0.5 * (track_[b].a - track_[a].a).norm() * h * h;
         if (apart(a, b, closing + 2.0 * kTouch)) return kNever;
     }
     const double v_rest = rest_speed(a, b);
@@ -60,10 +60,10 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
                         welds_.of[p] < 0 && welds_.of[q] < 0;  // (a welded body's centre circles)
     const Body& P = bodies_[p];
     const Body& Q = bodies_[q];
-    const double gap = !closed      ? 0.0
+    const double gap = !closed ? 0.0
                        : shapes_.plane[p]
                            ? shapes_.of[p].normal.dot(Q.position) - shapes_.of[p].offset - shapes_.of[q].radius
-                                   : (Q.position - P.position).norm() - shapes_.of[p].radius - shapes_.of[q].radius;
+                           : (Q.position - P.position).norm() - shapes_.of[p].radius - shapes_.of[q].radius;
     Manifold m;
     bool touching = false;
     if (!closed || gap <= kTouch) {
@@ -84,8 +84,8 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     }
     if (closed) {
         const double s = shapes_.plane[p] ? plane_contact_time(shapes_.of[p].normal, Q.v, track_[q].a, gap, touching)
-                                   : round_contact_time(Vec(Q.position - P.position), Vec(Q.v - P.v),
-                                                        shapes_.of[p].radius + shapes_.of[q].radius, touching);
+                                          : round_contact_time(Vec(Q.position - P.position), Vec(Q.v - P.v),
+                                                               shapes_.of[p].radius + shapes_.of[q].radius, touching);
         return t + s <= t1 ? t + s : kNever;
     }
     // Conservative advancement (engine/toi.h): copies of both bodies moved forward.
@@ -103,16 +103,17 @@ double World<D>::predict_pair(std::size_t i, std::size_t j, double t, double t1)
     // centre also circles its compound's, so its velocity changes by up to 2 |w| |d|.
     auto turning = [&](std::size_t k, const Track& tk) {
         if (welds_.of[k] < 0)
-            return shapes_.round[k] ? 0.0
-                                    : (spin_bound(bodies_[k], shapes_.inv_min_moment[k]) +
-                                       magnitude(tk.alpha) * c.horizon) * shapes_.radius[k];
+            return shapes_.round[k]
+                       ? 0.0
+                       : (spin_bound(bodies_[k], shapes_.inv_min_moment[k]) + magnitude(tk.alpha) * c.horizon) *
+                             shapes_.radius[k];
         const Weld& w = welds_.all[welds_.of[k]];
         const auto at = std::find(w.members.begin(), w.members.end(), k) - w.members.begin();
         return spin_bound(w.body, w.inv_min_moment) * (2.0 * w.rel[at].x.norm() + shapes_.radius[k]);
     };
     c.turn_rate = turning(a, ka) + turning(b, kb);
-    return advance_to_contact(shapes_.of[a], shapes_.of[b], mover(a), mover(b),
-                              [this](Mover* m, double dt) { step(m, dt); }, c);
+    return advance_to_contact(
+        shapes_.of[a], shapes_.of[b], mover(a), mover(b), [this](Mover* m, double dt) { step(m, dt); }, c);
 }
 
 template <int D>
@@ -132,7 +133,7 @@ void World<D>::predict(std::size_t i, double t) {
     });
     if (best <= loop_.substep_end) {
         loop_.heap.push_back(Pending{best, static_cast<std::uint32_t>(i), static_cast<std::uint32_t>(partner),
-                                track_[i].version, track_[partner].version});
+                                     track_[i].version, track_[partner].version});
         std::push_heap(loop_.heap.begin(), loop_.heap.end(), std::greater<Pending>());
     }
 }

@@ -20,10 +20,10 @@ struct Body1 {
 };
 
 struct Body2 {
-    double mass = 1.0;       // kg (ignored when is_static)
+    double mass = 1.0;  // kg (ignored when is_static)
     bool is_static = false;
-    double inertia = 1.0;    // kg m^2, about the centre of mass (the z axis)
-    double angle = 0.0;      // rad, counter-clockwise
+    double inertia = 1.0;          // kg m^2, about the centre of mass (the z axis)
+    double angle = 0.0;            // rad, counter-clockwise
     Vec2 position = Vec2::Zero();  // m, centre of mass
     Vec2 v = Vec2::Zero();         // m/s
     double w = 0.0;                // rad/s, counter-clockwise positive
@@ -36,13 +36,13 @@ struct Body2 {
 };
 
 struct Body3 {
-    double mass = 1.0;       // kg (ignored when is_static)
+    double mass = 1.0;  // kg (ignored when is_static)
     bool is_static = false;
-    Mat3 inertia = Mat3::Identity();     // kg m^2, body frame, about the centre of mass
-    Quat orientation = Quat::Identity(); // body frame -> world frame
-    Vec3 position = Vec3::Zero();        // m, centre of mass
-    Vec3 v = Vec3::Zero();               // m/s
-    Vec3 w = Vec3::Zero();               // rad/s, world frame
+    Mat3 inertia = Mat3::Identity();      // kg m^2, body frame, about the centre of mass
+    Quat orientation = Quat::Identity();  // body frame -> world frame
+    Vec3 position = Vec3::Zero();         // m, centre of mass
+    Vec3 v = Vec3::Zero();                // m/s
+    Vec3 w = Vec3::Zero();                // rad/s, world frame
 
     double inv_mass() const { return is_static ? 0.0 : 1.0 / mass; }
     // Position, orientation and velocities all finite (no NaN or infinity).
@@ -64,12 +64,12 @@ Mat3 inertia_pseudo_inverse(const Mat3& inertia);
 // What the response formulas need of one body at the contact point p, all in world frame.
 // r = p - x is measured from the body's centre of mass.
 struct ImpactBody3 {
-    double inv_m = 0.0;              // 1/kg (0: static)
-    Mat3 inv_I = Mat3::Zero();       // world inverse inertia, 1/(kg m^2) (0: static)
-    Mat3 I = Mat3::Zero();           // world inertia, kg m^2 (used by the stick model)
-    Vec3 r = Vec3::Zero();           // m, contact point relative to the centre of mass
-    Vec3 v = Vec3::Zero();           // m/s
-    Vec3 w = Vec3::Zero();           // rad/s
+    double inv_m = 0.0;         // 1/kg (0: static)
+    Mat3 inv_I = Mat3::Zero();  // world inverse inertia, 1/(kg m^2) (0: static)
+    Mat3 I = Mat3::Zero();      // world inertia, kg m^2 (used by the stick model)
+    Vec3 r = Vec3::Zero();      // m, contact point relative to the centre of mass
+    Vec3 v = Vec3::Zero();      // m/s
+    Vec3 w = Vec3::Zero();      // rad/s
     bool is_static() const { return inv_m == 0.0; }
 };
 
@@ -106,7 +106,9 @@ struct BodyState {
     Vec3 v = Vec3::Zero();      // m/s
     Vec3 w = Vec3::Zero();      // rad/s (2D: (0, 0, w); 1D: 0)
 };
-inline BodyState lifted(const Body1& b) { return {lift_line(b.position), Quat::Identity(), 0.0, lift_line(b.v), Vec3::Zero()}; }
+inline BodyState lifted(const Body1& b) {
+    return {lift_line(b.position), Quat::Identity(), 0.0, lift_line(b.v), Vec3::Zero()};
+}
 inline BodyState lifted(const Body2& b) {
     return {lift(b.position), lift_angle(b.angle), b.angle, lift(b.v), lift_spin(b.w)};
 }

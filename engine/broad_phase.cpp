@@ -21,8 +21,8 @@ BroadPhase<D>::BroadPhase(const std::vector<bool>& plane) : plane_(plane) {
 }
 
 template <int D>
-void BroadPhase<D>::swept_box(const Vec& x, const Vec& v, const Vec& acc, double s0, double s1, double margin,
-                              Vec* lo, Vec* hi) {
+void BroadPhase<D>::swept_box(const Vec& x, const Vec& v, const Vec& acc, double s0, double s1, double margin, Vec* lo,
+                              Vec* hi) {
     // The centre follows x + v s + a s^2 / 2: the box of both ends and of the turning point.
     Vec a0 = x + v * s0 + 0.5 * s0 * s0 * acc;
     Vec a1 = x + v * s1 + 0.5 * s1 * s1 * acc;

@@ -24,8 +24,8 @@ public:
 
     // The box a centre at x with velocity v and constant acceleration acc covers from s0 to s1
     // seconds on (x + v s + acc s^2 / 2), widened by margin (m) on every side.
-    static void swept_box(const Vec& x, const Vec& v, const Vec& acc, double s0, double s1, double margin,
-                          Vec* lo, Vec* hi);
+    static void swept_box(const Vec& x, const Vec& v, const Vec& acc, double s0, double s1, double margin, Vec* lo,
+                          Vec* hi);
 
     // A new, empty grid for a substep, its cells sized by the swept boxes (lo, hi) of the
     // moving bodies; then every body but the planes comes in by insert().
@@ -34,15 +34,17 @@ public:
     void insert(std::size_t i, const Vec& lo, const Vec& hi);
     // Calls f(j) once for every body j that may meet body i (not i itself): those in the cells
     // of i's swept box, box(&lo, &hi) (not asked for a plane), then the planes.
-    template <class Box, class F> void for_each_neighbour(std::size_t i, const Box& box, F&& f);
+    template <class Box, class F>
+    void for_each_neighbour(std::size_t i, const Box& box, F&& f);
 
 private:
-    struct CellBox {                // grid index ranges, inclusive; empty when lo > hi
+    struct CellBox {  // grid index ranges, inclusive; empty when lo > hi
         std::array<int, 3> lo{0, 0, 0}, hi{-1, -1, -1};
         bool empty() const { return hi[0] < lo[0]; }
     };
     CellBox cell_box(const Vec& lo, const Vec& hi) const;
-    template <class F> void for_each_cell(const CellBox& box, const CellBox& skip, F&& f) const;
+    template <class F>
+    void for_each_cell(const CellBox& box, const CellBox& skip, F&& f) const;
 
     std::vector<bool> plane_;
     std::vector<std::size_t> planes_;  // indices of the plane bodies
@@ -64,8 +66,8 @@ void BroadPhase<D>::for_each_cell(const CellBox& box, const CellBox& skip, F&& f
     for (int z = box.lo[2]; z <= box.hi[2]; ++z)
         for (int y = box.lo[1]; y <= box.hi[1]; ++y)
             for (int x = box.lo[0]; x <= box.hi[0]; ++x) {
-                if (x >= skip.lo[0] && x <= skip.hi[0] && y >= skip.lo[1] && y <= skip.hi[1] &&
-                    z >= skip.lo[2] && z <= skip.hi[2])
+                if (x >= skip.lo[0] && x <= skip.hi[0] && y >= skip.lo[1] && y <= skip.hi[1] && z >= skip.lo[2] &&
+                    z <= skip.hi[2])
                     continue;
                 f((static_cast<std::size_t>(z) * dims_[1] + y) * dims_[0] + x);
             }

@@ -26,7 +26,6 @@ constexpr double kPolishTolerance = 1e-12;
 constexpr int kPolishRounds = 8;
 constexpr double kPolishGrowth = 1e3;  // largest correction, in units of the problem's impulses
 
-
 }  // namespace
 
 template <int D>
@@ -135,8 +134,8 @@ void ContactSolver<D>::solve(std::vector<Contact<D>>* contacts, const std::vecto
     auto polish = [&](bool frictionless) -> bool {
         struct Unknown {
             std::size_t row;
-            int q;     // -1: normal, else the tangent
-            Vec d;     // the impulse direction
+            int q;  // -1: normal, else the tangent
+            Vec d;  // the impulse direction
             double target, precond;
             int sa, sb;  // body slots, -1 for a static body
         };

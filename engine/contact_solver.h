@@ -36,10 +36,10 @@ struct Contact {
 template <int D>
 struct PointGoal {
     using Vec = typename Space<D>::Vec;
-    double un = 0.0;            // normal velocity to reach (at least, if push_only)
+    double un = 0.0;  // normal velocity to reach (at least, if push_only)
     bool push_only = true;
-    double mu = 0.0;            // 0: no friction; < 0: unlimited
-    Vec ut = Vec::Zero();       // tangential velocity to reach
+    double mu = 0.0;       // 0: no friction; < 0: unlimited
+    Vec ut = Vec::Zero();  // tangential velocity to reach
 };
 
 template <int D>

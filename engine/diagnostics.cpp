@@ -39,14 +39,10 @@ Totals3 totals(const std::vector<Body3>& bodies, const Vec3& about) {
 
 bool gains_energy(double before, double after) { return after - before > 1e-9 * std::abs(before); }
 
-double potential_energy(const Body1& b, const Vec3& g) {
-    return b.is_static ? 0.0 : -b.mass * g.x() * b.position;
-}
+double potential_energy(const Body1& b, const Vec3& g) { return b.is_static ? 0.0 : -b.mass * g.x() * b.position; }
 double potential_energy(const Body2& b, const Vec3& g) {
     return b.is_static ? 0.0 : -b.mass * g.head<2>().dot(b.position);
 }
-double potential_energy(const Body3& b, const Vec3& g) {
-    return b.is_static ? 0.0 : -b.mass * g.dot(b.position);
-}
+double potential_energy(const Body3& b, const Vec3& g) { return b.is_static ? 0.0 : -b.mass * g.dot(b.position); }
 
 }  // namespace collide

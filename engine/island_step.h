@@ -39,16 +39,16 @@ namespace collide {
 template <int D>
 struct StepContact {
     using Vec = typename Space<D>::Vec;
-    std::size_t a = 0, b = 0;        // body indices; the manifold's normal points from a into b
-    typename Space<D>::Manifold m;   // its points (separations up to the margin)
-    double e = 0.0;                  // restitution of the pair
-    double mu = 0.0;                 // friction limit (PointGoal::mu: < 0 unlimited, 0 none)
+    std::size_t a = 0, b = 0;       // body indices; the manifold's normal points from a into b
+    typename Space<D>::Manifold m;  // its points (separations up to the margin)
+    double e = 0.0;                 // restitution of the pair
+    double mu = 0.0;                // friction limit (PointGoal::mu: < 0 unlimited, 0 none)
     // Filled by the step:
-    Vec impulse = Vec::Zero();       // summed over its points, on b (N s)
-    double weight = 0.0;             // summed normal impulse
-    Vec moment = Vec::Zero();        // summed normal impulse times point
-    double approach = 0.0;           // the most negative un- over its points (m/s)
-    bool fresh = true;               // carried no normal impulse at the previous step
+    Vec impulse = Vec::Zero();  // summed over its points, on b (N s)
+    double weight = 0.0;        // summed normal impulse
+    Vec moment = Vec::Zero();   // summed normal impulse times point
+    double approach = 0.0;      // the most negative un- over its points (m/s)
+    bool fresh = true;          // carried no normal impulse at the previous step
 };
 
 template <int D>
@@ -59,7 +59,7 @@ public:
     using Body = typename Space<D>::Body;
 
     static constexpr int kVelocitySweeps = 8;
-    static constexpr int kImpactSweeps = 8;    // more, on the rows of a pair's first impact
+    static constexpr int kImpactSweeps = 8;  // more, on the rows of a pair's first impact
     static constexpr int kPositionSweeps = 3;
     static constexpr double kSlop = 5e-5;   // m of penetration left alone (contacts persist)
     static constexpr double kBeta = 0.8;    // fraction of the rest removed per step
@@ -71,19 +71,19 @@ public:
     // `members`: the dynamic bodies stepped, every other body of a contact counts as static):
     // velocities become v+ (gravity g included), positions are corrected for penetration (the
     // step's motion itself is left to the caller: x+ = x- + h v+).
-    void step(std::vector<StepContact<D>>* contacts, const std::vector<std::size_t>& members,
-              std::vector<Body>* bodies, const Vec& g, double h);
+    void step(std::vector<StepContact<D>>* contacts, const std::vector<std::size_t>& members, std::vector<Body>* bodies,
+              const Vec& g, double h);
 
 private:
     using InvInertia = std::conditional_t<D == 2, double, Mat3>;
     using Frame = std::conditional_t<D == 2, Vec2, Quat>;  // 2D: (cos, sin) of the angle; 3D: q^-1
     struct Slot {  // a body of the step's contacts (members first; the others keep their motion)
-        Vec v = Vec::Zero(), vp = Vec::Zero();      // velocity, pseudo-velocity (m/s)
-        Spin w = zero<Spin>(), wp = zero<Spin>();   // spin, pseudo-spin (rad/s)
-        double inv_m = 0.0;                         // 0 for a body that is not a member
+        Vec v = Vec::Zero(), vp = Vec::Zero();     // velocity, pseudo-velocity (m/s)
+        Spin w = zero<Spin>(), wp = zero<Spin>();  // spin, pseudo-spin (rad/s)
+        double inv_m = 0.0;                        // 0 for a body that is not a member
         InvInertia inv_I{};
-        Vec x = Vec::Zero();                        // position at the step's start
-        Frame frame{};                              // where a world point sits on the body
+        Vec x = Vec::Zero();  // position at the step's start
+        Frame frame{};        // where a world point sits on the body
     };
     // One direction of a point's impulse (its normal or a tangent), worked out once per step so
     // that a sweep costs a few dot products: d; the moments r x d of the lever arms; what a unit
@@ -93,7 +93,7 @@ private:
     // impulse p d on b (-p d on a) adds p/mb d to vb and p Ib^-1(rb x d) to wb.
     struct Axis {
         Vec d = Vec::Zero();
-        Spin ra_d = zero<Spin>(), rb_d = zero<Spin>();   // ra x d, rb x d
+        Spin ra_d = zero<Spin>(), rb_d = zero<Spin>();      // ra x d, rb x d
         Spin turn_a = zero<Spin>(), turn_b = zero<Spin>();  // Ia^-1 (ra x d), Ib^-1 (rb x d)
         double mass = 0.0;
     };
@@ -104,26 +104,26 @@ private:
         Axis n;
         std::array<Axis, 2> t;
         int nt = 0;
-        double target = 0.0;   // normal velocity goal
-        double depth = 0.0;    // signed separation at the step's start
+        double target = 0.0;  // normal velocity goal
+        double depth = 0.0;   // signed separation at the step's start
         double mu = 0.0;
         double lam = 0.0, lam_p = 0.0;
         std::array<double, 2> lam_t{};
     };
-    struct Cached {  // one pair's points at its last step
+    struct Cached {                // one pair's points at its last step
         std::uint64_t serial = 0;  // the step() that wrote it
         int count = 0;
-        std::array<Vec, Space<D>::kMaxPoints> anchor;    // on body a, in its own frame
+        std::array<Vec, Space<D>::kMaxPoints> anchor;  // on body a, in its own frame
         std::array<double, Space<D>::kMaxPoints> lam{};
-        std::array<Vec, Space<D>::kMaxPoints> lam_t;     // tangential impulse, world
+        std::array<Vec, Space<D>::kMaxPoints> lam_t;  // tangential impulse, world
     };
     // A pair's points are last step's only if it was written at each of its moving bodies'
     // last step (islands may step apart: a step taken again after an impact is one island's).
     std::unordered_map<std::uint64_t, Cached> cache_;
-    std::uint64_t serial_ = 0;          // step() calls
-    std::vector<std::uint64_t> last_;   // per body: the serial of its last step
-    std::vector<int> slot_;  // body index -> slot in the step's arrays (-1: not in the step)
-    std::vector<Slot> slots_;  // (kept between steps: no allocation per step)
+    std::uint64_t serial_ = 0;         // step() calls
+    std::vector<std::uint64_t> last_;  // per body: the serial of its last step
+    std::vector<int> slot_;            // body index -> slot in the step's arrays (-1: not in the step)
+    std::vector<Slot> slots_;          // (kept between steps: no allocation per step)
     std::vector<Row> rows_;
     std::vector<std::size_t> impacts_;  // rows of pairs approaching that carried no impulse
 };

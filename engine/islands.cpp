@@ -148,8 +148,7 @@ void World<D>::settle(const std::vector<std::size_t>& reached, double t) {
 // first the normal speeds of the resting points are set to zero (the last, shorter than
 // kZenoTime, bounces merged), then forces F >= 0 keep the normal relative acceleration >= 0.
 template <int D>
-void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
-                            double t) {
+void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members, double t) {
     ++counters_.island_solves;
     const std::uint32_t id = islands_.next_id++;
     if (islands_.next_id == 0) islands_.next_id = 1;
@@ -162,10 +161,8 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
         for (int k = 0; k < c.m.count; ++k) {
             PointGoal g;
             g.mu = 0.0;
-            if (std::abs(normal_speed(c.a, c.b, c.m.points[k], c.m.normal)) <= v_rest)
-                g.push_only = false;
-            else
-                g.un = -kNever;
+            if (std::abs(normal_speed(c.a, c.b, c.m.points[k], c.m.normal)) <= v_rest) g.push_only = false;
+            else g.un = -kNever;
             goals.push_back(g);
         }
     }

@@ -2,9 +2,7 @@
 
 namespace collide {
 
-Mat3 sphere_inertia(double m, double radius) {
-    return Mat3::Identity() * (0.4 * m * radius * radius);
-}
+Mat3 sphere_inertia(double m, double radius) { return Mat3::Identity() * (0.4 * m * radius * radius); }
 
 Mat3 box_inertia(double m, const Vec3& size) {
     const Vec3 s2 = size.cwiseProduct(size);
@@ -23,8 +21,7 @@ Mat3 disc_inertia(double m, double radius) {
 }
 
 Mat3 rectangle_inertia(double m, double width, double height) {
-    return Vec3(height * height, width * width, width * width + height * height).asDiagonal() *
-           (m / 12.0);
+    return Vec3(height * height, width * width, width * width + height * height).asDiagonal() * (m / 12.0);
 }
 
 double disc_inertia_2d(double m, double radius) { return 0.5 * m * radius * radius; }

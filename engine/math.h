@@ -41,9 +41,7 @@ inline Quat lift_angle(double angle) {
 // Cross-product matrix [r]x, so that [r]x a = r x a.
 inline Mat3 skew(const Vec3& r) {
     Mat3 m;
-    m << 0.0, -r.z(), r.y(),
-         r.z(), 0.0, -r.x(),
-         -r.y(), r.x(), 0.0;
+    m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
     return m;
 }
 

@@ -27,15 +27,13 @@ struct Listing3 {
 // CollisionResponce(e, ma, mb, Ia, Ib, ra, rb, n, vai, vbi, wai, wbi, ...) as written.
 // Ia.inverse() is taken as the body's world inverse inertia (zero for a static body, whose 1/m
 // is zero too).
-Listing3 listing(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e,
-                 ListingReading reading = {});
+Listing3 listing(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, ListingReading reading = {});
 
 // The listing on a line (r = 0, n = +1 or -1).
 struct Listing1 {
     double scalar = 0.0, Jmod = 0.0, J = 0.0, vaf = 0.0, vbf = 0.0;
 };
-Listing1 listing(const ImpactBody1& a, const ImpactBody1& b, double n, double e,
-                 ListingReading reading = {});
+Listing1 listing(const ImpactBody1& a, const ImpactBody1& b, double n, double e, ListingReading reading = {});
 
 // The page's summary table as written:
 //   J = -(1+e) ((va - vb).n + (ra x n).wa - (rb x n).wb)

@@ -71,8 +71,7 @@ PenaltyRun penalty_collision(const PenaltySetup& s) {
     const double k = s.stiffness, c = s.damping;
     require(std::isfinite(k) && k > 0, "the stiffness k must be > 0");
     require(std::isfinite(c) && c >= 0, "the damping c must be >= 0");
-    require(std::isfinite(s.va) && std::isfinite(s.vb) && s.va > s.vb,
-            "the blocks must approach (v_A > v_B)");
+    require(std::isfinite(s.va) && std::isfinite(s.vb) && s.va > s.vb, "the blocks must approach (v_A > v_B)");
     const double t_ref = kPi * std::sqrt(m / k);  // the undamped contact time
     const double h = s.time_step > 0 ? s.time_step : t_ref / 2000.0;
     require(std::isfinite(h) && h <= t_ref, "the time step must be at most pi sqrt(m/k)");

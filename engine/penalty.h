@@ -55,22 +55,22 @@ struct PenaltySetup {
 };
 
 struct PenaltySample {
-    double t = 0.0;         // s since the first touch
-    double overlap = 0.0;   // delta, m
-    double rate = 0.0;      // delta', m/s
-    double force = 0.0;     // F on B, N
-    double impulse = 0.0;   // integral of F dt so far, N s
+    double t = 0.0;        // s since the first touch
+    double overlap = 0.0;  // delta, m
+    double rate = 0.0;     // delta', m/s
+    double force = 0.0;    // F on B, N
+    double impulse = 0.0;  // integral of F dt so far, N s
 };
 
 struct PenaltyRun {
-    std::vector<PenaltySample> samples;  // every step, from the first touch to the last
-    bool separated = false;   // false: still touching after 100 undamped contact times
-    double contact_time = 0.0;          // s
-    double impulse = 0.0;               // N s on B over the contact
+    std::vector<PenaltySample> samples;     // every step, from the first touch to the last
+    bool separated = false;                 // false: still touching after 100 undamped contact times
+    double contact_time = 0.0;              // s
+    double impulse = 0.0;                   // N s on B over the contact
     double va_after = 0.0, vb_after = 0.0;  // m/s
-    double restitution = 0.0;           // (vb_after - va_after) / (va - vb)
-    double peak_force = 0.0;            // N
-    double max_overlap = 0.0;           // m
+    double restitution = 0.0;               // (vb_after - va_after) / (va - vb)
+    double peak_force = 0.0;                // N
+    double max_overlap = 0.0;               // m
     int steps = 0;
 };
 

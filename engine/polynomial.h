@@ -58,13 +58,13 @@ inline double bracketed_root(G g, double lo, double hi, double t) {
     for (int it = 0; it < 100; ++it) {
         double rate;
         const double gt = g(t, &rate);
-        if (gt >= 0.0) hi = t; else lo = t;
+        if (gt >= 0.0) hi = t;
+        else lo = t;
         const double newton_next = rate > 0.0 ? t - gt / rate : t;
         // A Newton step below 1e-15 of hi, or the step after one below 1e-8 (Newton's
         // method converging quadratically, that one is at rounding): done. (Checked before
         // the bracket, which the converged step may touch.)
-        if (rate > 0.0 && (std::abs(newton_next - t) <= 1e-15 * hi || close))
-            return std::clamp(newton_next, lo, hi);
+        if (rate > 0.0 && (std::abs(newton_next - t) <= 1e-15 * hi || close)) return std::clamp(newton_next, lo, hi);
         const bool newton = rate > 0.0 && newton_next > lo && newton_next < hi;
         const double next = newton ? newton_next : 0.5 * (lo + hi);
         close = newton && std::abs(next - t) <= 1e-8 * hi;

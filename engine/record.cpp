@@ -6,9 +6,9 @@ template <int D>
 Recording<D> record(const Scene& scene, const std::vector<double>& times, const RecordOptions& options) {
     Recording<D> r;
     typename Stepping<D>::World world(scene);
-    std::size_t seen = 0;  // events before the latest impact's
-    double instant_t = -1.0;         // s: the latest impact's instant
-    std::size_t instant_first = 0;   // its first event
+    std::size_t seen = 0;           // events before the latest impact's
+    double instant_t = -1.0;        // s: the latest impact's instant
+    std::size_t instant_first = 0;  // its first event
     // Per RecordOptions::keep pair: its collisions so far (instants) and the latest one's time.
     std::vector<int> kept(options.keep.size(), 0);
     std::vector<double> kept_t(options.keep.size(), -1.0);

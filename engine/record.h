@@ -20,12 +20,14 @@
 namespace collide {
 
 // The world, event and body types of each dimension (1D has its own world).
-template <int D> struct Stepping {
+template <int D>
+struct Stepping {
     using World = collide::World<D>;
     using Event = collide::Event<D>;
     using Body = typename Space<D>::Body;
 };
-template <> struct Stepping<1> {
+template <>
+struct Stepping<1> {
     using World = World1;
     using Event = Event1;
     using Body = Body1;
@@ -45,11 +47,11 @@ struct Recording {
         std::vector<Body> bodies;
     };
 
-    std::vector<double> times;                // s: the sampled instants, as asked
-    std::vector<std::vector<Body>> states;    // every body at times[k]
-    std::vector<std::size_t> events_upto;     // events[0, events_upto[k]) happened by times[k]
-    std::vector<Event> events;                // every collision of the run, in time order
-    std::vector<Instant> instants;            // the first RecordOptions::instants instants
+    std::vector<double> times;              // s: the sampled instants, as asked
+    std::vector<std::vector<Body>> states;  // every body at times[k]
+    std::vector<std::size_t> events_upto;   // events[0, events_upto[k]) happened by times[k]
+    std::vector<Event> events;              // every collision of the run, in time order
+    std::vector<Instant> instants;          // the first RecordOptions::instants instants
 
     // The instant of events[k], when it is among `instants`; else nullptr.
     const Instant* instant_of(std::size_t k) const {

@@ -41,13 +41,13 @@ auto respond_with(Model model, const IB& a, const IB& b, const V& n, double e, d
 
 }  // namespace
 
-Response3 respond(Model model, const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e,
-                  double mu, RestitutionLaw law, RouthDetail* detail) {
+Response3 respond(Model model, const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
+                  RestitutionLaw law, RouthDetail* detail) {
     return respond_with(model, a, b, n, e, mu, law, detail);
 }
 
-Response2 respond(Model model, const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e,
-                  double mu, RestitutionLaw law, RouthDetail* detail) {
+Response2 respond(Model model, const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu,
+                  RestitutionLaw law, RouthDetail* detail) {
     return respond_with(model, a, b, n, e, mu, law, detail);
 }
 

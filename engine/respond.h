@@ -13,12 +13,12 @@ namespace collide {
 // stick, routh (e, mu, law; its phases into *detail when given) or page_listing (3D: the
 // listing's velocities, listing_response below). mu, law and detail are read only by the
 // models that use them.
-Response3 respond(Model model, const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e,
-                  double mu, RestitutionLaw law, RouthDetail* detail = nullptr);
+Response3 respond(Model model, const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
+                  RestitutionLaw law, RouthDetail* detail = nullptr);
 // 2D: the page's listing is 3D code; page_listing throws std::logic_error here (the world
 // refuses it in 2D scenes; `collide solve` reads the listing itself, page::listing).
-Response2 respond(Model model, const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e,
-                  double mu, RestitutionLaw law, RouthDetail* detail = nullptr);
+Response2 respond(Model model, const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu,
+                  RestitutionLaw law, RouthDetail* detail = nullptr);
 
 // The page's listing as written (engine/page.h, errata 5-8) as a response: the velocities it
 // computes, and as P the impulse b actually receives, mb (vbf - vbi) (erratum 7: not the

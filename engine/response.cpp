@@ -15,8 +15,8 @@ const char* model_name(Model m) {
 }
 
 bool parse_model(const std::string& name, Model* out) {
-    for (Model m : {Model::frictionless, Model::coulomb, Model::matrix, Model::stick,
-                    Model::page_listing, Model::routh}) {
+    for (Model m :
+         {Model::frictionless, Model::coulomb, Model::matrix, Model::stick, Model::page_listing, Model::routh}) {
         if (name == model_name(m)) {
             *out = m;
             return true;

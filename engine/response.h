@@ -28,7 +28,7 @@ const char* model_name(Model m);
 bool parse_model(const std::string& name, Model* out);
 
 struct Response1 {
-    double P = 0.0;         // impulse on B along +x, N s (A receives -P)
+    double P = 0.0;  // impulse on B along +x, N s (A receives -P)
     bool separating = false;
     double va = 0.0, vb = 0.0;  // after, m/s
 };
@@ -37,8 +37,8 @@ struct Response2 {
     Vec2 P = Vec2::Zero();  // impulse on B, N s (A receives -P), at the contact point
     double couple = 0.0;    // angular impulse on B beyond rb x P (stick only), N m s
     bool separating = false;
-    bool sliding = false;   // coulomb: the sticking impulse left the friction cone
-    bool painleve = false;  // coulomb: no one-step answer with friction (see coulomb())
+    bool sliding = false;                       // coulomb: the sticking impulse left the friction cone
+    bool painleve = false;                      // coulomb: no one-step answer with friction (see coulomb())
     Vec2 va = Vec2::Zero(), vb = Vec2::Zero();  // after, m/s
     double wa = 0.0, wb = 0.0;                  // after, rad/s
 };

@@ -6,9 +6,7 @@
 
 namespace collide {
 
-Vec2 relative_velocity(const ImpactBody2& a, const ImpactBody2& b) {
-    return point_velocity(b) - point_velocity(a);
-}
+Vec2 relative_velocity(const ImpactBody2& a, const ImpactBody2& b) { return point_velocity(b) - point_velocity(a); }
 
 double rotational_term(const ImpactBody2& body, const Vec2& n) {
     const double rn = cross(body.r, n);
@@ -17,8 +15,7 @@ double rotational_term(const ImpactBody2& body, const Vec2& n) {
 
 Mat2 collision_matrix(const ImpactBody2& a, const ImpactBody2& b) {
     const Vec2 pa = perp(a.r), pb = perp(b.r);
-    return (a.inv_m + b.inv_m) * Mat2::Identity() + a.inv_I * pa * pa.transpose() +
-           b.inv_I * pb * pb.transpose();
+    return (a.inv_m + b.inv_m) * Mat2::Identity() + a.inv_I * pa * pa.transpose() + b.inv_I * pb * pb.transpose();
 }
 
 void apply_impulse(const ImpactBody2& a, const ImpactBody2& b, Response2* r) {
@@ -70,9 +67,7 @@ Vec2 slip_direction(const Mat2& K, const Vec2& u, const Vec2& n) {
     return len > 0.0 ? Vec2(ut / len) : Vec2::Zero();
 }
 
-double sliding_denominator(const Mat2& K, const Vec2& n, const Vec2& t, double mu) {
-    return n.dot(K * (n - mu * t));
-}
+double sliding_denominator(const Mat2& K, const Vec2& n, const Vec2& t, double mu) { return n.dot(K * (n - mu * t)); }
 
 Response2 coulomb(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu) {
     const Vec2 u = relative_velocity(a, b);
@@ -109,8 +104,7 @@ Response2 matrix(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, doub
     return r;
 }
 
-static Response2 move_together(const ImpactBody2& a, const ImpactBody2& b, const Vec2& vp,
-                               double w) {
+static Response2 move_together(const ImpactBody2& a, const ImpactBody2& b, const Vec2& vp, double w) {
     Response2 r;
     r.va = vp - cross(w, a.r);
     r.vb = vp - cross(w, b.r);

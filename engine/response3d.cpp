@@ -5,9 +5,7 @@
 
 namespace collide {
 
-Vec3 relative_velocity(const ImpactBody3& a, const ImpactBody3& b) {
-    return point_velocity(b) - point_velocity(a);
-}
+Vec3 relative_velocity(const ImpactBody3& a, const ImpactBody3& b) { return point_velocity(b) - point_velocity(a); }
 
 double rotational_term(const ImpactBody3& body, const Vec3& n) {
     const Vec3 rn = body.r.cross(n);
@@ -71,9 +69,7 @@ Vec3 slip_direction(const Mat3& K, const Vec3& u, const Vec3& n) {
     return len > 0.0 ? Vec3(ut / len) : Vec3::Zero();
 }
 
-double sliding_denominator(const Mat3& K, const Vec3& n, const Vec3& t, double mu) {
-    return n.dot(K * (n - mu * t));
-}
+double sliding_denominator(const Mat3& K, const Vec3& n, const Vec3& t, double mu) { return n.dot(K * (n - mu * t)); }
 
 Response3 coulomb(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu) {
     const Vec3 u = relative_velocity(a, b);
@@ -112,8 +108,7 @@ Response3 matrix(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, doub
 }
 
 // The combined rigid motion (v at point x, w) of the welded pair, evaluated for each body.
-static Response3 move_together(const ImpactBody3& a, const ImpactBody3& b, const Vec3& vp,
-                               const Vec3& w) {
+static Response3 move_together(const ImpactBody3& a, const ImpactBody3& b, const Vec3& vp, const Vec3& w) {
     // vp: velocity of the combined body's material point at the contact point p.
     // Body centres are at p - r, so v_body = vp + w x (-r).
     Response3 r;

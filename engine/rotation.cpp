@@ -37,10 +37,12 @@ Quat exp_map(const Vec3& phi) {
     const double angle2 = phi.squaredNorm();
     if (angle2 <= 0.04) {
         const double x = 0.25 * angle2;
-        const double c = 1.0 + x * (-1.0 / 2.0 + x * (1.0 / 24.0 + x * (-1.0 / 720.0 + x * (1.0 / 40320.0 +
-                                     x * (-1.0 / 3628800.0)))));
-        const double s = 0.5 * (1.0 + x * (-1.0 / 6.0 + x * (1.0 / 120.0 + x * (-1.0 / 5040.0 + x * (1.0 / 362880.0 +
-                                     x * (-1.0 / 39916800.0))))));
+        const double c =
+            1.0 +
+            x * (-1.0 / 2.0 + x * (1.0 / 24.0 + x * (-1.0 / 720.0 + x * (1.0 / 40320.0 + x * (-1.0 / 3628800.0)))));
+        const double s =
+            0.5 * (1.0 + x * (-1.0 / 6.0 + x * (1.0 / 120.0 +
+                                                x * (-1.0 / 5040.0 + x * (1.0 / 362880.0 + x * (-1.0 / 39916800.0))))));
         return Quat(c, s * phi.x(), s * phi.y(), s * phi.z());
     }
     const double angle = std::sqrt(angle2);
@@ -62,8 +64,7 @@ void rotate_free(Body3* body, double dt, const RotationSettings& settings) {
     Vec3 Lb = body->inertia * (q.conjugate() * body->w);
     const Vec3 wb = inv_Ib * Lb;
     if (wb.norm() == 0.0) return;
-    const int n = std::max(1, static_cast<int>(std::ceil(wb.norm() * std::abs(dt) /
-                                                         settings.max_angle_per_step)));
+    const int n = std::max(1, static_cast<int>(std::ceil(wb.norm() * std::abs(dt) / settings.max_angle_per_step)));
     const double h = dt / n;
     // Yoshida's triple jump: symmetric steps of g1 h, g2 h, g1 h (g2 < 0) give fourth order.
     const double c = 1.2599210498948732, g1 = 1.0 / (2.0 - c), g2 = -c / (2.0 - c);  // c = cbrt 2

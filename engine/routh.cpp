@@ -29,8 +29,7 @@ const char* restitution_law_name(RestitutionLaw law) {
 }
 
 bool parse_restitution_law(const std::string& name, RestitutionLaw* out) {
-    for (RestitutionLaw law :
-         {RestitutionLaw::newton, RestitutionLaw::poisson, RestitutionLaw::stronge}) {
+    for (RestitutionLaw law : {RestitutionLaw::newton, RestitutionLaw::poisson, RestitutionLaw::stronge}) {
         if (name == restitution_law_name(law)) {
             *out = law;
             return true;
@@ -60,8 +59,7 @@ namespace routh_impl {
 template <int D>
 double Impact<D>::restitution_step(double a) const {
     switch (law) {
-        case RestitutionLaw::newton:
-            return a > 0.0 ? std::max(0.0, (restitution_target() - u[0]) / a) : kNever;
+        case RestitutionLaw::newton: return a > 0.0 ? std::max(0.0, (restitution_target() - u[0]) / a) : kNever;
         case RestitutionLaw::poisson: return std::max(0.0, restitution_target() - Pn());
         case RestitutionLaw::stronge: {
             const double R = restitution_target() - W;
@@ -165,8 +163,7 @@ auto Impact<D>::no_slip_direction(Kind* k) const -> V {
                 kappa += step;
                 if (!(std::abs(step) > 1e-15 * kappa)) break;
             }
-            Eigen::Vector2d s = eig.eigenvectors() *
-                                Eigen::Vector2d(ci[0] / (kappa + ki[0]), ci[1] / (kappa + ki[1]));
+            Eigen::Vector2d s = eig.eigenvectors() * Eigen::Vector2d(ci[0] / (kappa + ki[0]), ci[1] / (kappa + ki[1]));
             s.normalize();
             d.template tail<2>() = -mu * s;
         }
@@ -218,8 +215,8 @@ constexpr double kNoSlip = 1e-12;
 // u_c, K_c of the contact frame R (columns n, tangents), then Routh's integration.
 template <int D>
 Impact<D> integrate(const Eigen::Matrix<double, D, D>& R, const Eigen::Matrix<double, D, D>& Kw,
-                    const Eigen::Matrix<double, D, 1>& uw, double e, double mu,
-                    RestitutionLaw law, const RouthIntegration& how, RouthDetail* detail) {
+                    const Eigen::Matrix<double, D, 1>& uw, double e, double mu, RestitutionLaw law,
+                    const RouthIntegration& how, RouthDetail* detail) {
     Impact<D> s;
     s.how = how;
     s.K = R.transpose() * Kw * R;
@@ -263,8 +260,8 @@ Impact<D> integrate(const Eigen::Matrix<double, D, D>& R, const Eigen::Matrix<do
 
 }  // namespace
 
-Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu,
-                RestitutionLaw law, RouthDetail* detail) {
+Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu, RestitutionLaw law,
+                RouthDetail* detail) {
     const Vec2 u = relative_velocity(a, b);
     if (!(u.dot(n) < 0.0)) {
         if (detail) *detail = RouthDetail();
@@ -273,8 +270,7 @@ Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, doubl
     Mat2 R;
     R.col(0) = n;
     R.col(1) = perp(n);
-    const Impact<2> s =
-        integrate<2>(R, collision_matrix(a, b), u, e, mu, law, RouthIntegration(), detail);
+    const Impact<2> s = integrate<2>(R, collision_matrix(a, b), u, e, mu, law, RouthIntegration(), detail);
     Response2 r;
     r.P = R * s.P;
     r.sliding = s.kind != Kind::stick && std::abs(s.u[1]) > 0.0;
@@ -282,13 +278,13 @@ Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, doubl
     return r;
 }
 
-Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
-                RestitutionLaw law, RouthDetail* detail) {
+Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu, RestitutionLaw law,
+                RouthDetail* detail) {
     return routh(a, b, n, e, mu, law, RouthIntegration(), detail);
 }
 
-Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
-                RestitutionLaw law, const RouthIntegration& how, RouthDetail* detail) {
+Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu, RestitutionLaw law,
+                const RouthIntegration& how, RouthDetail* detail) {
     const Vec3 u = relative_velocity(a, b);
     if (!(u.dot(n) < 0.0)) {
         if (detail) *detail = RouthDetail();

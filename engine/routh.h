@@ -46,24 +46,24 @@ struct RouthPhase {
 const char* routh_phase_name(RouthPhase::Kind kind);  // "slip" | "stick" | "reverse"
 
 struct RouthDetail {
-    std::vector<RouthPhase> phases;   // in order; a phase may span compression and restitution
-    double compression_impulse = 0.0;   // P_c, N s: P_n where u_n = 0 (at the deepest compression)
-    double final_normal_impulse = 0.0;  // P_n at the end, N s
-    double compression_work = 0.0;      // J, W_c = integral_0^P_c u_n dP_n (<= 0)
-    double restitution_work = 0.0;      // J, W_r = integral_P_c^P_f u_n dP_n (>= 0)
-    double energy_change = 0.0;         // J, integral of u . dP = kinetic energy after - before
-    bool jammed = false;                // 3D only: integration gave up (see routh.cpp)
-    int slip_steps = 0;                 // 3D only: Taylor steps taken on the turning slip
+    std::vector<RouthPhase> phases;        // in order; a phase may span compression and restitution
+    double compression_impulse = 0.0;      // P_c, N s: P_n where u_n = 0 (at the deepest compression)
+    double final_normal_impulse = 0.0;     // P_n at the end, N s
+    double compression_work = 0.0;         // J, W_c = integral_0^P_c u_n dP_n (<= 0)
+    double restitution_work = 0.0;         // J, W_r = integral_P_c^P_f u_n dP_n (>= 0)
+    double energy_change = 0.0;            // J, integral of u . dP = kinetic energy after - before
+    bool jammed = false;                   // 3D only: integration gave up (see routh.cpp)
+    int slip_steps = 0;                    // 3D only: Taylor steps taken on the turning slip
     bool slip_end_in_closed_form = false;  // 3D only: the slip's end taken from its series
 };
 
 // Impact with Coulomb friction mu and restitution e by the given law. Separating or resting
 // contacts (un >= 0) get no impulse (`separating`). `sliding` is set when the contact still
 // slides at the end. P is the total impulse on B (A receives -P).
-Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu,
-                RestitutionLaw law, RouthDetail* detail = nullptr);
-Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
-                RestitutionLaw law, RouthDetail* detail = nullptr);
+Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu, RestitutionLaw law,
+                RouthDetail* detail = nullptr);
+Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu, RestitutionLaw law,
+                RouthDetail* detail = nullptr);
 
 // The 3D integration's settings, for tests that check it against itself: the tolerance of its
 // steps (relative to the impact's scales, see routh.cpp) and whether the slip's end is taken in
@@ -72,7 +72,7 @@ struct RouthIntegration {
     double tolerance = 1e-11;
     bool closed_form_end = true;
 };
-Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu,
-                RestitutionLaw law, const RouthIntegration& how, RouthDetail* detail = nullptr);
+Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu, RestitutionLaw law,
+                const RouthIntegration& how, RouthDetail* detail = nullptr);
 
 }  // namespace collide

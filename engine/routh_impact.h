@@ -38,11 +38,11 @@ struct Impact {
     bool compressing = true, jammed = false;
     bool compressed = false;  // compression has ended at least once
     RouthDetail* detail = nullptr;
-    RouthIntegration how;  // 3D: the slip's step tolerance and closed-form end
-    bool ray_known = false;      // 3D slip: the ray it settles on, found (see find_ray())
+    RouthIntegration how;    // 3D: the slip's step tolerance and closed-form end
+    bool ray_known = false;  // 3D slip: the ray it settles on, found (see find_ray())
     Eigen::Matrix<double, 2, 1> ray = Eigen::Matrix<double, 2, 1>::Zero();
-    double cos_x_ok = -2.0;      // 3D slip: cos of |th - th*| below which its end may converge
-    bool ray_missed = false;     // 3D slip: a search for the ray found none, at missed_at
+    double cos_x_ok = -2.0;   // 3D slip: cos of |th - th*| below which its end may converge
+    bool ray_missed = false;  // 3D slip: a search for the ray found none, at missed_at
     Eigen::Matrix<double, 2, 1> missed_at = Eigen::Matrix<double, 2, 1>::Zero();
     int slip_steps = 0;
     bool slip_end_closed = false;
@@ -96,9 +96,7 @@ struct Impact {
     // Delta E = integral of u . dP along the path, with u = u0 + K P:
     //   = u0 . P + P^T K P / 2, the same for every path since K is symmetric (u . dP is then
     //   the exact differential of that expression).
-    double energy_change() const {
-        return u0.dot(P) + 0.5 * P.dot(K * P);
-    }
+    double energy_change() const { return u0.dot(P) + 0.5 * P.dot(K * P); }
 
     // The quantity whose target ends restitution (see event_series()), of the state (u_n, P_n, W).
     double restitution_quantity(double un, double Pn_, double W_) const {
@@ -115,9 +113,7 @@ struct Impact {
     }
     // How far the current stage is from its end (< 0 before it): u_n in compression, else the
     // restitution law's quantity (restitution_quantity()) minus its target.
-    double stage_gap() const {
-        return compressing ? u[0] : restitution_quantity(u[0], P[0], W) - restitution_target();
-    }
+    double stage_gap() const { return compressing ? u[0] : restitution_quantity(u[0], P[0], W) - restitution_target(); }
 
     // ---- 3D slip whose direction turns, by Taylor series in sigma, dP_n = |u_t| dsigma
     // (routh_slip.cpp) ----

@@ -34,7 +34,7 @@ void Impact<D>::taylor(Series& s) const {
     s[kUn][0] = u[0], w1[0] = u[1], w2[0] = u[2];
     s[kPn][0] = P[0], s[kPt1][0] = P[1], s[kPt2][0] = P[2], s[kLoss][0] = 0.0;
     s.W0 = W, s.dE0 = energy_change();
-    double half_q0 = 0.0;  // 1 / (2 q_0)
+    double half_q0 = 0.0;       // 1 / (2 q_0)
     double s0[2] = {0.0, 0.0};  // w_0 / q_0, the slip direction
     for (int k = 0; k < kOrder; ++k) {
         // q^2 = w.w:  2 q_0 q_k = sum_j w_j . w_{k-j} - sum_{j=1}^{k-1} q_j q_{k-j}, each
@@ -155,8 +155,7 @@ bool Impact<D>::run_slip_3d() {
     constexpr int kMaxSteps = 500;  // beyond: jammed (see routh())
     const double uscale = u.norm(), Pscale = -un0 / K(0, 0);
     const double tol[3] = {kTol * uscale, kTol * Pscale, kTol * uscale * Pscale};
-    const double inv_tol2[3] = {1.0 / (tol[0] * tol[0]), 1.0 / (tol[1] * tol[1]),
-                                1.0 / (tol[2] * tol[2])};
+    const double inv_tol2[3] = {1.0 / (tol[0] * tol[0]), 1.0 / (tol[1] * tol[1]), 1.0 / (tol[2] * tol[2])};
     Series s;
     double g[kOrder + 1];
     for (int step = 0; step < kMaxSteps; ++step) {
@@ -181,8 +180,7 @@ bool Impact<D>::run_slip_3d() {
         // at h (a last coefficient small by chance).
         const auto worst = [&](int k) {
             const auto sq = [&](Row r) { return s[r][k] * s[r][k]; };
-            return std::max({(sq(kW1) + sq(kW2) + sq(kUn)) * inv_tol2[0],
-                             (sq(kPn) + sq(kPt1) + sq(kPt2)) * inv_tol2[1],
+            return std::max({(sq(kW1) + sq(kW2) + sq(kUn)) * inv_tol2[0], (sq(kPn) + sq(kPt1) + sq(kPt2)) * inv_tol2[1],
                              mu * mu * sq(kLoss) * inv_tol2[2]});
         };
         // The term before, squared and over its tolerance, is before h^(2N-2) at h, so
@@ -190,8 +188,7 @@ bool Impact<D>::run_slip_3d() {
         // by base-2 logarithms (fast_log2(): h to 1e-8 of itself).
         const double last = worst(kOrder), before = worst(kOrder - 1);
         const double log_h_last = last > 0.0 ? fast_log2(last) * (-0.5 / kOrder) : kNever;
-        const double log_h_before =
-            before > 0.0 ? fast_log2(before) * (-0.5 / (kOrder - 1)) : kNever;
+        const double log_h_before = before > 0.0 ? fast_log2(before) * (-0.5 / (kOrder - 1)) : kNever;
         const double h = std::exp2(std::min(log_h_last, log_h_before));
         if (!(h < kNever)) {
             jammed = true;

@@ -42,8 +42,8 @@ using polynomial::fast_log2;
 template <int D>
 struct Impact<D>::SlipEnd {
     double alpha = 0.0, r = 0.0, x0 = 0.0;  // x0 = x_now = th_now - th*
-    Eigen::Vector2d s, p;                  // s*, p*
-    int n = 0;                             // the series' order
+    Eigen::Vector2d s, p;                   // s*, p*
+    int n = 0;                              // the series' order
     // B, Bc, Bs (the rates), and the tails of B/(alpha+k), Bc/(alpha+k), Bs/(alpha+k),
     // BD/(2 alpha+k): cB_i = sum_{k>i} B_k/(alpha+k) etc., and their sums at y = 1.
     double B[kEndOrder + 1], Bc[kEndOrder + 1], Bs[kEndOrder + 1];
@@ -96,13 +96,23 @@ bool Impact<D>::find_ray(const Eigen::Vector2d& s0, const Eigen::Vector2d& c, co
     };
     double t_star = 0.0;
     if (m0 > 0.0) {
-        static constexpr std::array<double, 16> kGrid = {  // tan(i pi/32)
-            0.0,                 0.09849140335716425, 0.19891236737965800,
-            0.30334668360734239, 0.41421356237309503, 0.53451113595079159,
-            0.66817863791929890, 0.82067879082866024, 1.0,
-            1.21850352558797255, 1.49660576266548898, 1.87086841178938664,
-            2.41421356237309492, 3.29655820893832213, 5.02733949212584761,
-            10.15317038760883958};
+        static constexpr std::array<double, 16> kGrid = {// tan(i pi/32)
+                                                         0.0,
+                                                         0.09849140335716425,
+                                                         0.19891236737965800,
+                                                         0.30334668360734239,
+                                                         0.41421356237309503,
+                                                         0.53451113595079159,
+                                                         0.66817863791929890,
+                                                         0.82067879082866024,
+                                                         1.0,
+                                                         1.21850352558797255,
+                                                         1.49660576266548898,
+                                                         1.87086841178938664,
+                                                         2.41421356237309492,
+                                                         3.29655820893832213,
+                                                         5.02733949212584761,
+                                                         10.15317038760883958};
         int i = 1;
         double slope;
         while (i < 16 && M(kGrid[i], &slope) > 0.0) ++i;
@@ -125,7 +135,9 @@ bool Impact<D>::find_ray(const Eigen::Vector2d& s0, const Eigen::Vector2d& c, co
 
 // No series of the slip's end is tried again before |th - th*| < x (an estimate).
 template <int D>
-void Impact<D>::set_x_ok(double x) { cos_x_ok = x < 3.14159 ? std::cos(x) : -2.0; }
+void Impact<D>::set_x_ok(double x) {
+    cos_x_ok = x < 3.14159 ? std::cos(x) : -2.0;
+}
 
 // The series of the slip's end from the current state, into *f; false if they do not apply
 // (no attracting ray within reach, slip that does not stop on it, or series that do not
@@ -202,10 +214,8 @@ bool Impact<D>::slip_end_series(const double tol[3], SlipEnd* f) {
             for (int i = 1; i <= k; ++i) acc += Gt[i] * V[k - i];
             V[k] = -V0 * acc;
         }
-        const double top = std::max({std::abs(V[kProbe - 2]), std::abs(V[kProbe - 1]),
-                                     std::abs(V[kProbe])});
-        const double log_ratio =
-            top > 0.0 ? fast_log2(top / std::abs(V0)) / (kProbe - 1) : -kNever;
+        const double top = std::max({std::abs(V[kProbe - 2]), std::abs(V[kProbe - 1]), std::abs(V[kProbe])});
+        const double log_ratio = top > 0.0 ? fast_log2(top / std::abs(V0)) / (kProbe - 1) : -kNever;
         const double log_tol = fast_log2(tolP * alpha / (q0 * -V0));
         if (log_ratio * (kEndOrder - 1) > log_tol) {
             set_x_ok(std::abs(x0) * std::exp2(log_tol / (kEndOrder - 1) - log_ratio));
@@ -249,10 +259,8 @@ bool Impact<D>::slip_end_series(const double tol[3], SlipEnd* f) {
         // term relative to E(1) times the whole rest (1 + mu) R_n, R_n ~ r B_0/alpha.
         const double r = q0 / E1;
         const double over = std::max(
-            {r * (std::abs(B[k]) + mu * (std::abs(Bc[k]) + std::abs(Bs[k]))) /
-                 ((alpha + k) * tolP),
-             mu * r * r * std::abs(BD[k]) / ((2.0 * alpha + k) * tolW),
-             std::abs(E[k]) * q0B0 / (E1 * E1 * tolP)});
+            {r * (std::abs(B[k]) + mu * (std::abs(Bc[k]) + std::abs(Bs[k]))) / ((alpha + k) * tolP),
+             mu * r * r * std::abs(BD[k]) / ((2.0 * alpha + k) * tolW), std::abs(E[k]) * q0B0 / (E1 * E1 * tolP)});
         last[k & 7] = std::max(over, over_before);  // the last two terms
         over_before = over;
         if (last[k & 7] <= 1.0) {
@@ -360,12 +368,11 @@ int Impact<D>::end_slip(const double tol[3]) {
             load_end(f, tau, &rate);
             const V du = K * rate;
             *slope = compressing || law == RestitutionLaw::newton ? du[0]
-                     : law == RestitutionLaw::poisson           ? rate[0]
+                     : law == RestitutionLaw::poisson             ? rate[0]
                                                                   : u[0] * rate[0];
             return stage_gap();
         };
-        const double tau = bracketed_root(
-            gap, lo, 1.0, lo + (1.0 - lo) * -gap_lo / (gap_stop - gap_lo));
+        const double tau = bracketed_root(gap, lo, 1.0, lo + (1.0 - lo) * -gap_lo / (gap_stop - gap_lo));
         double slope;
         gap(tau, &slope);
         if (!compressing) return 0;

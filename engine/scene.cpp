@@ -12,8 +12,7 @@ const char* step_mode_name(StepMode s) {
 }
 
 double Scene::pair_restitution(std::size_t i, std::size_t j) const {
-    return std::min(bodies[i].restitution.value_or(restitution),
-                    bodies[j].restitution.value_or(restitution));
+    return std::min(bodies[i].restitution.value_or(restitution), bodies[j].restitution.value_or(restitution));
 }
 
 double Scene::pair_friction(std::size_t i, std::size_t j) const {

@@ -30,10 +30,10 @@ enum class StepMode { automatic, always, never };
 const char* step_mode_name(StepMode s);  // "auto", "always", "never" (the scene file's words)
 
 struct SceneBody {
-    std::string name;      // unique
-    std::string shape;     // as named in the file: block, disc, rectangle, polygon, sphere, box, plane
-    double length = 0.0;   // 1D block: full length, m (the body spans position -+ length/2)
-    Body1 body1;           // the dimension's body; the others stay default
+    std::string name;     // unique
+    std::string shape;    // as named in the file: block, disc, rectangle, polygon, sphere, box, plane
+    double length = 0.0;  // 1D block: full length, m (the body spans position -+ length/2)
+    Body1 body1;          // the dimension's body; the others stay default
     Body2 body2;
     Body3 body3;
     Shape2 shape2;
@@ -53,7 +53,7 @@ struct Scene {
     RestitutionLaw restitution_law = RestitutionLaw::stronge;
     Policy policy = Policy::sequential;
     StepMode stepping = StepMode::automatic;
-    double restitution = 1.0;     // for bodies that set none
+    double restitution = 1.0;  // for bodies that set none
     double friction = 0.0;
     std::vector<SceneBody> bodies;
 

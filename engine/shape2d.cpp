@@ -34,8 +34,8 @@ Manifold2 flipped(Manifold2 m) {
 
 // Disc (centre c, radius r) against a world-space polygon: normal from the polygon to the disc.
 // The distance is exact (face, or vertex Voronoi region).
-Manifold2 polygon_disc(const std::vector<Vec2>& v, const std::vector<Vec2>& nrm, const Vec2& c,
-                       double r, double margin) {
+Manifold2 polygon_disc(const std::vector<Vec2>& v, const std::vector<Vec2>& nrm, const Vec2& c, double r,
+                       double margin) {
     const int n = static_cast<int>(v.size());
     int face = 0;
     double s = -kInf;
@@ -49,7 +49,7 @@ Manifold2 polygon_disc(const std::vector<Vec2>& v, const std::vector<Vec2>& nrm,
     Manifold2 m;
     m.normal = nrm[face];
     double dist = s;  // centre to polygon surface, along the face normal
-    if (s > 0) {  // the centre is outside: it may be nearest to a vertex, not the face
+    if (s > 0) {      // the centre is outside: it may be nearest to a vertex, not the face
         const Vec2& v1 = v[face];
         const Vec2& v2 = v[(face + 1) % n];
         const Vec2* corner = nullptr;
@@ -99,8 +99,8 @@ std::pair<double, int> max_face_separation(const std::vector<Vec2>& va, const st
 // unit direction from A's nearest point to B's. When the nearest point lies inside the edge, the
 // direction is the edge's outward normal (exact), not the difference of the two points (whose
 // rounding error grows as the distance shrinks).
-double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& na,
-                        const std::vector<Vec2>& vb, const std::vector<Vec2>& nb, Vec2* dir) {
+double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& na, const std::vector<Vec2>& vb,
+                        const std::vector<Vec2>& nb, Vec2* dir) {
     double d = kInf;
     for (int pass = 0; pass < 2; ++pass) {
         const auto& p = pass == 0 ? va : vb;
@@ -136,8 +136,8 @@ double polygon_distance(const std::vector<Vec2>& va, const std::vector<Vec2>& na
 
 // Polygon against polygon by separating axes, then clipping the incident edge against the
 // reference face (as in Box2D's b2CollidePolygons): up to two contact points.
-Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, const Pose2& pb,
-                          double margin, Apart apart) {
+Manifold2 polygon_polygon(const Polygon& A, const Pose2& pa, const Polygon& B, const Pose2& pb, double margin,
+                          Apart apart) {
     thread_local std::vector<Vec2> va, na, vb, nb;  // (kept: no allocation per call)
     world_polygon(A, pa, &va, &na);
     world_polygon(B, pb, &vb, &nb);
@@ -237,8 +237,7 @@ Manifold2 halfplane_shape(const Shape2& plane, const Shape2& s, const Pose2& ps,
         const Vec2 p = ps.x + R * s.polygon.vertices[i];
         d[i] = {plane.normal.dot(p) - plane.offset, p};
     }
-    std::sort(d.begin(), d.begin() + s.polygon.count,
-              [](const auto& l, const auto& r) { return l.first < r.first; });
+    std::sort(d.begin(), d.begin() + s.polygon.count, [](const auto& l, const auto& r) { return l.first < r.first; });
     m.separation = d[0].first;
     for (int i = 0; i < 2 && i < s.polygon.count; ++i) {
         if (d[i].first >= margin) break;
@@ -254,8 +253,7 @@ Manifold2 halfplane_shape(const Shape2& plane, const Shape2& s, const Pose2& ps,
 Vec2 Pose2::apply(const Vec2& local) const { return x + rotation(angle) * local; }
 Vec2 Pose2::rotate(const Vec2& local) const { return rotation(angle) * local; }
 
-bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* error,
-                  Vec2* centroid) {
+bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* error, Vec2* centroid) {
     const int n = static_cast<int>(vertices.size());
     if (n < 3 || n > Polygon::kMaxVertices) {
         *error = "a polygon needs 3 to " + std::to_string(Polygon::kMaxVertices) + " vertices";
@@ -266,8 +264,7 @@ bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* 
     for (int i = 0; i < n; ++i) {
         const Vec2 e = vertices[(i + 1) % n] - vertices[i];
         if (e.norm() <= 1e-9 * scale) {
-            *error = "vertices " + std::to_string(i + 1) + " and " + std::to_string((i + 1) % n + 1) +
-                     " coincide";
+            *error = "vertices " + std::to_string(i + 1) + " and " + std::to_string((i + 1) % n + 1) + " coincide";
             return false;
         }
         const Vec2 next = vertices[(i + 2) % n] - vertices[(i + 1) % n];
@@ -360,8 +357,7 @@ double bounding_radius(const Shape2& s) {
     return 0.0;
 }
 
-Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb, double margin,
-                  Apart apart) {
+Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb, double margin, Apart apart) {
     using K = Shape2::Kind;
     if (a.kind == K::half_plane) return halfplane_shape(a, b, pb, margin);
     if (b.kind == K::half_plane) return flipped(halfplane_shape(b, a, pa, margin));
@@ -378,7 +374,8 @@ Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2
         }
         return m;
     }
-    if (a.kind == K::polygon && b.kind == K::polygon) return polygon_polygon(a.polygon, pa, b.polygon, pb, margin, apart);
+    if (a.kind == K::polygon && b.kind == K::polygon)
+        return polygon_polygon(a.polygon, pa, b.polygon, pb, margin, apart);
     // Disc and polygon, either order.
     const bool poly_a = a.kind == K::polygon;
     const Shape2& poly = poly_a ? a : b;

@@ -43,8 +43,7 @@ struct Polygon {
 // A convex polygon from counter-clockwise vertices, shifted so that its centroid (the centre of
 // mass of a uniform plate) is the origin. `error` explains a refusal: fewer than 3 or more than
 // kMaxVertices vertices, clockwise order, repeated points or a dent (not convex).
-bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* error,
-                  Vec2* centroid = nullptr);
+bool make_polygon(const std::vector<Vec2>& vertices, Polygon* out, std::string* error, Vec2* centroid = nullptr);
 // Throws std::invalid_argument when make_polygon refuses it: one side under about 2e-9 of the
 // other (scenario files refuse a ratio over 1e9 first: kMaxRectangleAspect).
 constexpr double kMaxRectangleAspect = 1e9;
@@ -69,11 +68,11 @@ struct Shape2 {
 };
 
 struct Manifold2 {
-    Vec2 normal = Vec2(1.0, 0.0);  // unit, from A into B
-    double separation = 0.0;       // signed: > 0 apart, < 0 overlapping (m)
-    int count = 0;                 // contact points found (0, 1 or 2)
+    Vec2 normal = Vec2(1.0, 0.0);                               // unit, from A into B
+    double separation = 0.0;                                    // signed: > 0 apart, < 0 overlapping (m)
+    int count = 0;                                              // contact points found (0, 1 or 2)
     std::array<Vec2, 2> points = {Vec2::Zero(), Vec2::Zero()};  // world, midway between surfaces
-    std::array<double, 2> depths{};  // per point: signed separation along the normal (m)
+    std::array<double, 2> depths{};                             // per point: signed separation along the normal (m)
 };
 
 // How collide() measures two polygons that are apart: `exact`, the distance between their
@@ -85,8 +84,8 @@ enum class Apart { exact, axis };
 
 // Contact points are reported for pairs whose separation is below `margin` (m); the
 // separation and normal are reported always.
-Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb,
-                  double margin = 0.0, Apart apart = Apart::exact);
+Manifold2 collide(const Shape2& a, const Pose2& pa, const Shape2& b, const Pose2& pb, double margin = 0.0,
+                  Apart apart = Apart::exact);
 
 // The largest distance of the shape's surface from its centre (m): bounds how fast a surface
 // point can move, v + |w| R (conservative advancement).

@@ -60,14 +60,12 @@ struct Box {
     Box(const Shape3& s, const Pose3& p) : c(p.x), R(p.q.toRotationMatrix()), h(s.half) {}
     Vec3 axis(int k) const { return R.col(k); }
     Vec3 vertex(int i) const {
-        const Vec3 local((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(),
-                         (i & 4) ? h.z() : -h.z());
+        const Vec3 local((i & 1) ? h.x() : -h.x(), (i & 2) ? h.y() : -h.y(), (i & 4) ? h.z() : -h.z());
         return c + R * local;
     }
     // Half the box's extent along the unit direction n.
     double radius(const Vec3& n) const {
-        return h.x() * std::abs(axis(0).dot(n)) + h.y() * std::abs(axis(1).dot(n)) +
-               h.z() * std::abs(axis(2).dot(n));
+        return h.x() * std::abs(axis(0).dot(n)) + h.y() * std::abs(axis(1).dot(n)) + h.z() * std::abs(axis(2).dot(n));
     }
 };
 
@@ -123,16 +121,14 @@ int clip_polygon(const std::array<Vec3, kMaxClip>& in, int n, const Vec3& dir, d
 
 // Indices of at most four of the n points: the deepest, the farthest from it, then the two that
 // add the most area (measured in the plane normal to n), so the kept ones span a large region.
-int reduce_to_four(const std::array<Vec3, kMaxClip>& p, const std::array<double, kMaxClip>& depth,
-                   int n, const Vec3& normal, std::array<int, 4>* keep) {
+int reduce_to_four(const std::array<Vec3, kMaxClip>& p, const std::array<double, kMaxClip>& depth, int n,
+                   const Vec3& normal, std::array<int, 4>* keep) {
     if (n <= 4) {
         for (int i = 0; i < n; ++i) (*keep)[i] = i;
         return n;
     }
     // Twice the signed area of triangle (a, b, c), counter-clockwise about the normal.
-    auto area = [&](const Vec3& a, const Vec3& b, const Vec3& c) {
-        return (b - a).cross(c - a).dot(normal);
-    };
+    auto area = [&](const Vec3& a, const Vec3& b, const Vec3& c) { return (b - a).cross(c - a).dot(normal); };
     // The deepest point.
     int i0 = 0;
     for (int i = 1; i < n; ++i)
@@ -160,7 +156,7 @@ int reduce_to_four(const std::array<Vec3, kMaxClip>& p, const std::array<double,
             i2 = i;
         }
     }
-    if (i2 < 0) return 2;  // collinear
+    if (i2 < 0) return 2;                                  // collinear
     if (area(p[i0], p[i1], p[i2]) < 0) std::swap(i1, i2);  // counter-clockwise triangle
     // The point adding the most area outside one of the triangle's edges.
     const int tri[3] = {i0, i1, i2};
@@ -185,8 +181,8 @@ int reduce_to_four(const std::array<Vec3, kMaxClip>& p, const std::array<double,
 
 // Closest points of the segments ca + s ua (|s| <= ha) and cb + t ub (|t| <= hb), unit
 // directions, not parallel (Ericson, Real-Time Collision Detection, 5.1.9).
-std::pair<Vec3, Vec3> closest_on_segments(const Vec3& ca, const Vec3& ua, double ha, const Vec3& cb,
-                                          const Vec3& ub, double hb) {
+std::pair<Vec3, Vec3> closest_on_segments(const Vec3& ca, const Vec3& ua, double ha, const Vec3& cb, const Vec3& ub,
+                                          double hb) {
     const Vec3 r = ca - cb;
     const double b = ua.dot(ub), c = ua.dot(r), f = ub.dot(r);
     const double denom = 1.0 - b * b;  // sin^2 of the angle: > kParallelSine^2
@@ -344,8 +340,7 @@ double bounding_radius(const Shape3& s) {
     return 0.0;
 }
 
-Manifold3 collide(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb,
-                  double margin) {
+Manifold3 collide(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb, double margin) {
     using K = Shape3::Kind;
     // Half-spaces first (either side).
     if (a.kind == K::half_space) return halfspace_shape(a, b, pb, margin);

@@ -55,8 +55,7 @@ struct Manifold3 {
 //     between two crossing edges;
 //   against a half-space: a sphere's lowest point, a box's up to 4 deepest vertices;
 //   half-space against half-space: separation +infinity, no point.
-Manifold3 collide(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb,
-                  double margin = 0.0);
+Manifold3 collide(const Shape3& a, const Pose3& pa, const Shape3& b, const Pose3& pb, double margin = 0.0);
 
 // The largest distance of the shape's surface from its centre (m): bounds how fast a surface
 // point can move, |v| + |w| R (conservative advancement). 0 for a half-space.

@@ -12,9 +12,11 @@
 
 namespace collide {
 
-template <int D> struct Space;
+template <int D>
+struct Space;
 
-template <> struct Space<2> {
+template <>
+struct Space<2> {
     using Vec = Vec2;
     using Spin = double;  // rad/s about +z
     using Body = Body2;
@@ -24,9 +26,10 @@ template <> struct Space<2> {
     static constexpr int kMaxPoints = 2;
 };
 
-template <> struct Space<3> {
+template <>
+struct Space<3> {
     using Vec = Vec3;
-    using Spin = Vec3;    // rad/s, world frame
+    using Spin = Vec3;  // rad/s, world frame
     using Body = Body3;
     using Shape = Shape3;
     using Pose = Pose3;
@@ -34,10 +37,20 @@ template <> struct Space<3> {
     static constexpr int kMaxPoints = 4;
 };
 
-template <class T> T zero();
-template <> inline double zero<double>() { return 0.0; }
-template <> inline Vec2 zero<Vec2>() { return Vec2::Zero(); }
-template <> inline Vec3 zero<Vec3>() { return Vec3::Zero(); }
+template <class T>
+T zero();
+template <>
+inline double zero<double>() {
+    return 0.0;
+}
+template <>
+inline Vec2 zero<Vec2>() {
+    return Vec2::Zero();
+}
+template <>
+inline Vec3 zero<Vec3>() {
+    return Vec3::Zero();
+}
 
 inline double magnitude(double w) { return std::abs(w); }
 inline double magnitude(const Vec3& w) { return w.norm(); }

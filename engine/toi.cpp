@@ -9,8 +9,8 @@
 
 namespace collide {
 
-TimeOfImpact time_of_impact(const Shape2& a, const Motion2& ma, const Shape2& b,
-                            const Motion2& mb, double t_end, const ToiSettings& settings) {
+TimeOfImpact time_of_impact(const Shape2& a, const Motion2& ma, const Shape2& b, const Motion2& mb, double t_end,
+                            const ToiSettings& settings) {
     TimeOfImpact out;
     const double spin_bound = std::abs(ma.w) * bounding_radius(a) + std::abs(mb.w) * bounding_radius(b);
     double t = 0.0;
@@ -24,8 +24,8 @@ TimeOfImpact time_of_impact(const Shape2& a, const Motion2& ma, const Shape2& b,
         }
         // How fast the gap along n can close from now to t_end (see the header).
         const Vec2 dv = mb.velocity(t) - ma.velocity(t), dg = mb.g - ma.g;
-        const double rate = std::max(0.0, -m.normal.dot(dv)) +
-                            std::max(0.0, -m.normal.dot(dg)) * (t_end - t) + spin_bound;
+        const double rate =
+            std::max(0.0, -m.normal.dot(dv)) + std::max(0.0, -m.normal.dot(dg)) * (t_end - t) + spin_bound;
         if (!(rate > 0.0)) return out;  // nothing closes the gap
         t += m.separation / rate;
         if (t > t_end) return out;
@@ -43,8 +43,7 @@ double plane_time(const Vec& n, const Vec& v, const Vec& a, double gap, bool tou
     // gap(s) = n.x(s) - offset - r: a quadratic in s.
     const double bb = n.dot(v), aa = 0.5 * n.dot(a);
     // Touching and parting: the gap returns to zero at the larger root (s = -b/a).
-    return touching ? (aa < 0.0 && bb > 0.0 ? -bb / aa : kNever)
-                    : first_root(aa, bb, std::max(gap, 0.0));
+    return touching ? (aa < 0.0 && bb > 0.0 ? -bb / aa : kNever) : first_root(aa, bb, std::max(gap, 0.0));
 }
 
 template <class Vec>

@@ -42,9 +42,9 @@ struct Motion2 {
 };
 
 struct TimeOfImpact {
-    bool hit = false;   // contact within [0, t_end]
-    double t = 0.0;     // s, the first time the separation is <= tolerance
-    Manifold2 manifold; // at t (points reported within the tolerance)
+    bool hit = false;    // contact within [0, t_end]
+    double t = 0.0;      // s, the first time the separation is <= tolerance
+    Manifold2 manifold;  // at t (points reported within the tolerance)
     int iterations = 0;
     bool converged = true;  // false: max_iterations ran out first (hit is then false)
 };
@@ -54,8 +54,8 @@ struct ToiSettings {
     int max_iterations = 10000;
 };
 
-TimeOfImpact time_of_impact(const Shape2& a, const Motion2& ma, const Shape2& b,
-                            const Motion2& mb, double t_end, const ToiSettings& settings = {});
+TimeOfImpact time_of_impact(const Shape2& a, const Motion2& ma, const Shape2& b, const Motion2& mb, double t_end,
+                            const ToiSettings& settings = {});
 
 // ---- Closed forms (the time from now, s; +infinity if never) ----
 
@@ -83,14 +83,14 @@ double inverse_smallest_moment(const Body3& b);
 // What advance_to_contact needs to know of a pair besides its shapes and motions.
 template <class Vec>
 struct Approach {
-    double t = 0.0;            // s: now
-    double horizon = 0.0;      // s: how far ahead to look
-    double touch = 0.0;        // m: a gap this small is contact
-    double v_rest = 0.0;       // m/s: a normal speed this small is resting
-    double turn_rate = 0.0;    // m/s: how fast the bodies' surfaces can turn towards each other
+    double t = 0.0;                         // s: now
+    double horizon = 0.0;                   // s: how far ahead to look
+    double touch = 0.0;                     // m: a gap this small is contact
+    double v_rest = 0.0;                    // m/s: a normal speed this small is resting
+    double turn_rate = 0.0;                 // m/s: how fast the bodies' surfaces can turn towards each other
     double radius_a = 0.0, radius_b = 0.0;  // m: bounding radii
-    bool touching = false;     // in contact now (resting on a corner, or parting)
-    Vec acc_a, acc_b;          // m/s^2: each body's constant acceleration
+    bool touching = false;                  // in contact now (resting on a corner, or parting)
+    Vec acc_a, acc_b;                       // m/s^2: each body's constant acceleration
 };
 
 // The first instant (from c.t, at most c.horizon later) the shapes sa and sb, carried by the
@@ -126,8 +126,7 @@ double advance_to_contact(const Shape& sa, const Shape& sb, M ma, M mb, const Ad
         // separation can be within kTouch while every clipped point of the face is farther.
         // The points decide, as they do for the contact manifold of World::resolve(): their depths
         // (from the wide manifold: same points, a larger margin) are the gap.
-        if (!touching && mm.count == 0 && mm.separation <= kTouch)
-            mm = collide(sa, pose_of(pa), sb, pose_of(pb), wide);
+        if (!touching && mm.count == 0 && mm.separation <= kTouch) mm = collide(sa, pose_of(pa), sb, pose_of(pb), wide);
         Look l;
         l.normal = mm.normal;
         l.separation = mm.separation;
@@ -141,8 +140,8 @@ double advance_to_contact(const Shape& sa, const Shape& sb, M ma, M mb, const Ad
             }
             near = true;
             const Vec& p = mm.points[k];
-            const double un = ((pb.v + spin_cross(pb.w, p - pb.position)) -
-                               (pa.v + spin_cross(pa.w, p - pa.position))).dot(mm.normal);
+            const double un = ((pb.v + spin_cross(pb.w, p - pb.position)) - (pa.v + spin_cross(pa.w, p - pa.position)))
+                                  .dot(mm.normal);
             // (At s = 0 the contact manifold of World::predict_pair decided already; this wider one
             // may pick other points of a face and must not disagree with it.)
             if (un < -v_rest && !start) l.lands = true;

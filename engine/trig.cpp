@@ -14,26 +14,24 @@ namespace {
 // >= 0.7 there), so the error is the rounding of Horner's rule, within 1 ulp.
 double sin_kernel(double r) {
     const double z = r * r;
-    const double p = -0.16666666666666666 +
-        z * (0.008333333333333333 +
-        z * (-0.0001984126984126984 +
-        z * (2.7557319223985893e-06 +
-        z * (-2.505210838544172e-08 +
-        z * (1.6059043836821613e-10 +
-        z * (-7.647163731819816e-13 +
-        z * 2.8114572543455206e-15))))));
+    const double p =
+        -0.16666666666666666 +
+        z * (0.008333333333333333 + z * (-0.0001984126984126984 +
+                                         z * (2.7557319223985893e-06 +
+                                              z * (-2.505210838544172e-08 +
+                                                   z * (1.6059043836821613e-10 +
+                                                        z * (-7.647163731819816e-13 + z * 2.8114572543455206e-15))))));
     return r + r * z * p;
 }
 double cos_kernel(double r) {
     const double z = r * r;
-    const double p = 0.041666666666666664 +
+    const double p =
+        0.041666666666666664 +
         z * (-0.001388888888888889 +
-        z * (2.48015873015873e-05 +
-        z * (-2.755731922398589e-07 +
-        z * (2.08767569878681e-09 +
-        z * (-1.1470745597729725e-11 +
-        z * (4.779477332387385e-14 +
-        z * -1.5619206968586225e-16))))));
+             z * (2.48015873015873e-05 +
+                  z * (-2.755731922398589e-07 +
+                       z * (2.08767569878681e-09 + z * (-1.1470745597729725e-11 +
+                                                        z * (4.779477332387385e-14 + z * -1.5619206968586225e-16))))));
     return (1.0 - 0.5 * z) + z * z * p;
 }
 
@@ -49,8 +47,8 @@ SinCos sin_cos(double x) {
     constexpr double kP2 = 0x1.0b4611a600000p-34;  // 6.077100506303966e-11
     constexpr double kP3 = 0x1.3198a2e037073p-69;  // 2.0222662487959506e-21
     constexpr double kTwoOverPi = 0.6366197723675814;
-    constexpr double kTwoPi = 6.283185307179586;   // 2 pi rounded: fmod by it is exact
-    constexpr double kLargest = 823549.0;           // (2^19 - 1) pi/2: |n| < 2^19
+    constexpr double kTwoPi = 6.283185307179586;  // 2 pi rounded: fmod by it is exact
+    constexpr double kLargest = 823549.0;         // (2^19 - 1) pi/2: |n| < 2^19
     if (!std::isfinite(x)) {
         const double nan = std::numeric_limits<double>::quiet_NaN();
         return {nan, nan};

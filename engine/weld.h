@@ -16,10 +16,10 @@ struct Weld {
     using Body = typename Space<D>::Body;
     std::vector<std::size_t> members;
     std::vector<typename Space<D>::Pose> rel;  // each member's pose in the compound's frame
-    std::vector<double> reach;  // each member's |d| + its bounding radius (m)
-    Body body;                  // the compound at time t (its frame: the world's at welding)
+    std::vector<double> reach;                 // each member's |d| + its bounding radius (m)
+    Body body;                                 // the compound at time t (its frame: the world's at welding)
     double t = 0.0;
-    Body anchor;                // the compound when its velocity last changed, at anchor_t
+    Body anchor;  // the compound when its velocity last changed, at anchor_t
     double anchor_t = 0.0;
     double inv_min_moment = 0.0;
 };

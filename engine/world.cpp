@@ -75,11 +75,11 @@ double bounding_gap(const std::vector<Body>& bodies, const Shapes& shapes, std::
 template <int D>
 World<D>::World(const Scene& scene) : scene_(scene) {
     if (scene.dimension != D)
-        throw std::invalid_argument("World<" + std::to_string(D) + "> needs a " +
-                                    std::to_string(D) + "D scene");
+        throw std::invalid_argument("World<" + std::to_string(D) + "> needs a " + std::to_string(D) + "D scene");
     if (scene.model == Model::page_listing && (D != 3 || scene.policy != Policy::sequential))
-        throw std::invalid_argument("the page's listing (model page-listing) is 3D code resolving one point at "
-                                    "a time: it runs only in 3D scenes with policy sequential");
+        throw std::invalid_argument(
+            "the page's listing (model page-listing) is 3D code resolving one point at "
+            "a time: it runs only in 3D scenes with policy sequential");
     const std::size_t n = scene.bodies.size();
     for (const SceneBody& sb : scene.bodies) {
         bodies_.push_back(scene_body(sb, static_cast<const Body*>(nullptr)));
@@ -314,7 +314,7 @@ void World<D>::contacts_of(std::size_t i, double t, std::vector<Contact>* out) {
     for_each_neighbour(i, t, [&](std::size_t j) {
         if (bodies_[i].is_static && bodies_[j].is_static) return;
         if (scratch_.searched[j] == scratch_.search && !shapes_.plane[j]) return;  // reported from j's side
-        if (same_weld(i, j) || passed(i, j)) return;        // stuck together, or let through
+        if (same_weld(i, j) || passed(i, j)) return;                               // stuck together, or let through
         // Stepped bodies touch each other and static ones at their steps, not at instants.
         if (meet_at_steps(i, j)) return;
         drift(j, t);
@@ -391,10 +391,11 @@ void World<D>::solve_points(std::vector<Contact>* contacts, const std::vector<Po
     for (const Contact& c : *contacts)
         for (std::size_t k : {c.a, c.b})
             if (welds_.of[k] >= 0)
-                throw std::runtime_error(
-                    scene_.bodies[k].name + ", stuck to another body by the stick model, is in resting or "
-                    "simultaneous contact with " + scene_.bodies[k == c.a ? c.b : c.a].name +
-                    ": not modelled (see \"Stuck bodies\" in engine/world.h)");
+                throw std::runtime_error(scene_.bodies[k].name +
+                                         ", stuck to another body by the stick model, is in resting or "
+                                         "simultaneous contact with " +
+                                         scene_.bodies[k == c.a ? c.b : c.a].name +
+                                         ": not modelled (see \"Stuck bodies\" in engine/world.h)");
     solver_.solve(contacts, goals, state);
 }
 
@@ -525,9 +526,9 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
 }
 
 template <int D>
-void World<D>::record(std::size_t a, std::size_t b, double t, const Vec& normal, const Vec& impulse,
-                      const Vec& point, const typename Event<D>::Velocity& before_a,
-                      const typename Event<D>::Velocity& before_b, std::vector<Event<D>>* events) {
+void World<D>::record(std::size_t a, std::size_t b, double t, const Vec& normal, const Vec& impulse, const Vec& point,
+                      const typename Event<D>::Velocity& before_a, const typename Event<D>::Velocity& before_b,
+                      std::vector<Event<D>>* events) {
     Event<D> ev;
     ev.t = t;
     ev.a = a;

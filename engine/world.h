@@ -38,11 +38,11 @@ struct Event {
         Vec v;   // m/s
         Spin w;  // rad/s
     };
-    double t = 0.0;              // s
-    std::size_t a = 0, b = 0;    // body indices (a < b, or b the dynamic one against a static a)
-    Vec point;                   // m: where the resultant impulse acts (impulse-weighted points)
-    Vec normal;                  // unit, from a into b
-    Vec impulse;                 // N s on b (a receives -impulse)
+    double t = 0.0;            // s
+    std::size_t a = 0, b = 0;  // body indices (a < b, or b the dynamic one against a static a)
+    Vec point;                 // m: where the resultant impulse acts (impulse-weighted points)
+    Vec normal;                // unit, from a into b
+    Vec impulse;               // N s on b (a receives -impulse)
     Velocity before_a, before_b, after_a, after_b;
     // Where the two bodies are at the instant (centre of mass and orientation): with the
     // scene's masses, shapes and the velocities above, the collision can be rebuilt from the
@@ -101,10 +101,10 @@ public:
         std::uint64_t predictions = 0;  // time-of-impact computations
         std::uint64_t substeps = 0;
         std::uint64_t island_solves = 0;
-        std::uint64_t sleeps = 0;       // islands put to sleep
-        std::uint64_t welds = 0;        // pairs stuck together (the stick model)
-        std::uint64_t steps = 0;        // time steps of the stepped islands
-        std::uint64_t joined = 0;       // bodies that became stepped
+        std::uint64_t sleeps = 0;  // islands put to sleep
+        std::uint64_t welds = 0;   // pairs stuck together (the stick model)
+        std::uint64_t steps = 0;   // time steps of the stepped islands
+        std::uint64_t joined = 0;  // bodies that became stepped
     };
     const Counters& counters() const { return counters_; }
 
@@ -120,14 +120,14 @@ public:
     static constexpr double kLongestSubstep = 0.01;
     static constexpr double kShortestSubstep = 1e-5;
     static constexpr std::size_t kMaxEventsPerAdvance = 20000000;
-    static constexpr std::uint64_t kMaxWorkPerInstant = 100000;   // predictions popped at one t
+    static constexpr std::uint64_t kMaxWorkPerInstant = 100000;  // predictions popped at one t
     // Stepped islands (docs/stepping.md).
     static constexpr double kIslandStep = 1.0 / 600.0;  // s
     static constexpr int kPersistImpacts = 16;
-    static constexpr double kPersistWindow = 0.1;       // s
-    static constexpr double kSpeculative = 1e-3;        // m
-    static constexpr double kStepSleepSpeed = 2e-3;     // m/s
-    static constexpr double kStepSleepTime = 0.5;       // s
+    static constexpr double kPersistWindow = 0.1;    // s
+    static constexpr double kSpeculative = 1e-3;     // m
+    static constexpr double kStepSleepSpeed = 2e-3;  // m/s
+    static constexpr double kStepSleepTime = 0.5;    // s
 
 private:
     // advance_to's start of a substep at loop_.time: its length, the grid, resting forces, the stepped
@@ -139,12 +139,10 @@ private:
         Spin alpha;                 // rad/s^2 (resting forces)
         std::uint32_t version = 0;  // bumped whenever the motion changes
     };
-    struct Pending {                // a predicted impact of bodies i and j
+    struct Pending {  // a predicted impact of bodies i and j
         double t;
         std::uint32_t i, j, vi, vj;  // vi, vj: the versions it was predicted from
-        bool operator>(const Pending& o) const {
-            return t != o.t ? t > o.t : (i != o.i ? i > o.i : j > o.j);
-        }
+        bool operator>(const Pending& o) const { return t != o.t ? t > o.t : (i != o.i ? i > o.i : j > o.j); }
     };
     using Contact = collide::Contact<D>;      // one touching pair (engine/contact_solver.h)
     using PointGoal = collide::PointGoal<D>;  // what the contact solver aims at for one point
@@ -168,8 +166,10 @@ private:
     void build_grid(double t0, double t1);
     void insert(std::size_t i, double t0, double t1);
     void swept_box(std::size_t i, double t0, double t1, Vec* lo, Vec* hi) const;
-    template <class F> void for_each_neighbour(std::size_t i, double t, F&& f) {
-        grid_.for_each_neighbour(i, [&](Vec* lo, Vec* hi) { swept_box(i, t, loop_.substep_end, lo, hi); }, f);
+    template <class F>
+    void for_each_neighbour(std::size_t i, double t, F&& f) {
+        grid_.for_each_neighbour(
+            i, [&](Vec* lo, Vec* hi) { swept_box(i, t, loop_.substep_end, lo, hi); }, f);
     }
 
     // Narrow phase.
@@ -211,8 +211,7 @@ private:
     // Islands and sleeping (engine/islands.cpp).
     bool same_island(std::size_t i, std::size_t j) const;
     void settle(const std::vector<std::size_t>& reached, double t);
-    void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members,
-                      double t);
+    void solve_island(std::vector<Contact>* contacts, const std::vector<std::size_t>& members, double t);
 
     // Stepped islands (engine/stepped.cpp).
     bool may_step(std::size_t i) const;
@@ -221,10 +220,10 @@ private:
         return (steps_.stepped[i] || steps_.stepped[j]) && (steps_.stepped[i] || bodies_[i].is_static) &&
                (steps_.stepped[j] || bodies_[j].is_static);
     }
-    void join(std::size_t i, double t);  // body i is stepped from t on (a step is taken at t)
-    void wake(std::size_t i);            // a sleeping stepped body moves again (a step is taken)
+    void join(std::size_t i, double t);                         // body i is stepped from t on (a step is taken at t)
+    void wake(std::size_t i);                                   // a sleeping stepped body moves again (a step is taken)
     void count_impact(std::size_t a, std::size_t b, double t);  // stepping = auto's rule
-    double surface_speed(std::size_t i) const;  // |v| + |w| R
+    double surface_speed(std::size_t i) const;                  // |v| + |w| R
     // A step from t of every stepped body awake (all), or (a step taken again between two
     // steps, `within` a substep) of the islands of the bodies in steps_.reseed, predicted again.
     void step_islands(double t, std::vector<Event<D>>* events, bool within);
@@ -278,7 +277,7 @@ private:
         std::uint32_t mark_id = 0;
         std::vector<std::uint32_t> searched;  // contacts_of() ran for it in this search
         std::uint32_t search = 0;
-        std::vector<std::size_t> parent;  // union-find of settle() and step_islands()
+        std::vector<std::size_t> parent;                  // union-find of settle() and step_islands()
         std::vector<typename Event<D>::Velocity> before;  // resolve(): velocities before
     } scratch_;
 

@@ -53,9 +53,7 @@ void World1::update_support() {
     }
 }
 
-double World1::right_face(std::size_t i) const {
-    return bodies_[i].position + 0.5 * scene_.bodies[i].length;
-}
+double World1::right_face(std::size_t i) const { return bodies_[i].position + 0.5 * scene_.bodies[i].length; }
 
 double World1::gap(std::size_t i, std::size_t j) const {
     return (bodies_[j].position - 0.5 * scene_.bodies[j].length) - right_face(i);
@@ -105,8 +103,8 @@ void World1::advance_to(double target, std::vector<Event1>* events, const Impact
         if (on_impact && events->size() > recorded) on_impact(time_);
         update_support();
         if (events->size() - start > kMaxEventsPerAdvance)
-            throw std::runtime_error("more than 10^6 impacts in one output step at t = " +
-                                     std::to_string(time_) + " s");
+            throw std::runtime_error("more than 10^6 impacts in one output step at t = " + std::to_string(time_) +
+                                     " s");
         const double horizon = target - time_;
         if (horizon <= 0.0) return;
         double earliest = kNever;
@@ -129,8 +127,7 @@ void World1::resolve_contacts(std::vector<Event1>* events) {
     // floor and a falling block: each pass halves the approach). After 64 passes per block the
     // sequence has converged to round-off, and what little approach is left is solved in one
     // simultaneous step, the limit the sequence tends to.
-    const std::size_t sequential_passes =
-        scene_.policy == Policy::sequential ? 64 * bodies_.size() : 0;
+    const std::size_t sequential_passes = scene_.policy == Policy::sequential ? 64 * bodies_.size() : 0;
     std::size_t pass = 0;
     for (; pass < sequential_passes; ++pass)
         if (!resolve_sequential(events)) return;
@@ -142,9 +139,8 @@ void World1::resolve_contacts(std::vector<Event1>* events) {
 std::vector<std::size_t> World1::left_to_right() const {
     std::vector<std::size_t> order(bodies_.size());
     std::iota(order.begin(), order.end(), 0);
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-        return bodies_[a].position < bodies_[b].position;
-    });
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return bodies_[a].position < bodies_[b].position; });
     return order;
 }
 
@@ -155,10 +151,19 @@ bool World1::resolve_sequential(std::vector<Event1>* events) {
         const std::size_t L = order[k], R = order[k + 1];
         if (gap(L, R) > kTouch || bodies_[R].v - bodies_[L].v >= 0.0) continue;
         if (bodies_[L].is_static && bodies_[R].is_static) continue;
-        const Response1 r = frictionless(at_contact(bodies_[L]), at_contact(bodies_[R]), 1.0,
-                                         scene_.pair_restitution(L, R));
-        Event1 e{time_, L, R, right_face(L), r.P,
-                 bodies_[L].v, bodies_[R].v, r.va, r.vb, bodies_[L].position, bodies_[R].position};
+        const Response1 r =
+            frictionless(at_contact(bodies_[L]), at_contact(bodies_[R]), 1.0, scene_.pair_restitution(L, R));
+        Event1 e{time_,
+                 L,
+                 R,
+                 right_face(L),
+                 r.P,
+                 bodies_[L].v,
+                 bodies_[R].v,
+                 r.va,
+                 r.vb,
+                 bodies_[L].position,
+                 bodies_[R].position};
         bodies_[L].v = r.va;
         bodies_[R].v = r.vb;
         events->push_back(e);
@@ -230,8 +235,7 @@ bool World1::resolve_simultaneous(std::vector<Event1>* events) {
         const auto [L, R] = contacts[k];
         const double p = P[static_cast<Eigen::Index>(k)];
         if (p <= 0.0) continue;
-        events->push_back(Event1{time_, L, R, right_face(L),
-                                 p, v0[L], v0[R], bodies_[L].v, bodies_[R].v,
+        events->push_back(Event1{time_, L, R, right_face(L), p, v0[L], v0[R], bodies_[L].v, bodies_[R].v,
                                  bodies_[L].position, bodies_[R].position});
         any = true;
     }

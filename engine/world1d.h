@@ -30,12 +30,12 @@
 namespace collide {
 
 struct Event1 {
-    double t = 0.0;               // s
-    std::size_t a = 0, b = 0;     // the left and the right block (indices into the scene)
-    double point = 0.0;           // m, where they touch
-    double impulse = 0.0;         // N s on b along +x (a receives the opposite)
+    double t = 0.0;            // s
+    std::size_t a = 0, b = 0;  // the left and the right block (indices into the scene)
+    double point = 0.0;        // m, where they touch
+    double impulse = 0.0;      // N s on b along +x (a receives the opposite)
     double va_before = 0.0, vb_before = 0.0, va_after = 0.0, vb_after = 0.0;  // m/s
-    double xa = 0.0, xb = 0.0;    // m: the blocks' centres at the instant
+    double xa = 0.0, xb = 0.0;                                                // m: the blocks' centres at the instant
 };
 
 class World1 {
@@ -67,12 +67,12 @@ public:
     bool resting(std::size_t i) const { return supported_[i]; }
 
 private:
-    double right_face(std::size_t i) const;                  // m: where a block meets its right neighbour
-    double gap(std::size_t i, std::size_t j) const;          // right i's face to left j's face
+    double right_face(std::size_t i) const;          // m: where a block meets its right neighbour
+    double gap(std::size_t i, std::size_t j) const;  // right i's face to left j's face
     double first_contact(std::size_t i, std::size_t j, double horizon) const;
     void drift(double dt);
-    void update_support();                                   // sets supported_ (see above)
-    double acceleration(std::size_t i) const;                // m/s^2 along x
+    void update_support();                           // sets supported_ (see above)
+    double acceleration(std::size_t i) const;        // m/s^2 along x
     std::vector<std::size_t> left_to_right() const;  // block indices by position
     void resolve_contacts(std::vector<Event1>* events);
     bool resolve_sequential(std::vector<Event1>* events);

@@ -56,8 +56,7 @@ void run(const Scene& scene) {
         }
         for (const auto& b : world.bodies())
             if (!b.state_finite())
-                throw std::logic_error("a body's state is not finite at t = " +
-                                       std::to_string(times[k]) + " s");
+                throw std::logic_error("a body's state is not finite at t = " + std::to_string(times[k]) + " s");
         // What `collide step --json` prints of it (formatting reads every field).
         (void)state_json(scene, times[k], world.bodies());
     }

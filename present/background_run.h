@@ -168,9 +168,9 @@ private:
     }
 
     mutable std::mutex mutex_;
-    std::condition_variable wake_;  // the worker: a job to run, or stop
-    std::condition_variable done_;  // wait(): a job ended
-    std::optional<Task> pending_;   // the next job to run (the newest, when set)
+    std::condition_variable wake_;         // the worker: a job to run, or stop
+    std::condition_variable done_;         // wait(): a job ended
+    std::optional<Task> pending_;          // the next job to run (the newest, when set)
     std::shared_ptr<RunControl> running_;  // the job on the worker
     std::shared_ptr<RunControl> latest_;   // the newest job started and not cancelled
     std::optional<Outcome> outcome_;       // the newest job's, until taken

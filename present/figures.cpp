@@ -157,12 +157,13 @@ std::string annotations_json(const Scene& scene, const Figure* figure) {
     out << "  \"view\": \"" << (figure->panel.view == render::ViewKind::perspective ? "3d" : "2d") << "\",\n";
     out << "  \"panel_size\": [" << figure->panel.width << ", " << figure->panel.height << "],\n";
     out << "  \"times\": {";
-    for (int k = 0; k < 3; ++k) out << (k ? ", " : "") << "\"" << keys[k] << "\": " << notation::num_data(figure->times[k]);
+    for (int k = 0; k < 3; ++k)
+        out << (k ? ", " : "") << "\"" << keys[k] << "\": " << notation::num_data(figure->times[k]);
     out << "},\n  \"panels\": {";
     for (int k = 0; k < 3; ++k) {
         out << (k ? ",\n" : "\n") << "    \"" << keys[k] << "\": ";
-        render::write_annotations_json(out, figure->annotations[static_cast<std::size_t>(k)], scene.dimension,
-                                       names, 4);
+        render::write_annotations_json(out, figure->annotations[static_cast<std::size_t>(k)], scene.dimension, names,
+                                       4);
     }
     out << "\n  }\n}\n";
     return out.str();
@@ -193,9 +194,9 @@ void write_variants(render::GlContext& context, const std::vector<VariantRow>& r
         if (!panel.frame_bodies.empty()) panel.frame_bodies = m.focus;
         render::Renderer r(context, *row.scene, panel);
         r.prepare(three, m.states[1].impacts);
-        images.push_back(render::compose_figure(context, three_panels(r, m, figure.points), {row.label + ": before", "at collision", "after"},
-                                                time_notes(m, settings.time_decimals + 1), settings.height,
-                                                figure.stacked));
+        images.push_back(render::compose_figure(
+            context, three_panels(r, m, figure.points), {row.label + ": before", "at collision", "after"},
+            time_notes(m, settings.time_decimals + 1), settings.height, figure.stacked));
     }
     write_png(out, "variants.png", render::stack_vertically(images));
 }

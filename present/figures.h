@@ -50,10 +50,10 @@ constexpr int kWideFigureWidth = 1200;
 struct Figure {
     std::vector<render::Image> panels;
     std::vector<render::Annotations> annotations;  // what each panel drew
-    double times[3] = {0, 0, 0};                    // s: the panels' moments
+    double times[3] = {0, 0, 0};                   // s: the panels' moments
     render::Image figure;
-    render::RenderSettings panel;  // the panels' settings (variants.png uses them too)
-    bool stacked = false;          // the panels one above the other (variants.png too)
+    render::RenderSettings panel;           // the panels' settings (variants.png uses them too)
+    bool stacked = false;                   // the panels one above the other (variants.png too)
     std::vector<render::PointMark> points;  // the scene's marked points (variants.png too)
 };
 

@@ -24,7 +24,8 @@ struct Choice {
     T value;
 };
 
-const Choice<Quality> kQualities[] = {{"low", Quality::low()}, {"medium", Quality::medium()}, {"high", Quality::high()}};
+const Choice<Quality> kQualities[] = {
+    {"low", Quality::low()}, {"medium", Quality::medium()}, {"high", Quality::high()}};
 const Choice<render::ViewKind> kViews[] = {{"2d", render::ViewKind::diagram}, {"3d", render::ViewKind::perspective}};
 const Choice<std::optional<render::VideoFormat>> kFormats[] = {
     {"png", std::nullopt}, {"mp4", render::VideoFormat::mp4}, {"gif", render::VideoFormat::gif}};
@@ -55,8 +56,8 @@ std::string VideoRequest::file_name() const {
 }
 
 const RenderChoices& render_choices() {
-    static const RenderChoices choices{names(kQualities), names(kViews), names(kFormats),
-                                       {std::begin(kBackends), std::end(kBackends)}};
+    static const RenderChoices choices{
+        names(kQualities), names(kViews), names(kFormats), {std::begin(kBackends), std::end(kBackends)}};
     return choices;
 }
 
@@ -71,8 +72,7 @@ bool parse_render_size(const std::string& text, int* width, int* height) {
         }
     int w = 0, h = 0;
     char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X'))
-        return false;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X')) return false;
     if (w < 16 || h < 16 || w > 8192 || h > 8192) return false;
     *width = w;
     *height = h;
@@ -116,8 +116,9 @@ std::optional<VideoRequest> read_format(const std::string& name) {
     VideoRequest video{**format, render::find_program("ffmpeg")};
     if (video.ffmpeg.empty())
         throw InputError(kCommand, {}, "--format",
-                         name + " is made by ffmpeg, which is not installed (Debian: "
-                                "apt-get install ffmpeg); --format png writes the frames alone");
+                         name +
+                             " is made by ffmpeg, which is not installed (Debian: "
+                             "apt-get install ffmpeg); --format png writes the frames alone");
     return video;
 }
 

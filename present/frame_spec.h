@@ -24,9 +24,9 @@ struct Quality {
     // llvmpipe, so the 2D view never uses it. The 3D view's shaded bodies need it.
     int samples_2d = 0;
     int samples_3d = 4;
-    bool smooth = true;                        // ImGui edge anti-aliasing
-    render::PngOptions png{1, true, false};    // zlib level 1, no filter
-    int encoders = 1;                          // PNG threads
+    bool smooth = true;                      // ImGui edge anti-aliasing
+    render::PngOptions png{1, true, false};  // zlib level 1, no filter
+    int encoders = 1;                        // PNG threads
 
     static Quality low();
     static Quality medium();
@@ -44,7 +44,7 @@ struct FrameSpec {
 // --format mp4 or gif: the video ffmpeg makes of the frames.
 struct VideoRequest {
     render::VideoFormat format = render::VideoFormat::mp4;
-    std::string ffmpeg;  // its path, found on $PATH when the options were read
+    std::string ffmpeg;             // its path, found on $PATH when the options were read
     std::string file_name() const;  // "animation.mp4" or "animation.gif"
 };
 

@@ -206,7 +206,8 @@ struct VerbRule {
 };
 
 const VerbRule kVerbs[] = {
-    {"set", 2, 5, "set e X | set mu X | set model NAME | set policy NAME | set BODY mass X | set BODY size FACTOR | set BODY v X [Y [Z]] | set BODY w W | set BODY w X Y Z"},
+    {"set", 2, 5,
+     "set e X | set mu X | set model NAME | set policy NAME | set BODY mass X | set BODY size FACTOR | set BODY v X [Y [Z]] | set BODY w W | set BODY w X Y Z"},
     {"play", 0, 0, "play"},
     {"pause", 0, 0, "pause"},
     {"step", 0, 1, "step [FRAMES]"},
@@ -264,22 +265,26 @@ std::vector<GuiAction> parse_gui_script_text(const std::string& text, const std:
             for (std::size_t k = 0; k < a.args.size(); ++k) numeric.push_back(k);
         if (a.verb == "set") {
             if (a.args[0] == "e" || a.args[0] == "mu") {
-                if (n != 2) throw InputError(name, {line_no, 1}, "set " + a.args[0], "expected: set " + a.args[0] + " X");
+                if (n != 2)
+                    throw InputError(name, {line_no, 1}, "set " + a.args[0], "expected: set " + a.args[0] + " X");
                 numeric.push_back(1);
             } else if (a.args[0] == "model" || a.args[0] == "policy") {
-                if (n != 2) throw InputError(name, {line_no, 1}, "set " + a.args[0], "expected: set " + a.args[0] + " NAME");
+                if (n != 2)
+                    throw InputError(name, {line_no, 1}, "set " + a.args[0], "expected: set " + a.args[0] + " NAME");
                 Model m;
                 if (a.args[0] == "model" && !parse_model(a.args[1], &m))
                     throw InputError(name, {line_no, 1}, "set model",
-                                     "expected frictionless, coulomb, matrix, stick, page-listing or routh, got '" + a.args[1] + "'");
+                                     "expected frictionless, coulomb, matrix, stick, page-listing or routh, got '" +
+                                         a.args[1] + "'");
                 if (a.args[0] == "policy" && a.args[1] != "sequential" && a.args[1] != "simultaneous")
                     throw InputError(name, {line_no, 1}, "set policy",
                                      "expected sequential or simultaneous, got '" + a.args[1] + "'");
             } else {
                 const std::string& what = a.args[1];
                 if (what != "mass" && what != "v" && what != "w" && what != "size")
-                    throw InputError(name, {line_no, 1}, "set " + a.args[0],
-                                     "expected e, mu, model, policy, or a body's mass, size, v or w; got '" + what + "'");
+                    throw InputError(
+                        name, {line_no, 1}, "set " + a.args[0],
+                        "expected e, mu, model, policy, or a body's mass, size, v or w; got '" + what + "'");
                 if ((what == "mass" || what == "size") && n != 3)
                     throw InputError(name, {line_no, 1}, "set " + a.args[0] + " " + what,
                                      "expected: set " + a.args[0] + " " + what + (what == "size" ? " FACTOR" : " X"));
@@ -300,7 +305,8 @@ std::vector<GuiAction> parse_gui_script_text(const std::string& text, const std:
         if (a.verb == "toggle") {
             GuiToggles probe;
             if (!probe.toggle(a.args[0]))
-                throw InputError(name, {line_no, 1}, "toggle", std::string("expected: ") + rule->usage + ", got '" + a.args[0] + "'");
+                throw InputError(name, {line_no, 1}, "toggle",
+                                 std::string("expected: ") + rule->usage + ", got '" + a.args[0] + "'");
         }
         actions.push_back(std::move(a));
     }
@@ -318,7 +324,8 @@ std::vector<GuiAction> parse_gui_script(const std::string& path) {
 bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* model, GuiToggles* toggles) {
     const auto num = [&](std::size_t k) { return std::stod(a.args[k]); };
     const auto fail_if_refused = [&](const std::string& key) {
-        if (!model->error().empty()) throw InputError(file, {a.line, 1}, key, "the world refuses the run: " + model->error());
+        if (!model->error().empty())
+            throw InputError(file, {a.line, 1}, key, "the world refuses the run: " + model->error());
     };
     const std::string& v = a.verb;
     if (v == "set") {
@@ -342,11 +349,13 @@ bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* mo
             while (i < bodies.size() && bodies[i].name != what) ++i;
             if (i == bodies.size()) throw InputError(file, {a.line, 1}, "set", "no body named '" + what + "'");
             if (bodies[i].is_static())
-                throw InputError(file, {a.line, 1}, "set " + what, "'" + what + "' is static: it has no mass or velocity to set");
+                throw InputError(file, {a.line, 1}, "set " + what,
+                                 "'" + what + "' is static: it has no mass or velocity to set");
             const int d = model->scene().dimension;
             const std::size_t n = a.args.size() - 2;
             if (a.args[1] == "mass") {
-                if (!(num(2) > 0)) throw InputError(file, {a.line, 1}, "set " + what + " mass", "expected a mass > 0 kg");
+                if (!(num(2) > 0))
+                    throw InputError(file, {a.line, 1}, "set " + what + " mass", "expected a mass > 0 kg");
                 model->set_mass(i, num(2));
             } else if (a.args[1] == "size") {
                 if (!(num(2) >= 0.1 && num(2) <= 10))
@@ -354,17 +363,19 @@ bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* mo
                 model->scale_size(i, num(2));
             } else if (a.args[1] == "v") {
                 if (static_cast<int>(n) != d)
-                    throw InputError(file, {a.line, 1}, "set " + what + " v",
-                                     d == 1 ? std::string("expected one number in 1D (m/s along x)")
-                                            : "expected " + std::to_string(d) + " numbers in " + std::to_string(d) + "D (m/s)");
+                    throw InputError(
+                        file, {a.line, 1}, "set " + what + " v",
+                        d == 1 ? std::string("expected one number in 1D (m/s along x)")
+                               : "expected " + std::to_string(d) + " numbers in " + std::to_string(d) + "D (m/s)");
                 Vec3 vel = Vec3::Zero();
                 for (std::size_t k = 0; k < n; ++k) vel[static_cast<int>(k)] = num(2 + k);
                 model->set_velocity(i, vel);
             } else {
                 if (d == 1) throw InputError(file, {a.line, 1}, "set " + what + " w", "bodies on a line do not spin");
                 if (static_cast<int>(n) != (d == 2 ? 1 : 3))
-                    throw InputError(file, {a.line, 1}, "set " + what + " w",
-                                     d == 2 ? "expected one number (rad/s, counter-clockwise)" : "expected 3 numbers (rad/s)");
+                    throw InputError(
+                        file, {a.line, 1}, "set " + what + " w",
+                        d == 2 ? "expected one number (rad/s, counter-clockwise)" : "expected 3 numbers (rad/s)");
                 model->set_spin(i, d == 2 ? Vec3(0, 0, num(2)) : Vec3(num(2), num(3), num(4)));
             }
         }

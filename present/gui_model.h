@@ -47,13 +47,13 @@ public:
     void set_friction(double mu);
     void set_model(Model m);
     void set_policy(Policy p);
-    void set_mass(std::size_t body, double mass);  // the inertia scales with it
+    void set_mass(std::size_t body, double mass);        // the inertia scales with it
     void set_velocity(std::size_t body, const Vec3& v);  // 1D: x; 2D: x, y
     void set_spin(std::size_t body, const Vec3& w);      // 2D: z; 3D: the vector (rad/s)
     // The body's shape scaled by `factor` about its centre (mass kept, inertia x factor^2).
     // Refused (error(), nothing changed) when it would then overlap another body.
     void scale_size(std::size_t body, double factor);
-    void reset();                                        // back to the scene as loaded
+    void reset();  // back to the scene as loaded
     const std::string& error() const { return error_; }
 
     // The re-run under way (Rerun::background). running(): an edit's run has not finished, or
@@ -76,12 +76,12 @@ public:
     std::size_t index() const { return index_; }
     double time() const { return run_.frames[index_].t; }
     void seek_index(std::size_t k);
-    void seek_time(double t);   // the last frame at or before t
-    void step(long frames);     // forward (or back, when negative), stopping at the ends
-    bool next_collision();      // the first frame at or after the next collision; false if none
+    void seek_time(double t);  // the last frame at or before t
+    void step(long frames);    // forward (or back, when negative), stopping at the ends
+    bool next_collision();     // the first frame at or after the next collision; false if none
     // Playing: advances by `wall_seconds` x speed of simulated time; stops at the end.
     bool playing = false;
-    double speed = 1.0;         // 1: real time; 0.25: slow motion
+    double speed = 1.0;  // 1: real time; 0.25: slow motion
     void advance(double wall_seconds);
 
     // The frame as drawn: trails, and the collisions since the previous frame (as the

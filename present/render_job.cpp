@@ -62,11 +62,11 @@ WorkedExample worked_example(const Scene& scene, const CollisionInstant& c) {
     w.problem = collision_problem(scene, c);
     w.solution = solve(w.problem);
     std::string model = model_name(w.problem.model);
-    if (w.problem.model == Model::routh) model += std::string(", ") + restitution_law_name(w.problem.restitution_law) + "'s law";
+    if (w.problem.model == Model::routh)
+        model += std::string(", ") + restitution_law_name(w.problem.restitution_law) + "'s law";
     char heading[200];
-    std::snprintf(heading, sizeof heading, "Collision of %s and %s  (%s, e = %s)",
-                  scene.bodies[c.a].name.c_str(), scene.bodies[c.b].name.c_str(), model.c_str(),
-                  notation::num_text(w.problem.restitution).c_str());
+    std::snprintf(heading, sizeof heading, "Collision of %s and %s  (%s, e = %s)", scene.bodies[c.a].name.c_str(),
+                  scene.bodies[c.b].name.c_str(), model.c_str(), notation::num_text(w.problem.restitution).c_str());
     w.formula.heading = heading;
     // The last two steps of the response model: each its formula, then its lines (the numbers).
     const std::vector<WorkedStep> steps = worked_steps(w.problem, w.solution);
@@ -90,11 +90,9 @@ void prepare_directory(const RenderRequest& rq) {
     std::error_code ec;
     const fs::path dir(rq.out_dir);
     if (fs::exists(dir, ec)) {
-        if (!fs::is_directory(dir, ec))
-            throw InputError(rq.out_dir, {}, "", "exists and is not a directory");
+        if (!fs::is_directory(dir, ec)) throw InputError(rq.out_dir, {}, "", "exists and is not a directory");
         if (!fs::is_empty(dir, ec) && !rq.force)
-            throw InputError(rq.out_dir, {}, "",
-                             "directory is not empty (use --force to write into it)");
+            throw InputError(rq.out_dir, {}, "", "directory is not empty (use --force to write into it)");
     }
     fs::create_directories(dir / "frames", ec);
     if (ec) throw std::runtime_error(rq.out_dir + ": cannot create directory: " + ec.message());
@@ -110,8 +108,9 @@ void prepare_directory(const RenderRequest& rq) {
             (name.rfind("annotations-", 0) == 0 && e.path().extension() == ".json"))
             fs::remove(e.path(), ec);
     }
-    for (const char* name : {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "variants.png", "worked-example.md",
-                             "lesson.md", "penalty.svg", "penalty-overlap.svg", "penalty.csv", "animation.mp4", "animation.gif"})
+    for (const char* name :
+         {"before.png", "at.png", "after.png", "figure.png", "thumb.png", "variants.png", "worked-example.md",
+          "lesson.md", "penalty.svg", "penalty-overlap.svg", "penalty.csv", "animation.mp4", "animation.gif"})
         fs::remove(dir / name, ec);
 }
 
@@ -134,8 +133,8 @@ std::string variants_markdown(const Scene& scene, const std::vector<RenderReport
             continue;
         }
         const CollisionInstant& c = *v.first;
-        md << "| " << v.label << " (" << scene.bodies[c.a].name << " on " << scene.bodies[c.b].name
-           << ") | " << V(c.impulse) << " | " << V(c.va_after) << " | " << V(c.vb_after) << " | "
+        md << "| " << v.label << " (" << scene.bodies[c.a].name << " on " << scene.bodies[c.b].name << ") | "
+           << V(c.impulse) << " | " << V(c.va_after) << " | " << V(c.vb_after) << " | "
            << energy_lost_text(v.ke_before, v.ke_after) << " |\n";
     }
     return md.str();
@@ -171,7 +170,9 @@ struct Ran {
 };
 
 // The collisions a lesson's figures show, for the record to keep wherever they fall.
-std::vector<RecordOptions::Keep> figure_keeps(const Loaded& in) { return figure_keeps(in.lesson ? &*in.lesson : nullptr); }
+std::vector<RecordOptions::Keep> figure_keeps(const Loaded& in) {
+    return figure_keeps(in.lesson ? &*in.lesson : nullptr);
+}
 
 Ran run_stage(const Loaded& in) {
     Ran out{run_scene(in.scene, in.times, nullptr, figure_keeps(in)), {}, std::nullopt};
@@ -189,7 +190,7 @@ struct Shot {
     std::string caption;
 };
 struct Analysis {
-    std::optional<Moments> moments;               // figure.png's collision
+    std::optional<Moments> moments;  // figure.png's collision
     std::optional<WorkedExample> worked;
     std::string caption;                          // its [[figure]] caption, if any
     std::vector<Shot> more;                       // figure-2.png, ...: the lesson's next figures
@@ -207,7 +208,8 @@ void analyse_variants(const Loaded& in, const Moments& moments, Analysis* out) {
     const std::vector<CollisionPick> picks = lesson_picks(in);
     for (const auto& [label, s] : scenes) {
         // Each variant at its own collision: the one the lesson's first figure picks.
-        const std::optional<Moments> m = s == &in.scene ? moments : page_moments(*s, run_scene(*s, in.times, nullptr, figure_keeps(in)), picks);
+        const std::optional<Moments> m =
+            s == &in.scene ? moments : page_moments(*s, run_scene(*s, in.times, nullptr, figure_keeps(in)), picks);
         RenderReport::Variant result{label, std::nullopt, 0.0, 0.0};
         if (m) {
             result.first = m->instant;
@@ -233,8 +235,9 @@ Analysis analyse_stage(const Loaded& in, const SceneRun& run, bool variants = tr
             std::optional<Moments> m = collision_moments(in.scene, run, picks[k]);
             if (!m) {
                 const int n = pair_collisions(run, f.ia, f.ib);
-                const std::string times = n == 0 ? "never collide" : n == 1 ? "collide only once" :
-                                          "collide only " + std::to_string(n) + " times";
+                const std::string times = n == 0   ? "never collide"
+                                          : n == 1 ? "collide only once"
+                                                   : "collide only " + std::to_string(n) + " times";
                 throw InputError(in.lesson->file, f.pos, f.key,
                                  "'" + f.a + "' and '" + f.b + "' " + times + " in the run, so there is no collision " +
                                      std::to_string(f.collision) + " to show");
@@ -265,10 +268,10 @@ void write_data_files(const RenderRequest& rq, const Scene& scene, const SceneRu
     render::write_file_atomic(rq.out_dir + "/data.csv", data.csv);
     render::write_file_atomic(rq.out_dir + "/events.csv", data.events_csv);
     std::ostringstream json;
-    json << "{\"title\": " << nlohmann::json(scene.title).dump()
-         << ", \"dimension\": " << scene.dimension << ", \"fps\": " << num(rq.frame.fps)
-         << ",\n\"frames\": [\n" << data.json_frames << "\n],\n\"events\": [\n" << data.json_events
-         << "\n]}\n";
+    json << "{\"title\": " << nlohmann::json(scene.title).dump() << ", \"dimension\": " << scene.dimension
+         << ", \"fps\": " << num(rq.frame.fps) << ",\n\"frames\": [\n"
+         << data.json_frames << "\n],\n\"events\": [\n"
+         << data.json_events << "\n]}\n";
     render::write_file_atomic(rq.out_dir + "/data.json", json.str());
 }
 
@@ -370,8 +373,8 @@ std::string write_video(const RenderRequest& rq, std::ostream& err) {
     return name;
 }
 
-Written write_stage(const RenderRequest& rq, const Loaded& in, const Ran& ran, const Analysis& a,
-                    std::ostream& err, const StopRequested& stop) {
+Written write_stage(const RenderRequest& rq, const Loaded& in, const Ran& ran, const Analysis& a, std::ostream& err,
+                    const StopRequested& stop) {
     prepare_directory(rq);
     if (!a.moments)
         err << "collide render: no collision in " << in.scene.duration
@@ -411,17 +414,19 @@ RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, 
                              "figure-" + std::to_string(k + 2) + ".png"});
         shown.push_back(s.moments.event);
     }
-    std::visit([&](const auto& rec) {
-        for (std::size_t k = 0; k < rec.events.size() && r.later.size() < RenderReport::kLaterCollisions; ++k) {
-            if (std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
-            // In the lesson's roles, as its figures name the pair.
-            CollisionInstant c = collision_instant(rec.events[k]);
-            if (r.lesson)
-                for (const LessonFigure& f : r.lesson->figures) c = with_roles(c, f.ia, f.ib);
-            WorkedExample w = worked_example(r.scene, c);
-            r.later.push_back({c, std::move(w.problem), std::move(w.solution), std::move(w.formula.note)});
-        }
-    }, ran.run.record);
+    std::visit(
+        [&](const auto& rec) {
+            for (std::size_t k = 0; k < rec.events.size() && r.later.size() < RenderReport::kLaterCollisions; ++k) {
+                if (std::find(shown.begin(), shown.end(), k) != shown.end()) continue;
+                // In the lesson's roles, as its figures name the pair.
+                CollisionInstant c = collision_instant(rec.events[k]);
+                if (r.lesson)
+                    for (const LessonFigure& f : r.lesson->figures) c = with_roles(c, f.ia, f.ib);
+                WorkedExample w = worked_example(r.scene, c);
+                r.later.push_back({c, std::move(w.problem), std::move(w.solution), std::move(w.formula.note)});
+            }
+        },
+        ran.run.record);
     r.variants = std::move(a.variants);
     for (const ImpactMark& im : ran.run.impacts) r.collision_times.push_back(im.t);
     for (const FrameState& f : ran.run.frames) {
@@ -464,8 +469,7 @@ std::optional<std::vector<std::uint8_t>> figure_png(const FrameSpec& frame, rend
     std::unique_ptr<render::GlContext> context = render::create_gl_context(backend);
     const render::RenderSettings settings = frame_settings(frame, in.scene, in.view, &a.worked->formula);
     const Figure figure = make_figure(*context, CollisionShots{in.scene, in.view, run, *a.moments}, settings);
-    return render::encode_png(figure.figure.width, figure.figure.height, figure.figure.rgba.data(),
-                              frame.quality.png);
+    return render::encode_png(figure.figure.width, figure.figure.height, figure.figure.rgba.data(), frame.quality.png);
 }
 
 std::optional<render::FormulaText> first_collision_formula(const Scene& scene, const SceneRun& run) {

@@ -47,12 +47,12 @@ struct RenderReport {
     Scene scene;
     SceneView view;
     std::optional<Lesson> lesson;
-    std::vector<LessonAnswer> answers;         // a lesson's questions, in order
-    std::optional<SolveProblem> problem;       // the first collision's worked example
+    std::vector<LessonAnswer> answers;    // a lesson's questions, in order
+    std::optional<SolveProblem> problem;  // the first collision's worked example
     std::optional<Solution> solution;
     std::optional<CollisionInstant> first_collision;
-    std::string world_note;  // when the world resolved several points there (the formula box's note)
-    std::vector<double> collision_times;       // s, every collision of the run
+    std::string world_note;               // when the world resolved several points there (the formula box's note)
+    std::vector<double> collision_times;  // s, every collision of the run
     // The run's collisions the figures do not show (at most kLaterCollisions), each worked
     // out as those are: the site explains them below them.
     struct Later {
@@ -82,17 +82,17 @@ struct RenderReport {
         double ke_before = 0.0, ke_after = 0.0;  // J, the two bodies of that collision
     };
     std::vector<Variant> variants;
-    std::optional<PenaltyStudy> penalty;       // a lesson's [penalty] (penalty.svg, penalty.csv)
-    std::vector<double> t;                     // every frame's time (s)
-    std::vector<render::FrameTotals> totals;   // and its energies and momentum
+    std::optional<PenaltyStudy> penalty;      // a lesson's [penalty] (penalty.svg, penalty.csv)
+    std::vector<double> t;                    // every frame's time (s)
+    std::vector<render::FrameTotals> totals;  // and its energies and momentum
     // For the plots: the frames' totals with the exact ones just before and just after each
     // recorded collision instant inserted (two points at its time), in time order.
     std::vector<double> plot_t;
     std::vector<render::FrameTotals> plot_totals;
     long frames = 0;
     int width = 0, height = 0;
-    double seconds = 0.0;                      // rendering and writing the frames
-    std::string video;                         // "animation.mp4" / ".gif", or ""
+    double seconds = 0.0;  // rendering and writing the frames
+    std::string video;     // "animation.mp4" / ".gif", or ""
 };
 
 // Renders `request.scenario` into request.out_dir as the command does, without the summary:

@@ -89,8 +89,8 @@ std::string events_csv_header(int d) {
 
 std::string events_csv_row(const Scene& s, const Event1& e) {
     return num(e.t) + "," + csv_field(s.bodies[e.a].name) + "," + csv_field(s.bodies[e.b].name) + "," + num(e.point) +
-           "," + num(e.impulse) + "," + num(e.va_before) + "," + num(e.vb_before) + "," +
-           num(e.va_after) + "," + num(e.vb_after) + "\n";
+           "," + num(e.impulse) + "," + num(e.va_before) + "," + num(e.vb_before) + "," + num(e.va_after) + "," +
+           num(e.vb_after) + "\n";
 }
 template <int D>
 std::string events_csv_row(const Scene& s, const Event<D>& e) {
@@ -103,8 +103,7 @@ std::string events_csv_row(const Scene& s, const Event<D>& e) {
 double size_of(const Scene& scene, std::size_t i) {
     const SceneBody& b = scene.bodies[i];
     if (scene.dimension == 1) return b.length;
-    if (scene.dimension == 2)
-        return b.shape2.kind == Shape2::Kind::half_plane ? 0.0 : 2.0 * bounding_radius(b.shape2);
+    if (scene.dimension == 2) return b.shape2.kind == Shape2::Kind::half_plane ? 0.0 : 2.0 * bounding_radius(b.shape2);
     return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
 }
 
@@ -267,8 +266,8 @@ render::ImpactMark with_roles(const render::ImpactMark& mark, std::size_t a, std
     return out;
 }
 
-SceneRun run_scene(const Scene& scene, const std::vector<double>& times,
-                   const std::function<void(double t)>& on_sample, const std::vector<RecordOptions::Keep>& keep) {
+SceneRun run_scene(const Scene& scene, const std::vector<double>& times, const std::function<void(double t)>& on_sample,
+                   const std::vector<RecordOptions::Keep>& keep) {
     SceneRun run;
     RecordOptions options;
     options.on_sample = on_sample;

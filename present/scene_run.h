@@ -45,12 +45,12 @@ DataFiles data_files(const Scene& scene, const SceneRun& run);
 // the run). The before and after states keep those samples' poses but carry the velocities
 // just before and just after the impacts, so that the figure's numbers are the instant's.
 struct Moments {
-    double before = 0, at = 0, after = 0;   // s
-    render::FrameState states[3];           // at those times; states[1] has the instant's impacts
-    CollisionInstant instant;               // the collision, the bodies where they touch
-    std::size_t event = 0;                  // its (first) event's index in the run
-    std::vector<std::size_t> focus;         // a picked pair's two bodies (their arrows only);
-                                            // empty for a whole instant (every body's)
+    double before = 0, at = 0, after = 0;  // s
+    render::FrameState states[3];          // at those times; states[1] has the instant's impacts
+    CollisionInstant instant;              // the collision, the bodies where they touch
+    std::size_t event = 0;                 // its (first) event's index in the run
+    std::vector<std::size_t> focus;        // a picked pair's two bodies (their arrows only);
+                                           // empty for a whole instant (every body's)
 };
 std::optional<Moments> first_moments(const Scene& scene, const SceneRun& run);
 

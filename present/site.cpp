@@ -29,7 +29,8 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         // first frame.
         const fs::path lesson_dir = dir / L.id;
         if (!fs::exists(lesson_dir / "thumb.png") && fs::exists(lesson_dir / "frames/frame_00000.png")) {
-            const render::Image thumb = render::shrink(render::read_png((lesson_dir / "frames/frame_00000.png").string()), 480);
+            const render::Image thumb =
+                render::shrink(render::read_png((lesson_dir / "frames/frame_00000.png").string()), 480);
             render::write_png_atomic((lesson_dir / "thumb.png").string(), thumb.width, thumb.height, thumb.rgba.data());
         }
         b.thumb = fs::exists(lesson_dir / "thumb.png");
@@ -55,8 +56,9 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         }
         render::write_file_atomic((lesson_dir / "energy.svg").string(),
                                   svg_plot("Energy (J)", r.plot_t, energy, r.collision_times, L.scene.duration));
-        render::write_file_atomic((lesson_dir / "momentum.svg").string(),
-                                  svg_plot("Momentum (kg m/s)", r.plot_t, momentum, r.collision_times, L.scene.duration));
+        render::write_file_atomic(
+            (lesson_dir / "momentum.svg").string(),
+            svg_plot("Momentum (kg m/s)", r.plot_t, momentum, r.collision_times, L.scene.duration));
         built.push_back(std::move(b));
         if (progress)
             progress({k + 1, rq.lessons.size(), L.id,
@@ -66,9 +68,9 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         if (built[k].try_it)
             render::write_file_atomic((dir / built[k].lesson.id / "try-it-lesson.js").string(),
                                       html::try_it_data_js(built[k].lesson, palette_json()));
-        render::write_file_atomic((dir / built[k].lesson.id / "index.html").string(),
-                                  lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr,
-                                              k + 1 < built.size() ? &built[k + 1] : nullptr));
+        render::write_file_atomic(
+            (dir / built[k].lesson.id / "index.html").string(),
+            lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr, k + 1 < built.size() ? &built[k + 1] : nullptr));
     }
     render::write_file_atomic((dir / "index.html").string(), index_page(built));
     render::write_file_atomic((dir / "style.css").string(), std::string(assets::site_style_css));

@@ -54,9 +54,9 @@ std::string figure_alt(const SolveProblem& P, const Solution& S, double t) {
     std::string s = "Before, at and after the collision at t = " + sig3(t) + " s. Before: " + who(P.a) + " " +
                     motion_words(P.a.b3.v, P.a.b3.w, d) + "; " + who(P.b) + " " + motion_words(P.b.b3.v, P.b.b3.w, d) +
                     ". At the collision the impulse on " + P.b.name + " is " +
-                    (d == 1 ? sig3(S.P.x()) : sig3(S.P.norm())) + " N s" +
-                    (d == 1 ? " along +x" : "") + "; " + P.a.name + " receives the opposite. After: " + P.a.name + " " +
-                    motion_words(S.va, S.wa, d) + "; " + P.b.name + " " + motion_words(S.vb, S.wb, d) + ".";
+                    (d == 1 ? sig3(S.P.x()) : sig3(S.P.norm())) + " N s" + (d == 1 ? " along +x" : "") + "; " +
+                    P.a.name + " receives the opposite. After: " + P.a.name + " " + motion_words(S.va, S.wa, d) + "; " +
+                    P.b.name + " " + motion_words(S.vb, S.wb, d) + ".";
     return s;
 }
 
@@ -99,7 +99,8 @@ const char* kPlayer = R"(<div class="player noprint" role="group" aria-label="Pl
 
 // Printing the questions: for students (a space to write each answer in) or, ticked, the
 // teacher's copy with the answers.
-const char* kPrintChoice = R"(<p class="noprint print-choice"><label><input type="checkbox" id="print-answers"> Print with the answers (the teacher's copy)</label></p>
+const char* kPrintChoice =
+    R"(<p class="noprint print-choice"><label><input type="checkbox" id="print-answers"> Print with the answers (the teacher's copy)</label></p>
 <script>
 document.getElementById('print-answers').addEventListener('change', function (e) {
   document.body.classList.toggle('with-answers', e.target.checked);
@@ -119,7 +120,6 @@ std::string page_head(const std::string& title, const std::string& root) {
            "index.html\">Collide: lessons on collisions with rotation</a></header>\n<main>\n";
 }
 const char* kPageTail = "</main>\n</body>\n</html>\n";
-
 
 // ---- Questions ----
 
@@ -163,7 +163,8 @@ std::string answer_html(const LessonQuestion& q, const LessonAnswer* a) {
 // The question as asked: its text, the tolerance a number is marked to, its options.
 std::string question_html(const LessonQuestion& q, std::size_t qi) {
     std::string s = "<p class=\"ask\">" + math(q.text);
-    if (shows_tolerance(q)) s += " <span class=\"tolerance\">(to within " + escape(tolerance_text(q.tolerance)) + ")</span>";
+    if (shows_tolerance(q))
+        s += " <span class=\"tolerance\">(to within " + escape(tolerance_text(q.tolerance)) + ")</span>";
     s += "</p>\n";
     if (q.has_choices()) s += choices_html(q, qi);
     return s;
@@ -188,7 +189,9 @@ std::string folded_answer(const LessonQuestion& q, const LessonAnswer* a, const 
 std::string predict_html(const Lesson& L, const std::vector<std::size_t>& predict) {
     std::ostringstream o;
     o << "<section class=\"predict\" aria-labelledby=\"predict-heading\">\n<h2 id=\"predict-heading\">Before you watch"
-         "</h2>\n" << kPrintChoice << "<p class=\"note\">Predict first: write down or choose what you expect, then look at the figure "
+         "</h2>\n"
+      << kPrintChoice
+      << "<p class=\"note\">Predict first: write down or choose what you expect, then look at the figure "
          "and the animation, and check your prediction below them.</p>\n<ol class=\"predictions\">\n";
     for (std::size_t i : predict) {
         const LessonQuestion& q = L.questions[i];
@@ -203,7 +206,8 @@ std::string predict_html(const Lesson& L, const std::vector<std::size_t>& predic
 }
 
 // "Check your prediction": after the animation, each prediction's answer, folded.
-std::string check_html(const Lesson& L, const std::vector<LessonAnswer>& answers, const std::vector<std::size_t>& predict) {
+std::string check_html(const Lesson& L, const std::vector<LessonAnswer>& answers,
+                       const std::vector<std::size_t>& predict) {
     std::ostringstream o;
     o << "<section class=\"check\">\n<h2>Check your predictions</h2>\n<ol class=\"predictions\">\n";
     for (std::size_t i : predict)
@@ -250,7 +254,6 @@ std::string palette_json() {
            ",\"normal\":" + css(c.normal) + ",\"fills\":[" + fills + "],\"darks\":[" + darks + "]}";
 }
 
-
 std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage* next) {
     const notation::StudentNumbers student;  // every number on it: 4 figures, no noise
     const Lesson& L = b.lesson;
@@ -276,14 +279,15 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
         const std::size_t k = static_cast<std::size_t>(&f - r.figures.data());
         const bool wide = k < b.figure_widths.size() && b.figure_widths[k] > kColumnWidth;
         const std::string alt = figure_alt(f.problem, f.solution, f.instant.t);
-        const std::string what = f.caption.empty() ? (&f == &r.figures.front() && L.figures.empty()
-                                                          ? "Before, at and after the first collision"
-                                                          : "Before, at and after the collision of " + f.problem.a.name +
-                                                                " (a) and " + f.problem.b.name + " (b)")
-                                                   : f.caption;
-        h << "<figure" << (wide ? " class=\"wide\"" : "") << "><a href=\"" << f.file << "\" title=\"Open the figure at full size\"><img src=\"" << f.file
-          << "\" alt=\"" << escape(alt) << "\"></a><figcaption>" << math(what) << " (t = " << escape(n(f.instant.t))
-          << " s), from the simulation.";
+        const std::string what = f.caption.empty()
+                                     ? (&f == &r.figures.front() && L.figures.empty()
+                                            ? "Before, at and after the first collision"
+                                            : "Before, at and after the collision of " + f.problem.a.name +
+                                                  " (a) and " + f.problem.b.name + " (b)")
+                                     : f.caption;
+        h << "<figure" << (wide ? " class=\"wide\"" : "") << "><a href=\"" << f.file
+          << "\" title=\"Open the figure at full size\"><img src=\"" << f.file << "\" alt=\"" << escape(alt)
+          << "\"></a><figcaption>" << math(what) << " (t = " << escape(n(f.instant.t)) << " s), from the simulation.";
         if (L.view.directions) h << " Grey arrows: the positive directions (velocities may be negative).";
         h << " Click it to see it at full size.</figcaption></figure>\n";
         return h.str();
@@ -313,9 +317,9 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
     if (r.problem && r.solution) {
         const SolveProblem& P = *r.problem;
         const Solution& S = *r.solution;
-        o << "<h2>" << (L.figures.empty() ? std::string("The first collision, worked out")
-                                          : "The collision of " + escape(P.a.name) + " and " + escape(P.b.name) +
-                                                ", worked out")
+        o << "<h2>"
+          << (L.figures.empty() ? std::string("The first collision, worked out")
+                                : "The collision of " + escape(P.a.name) + " and " + escape(P.b.name) + ", worked out")
           << "</h2>\n";
         // One notation on the page: our P is the page's J; j its size along n.
         o << "<p class=\"note\">Conventions: body a is " << escape(P.a.name) << " and body b is " << escape(P.b.name)
@@ -328,7 +332,8 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
         for (std::size_t k = 1; k < r.figures.size(); ++k) {
             const RenderReport::Shown& f = r.figures[k];
             o << "<h2>The collision of " << escape(f.problem.a.name) << " and " << escape(f.problem.b.name)
-              << ", worked out</h2>\n" << figure_html(f) << worked_html(f.problem, f.solution, f.world_note);
+              << ", worked out</h2>\n"
+              << figure_html(f) << worked_html(f.problem, f.solution, f.world_note);
         }
         if (!r.later.empty()) {
             // The run's later collisions, each worked out the same way, folded.
@@ -340,9 +345,9 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
             for (std::size_t i = 0; i < r.later.size(); ++i) {
                 const RenderReport::Later& c = r.later[i];
                 const int dc = c.problem.dimension;
-                o << "<details class=\"later\"><summary>" << escape(c.problem.a.name)
-                  << " and " << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t))
-                  << " s, impulse on " << escape(c.problem.b.name) << " "
+                o << "<details class=\"later\"><summary>" << escape(c.problem.a.name) << " and "
+                  << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t)) << " s, impulse on "
+                  << escape(c.problem.b.name) << " "
                   << escape(dc == 1 ? sig3(c.solution.P.x()) : sig3(c.solution.P.norm())) << " N s</summary>\n";
                 o << worked_html(c.problem, c.solution, c.world_note) << "</details>\n";
             }
@@ -361,7 +366,8 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
         row(P.a, S.va, S.wa);
         row(P.b, S.vb, S.wb);
         o << "</table>\n<table>\n<tr><th>totals</th><th>before</th><th>after</th></tr>\n"
-          << "<tr><td>momentum (kg m/s)</td><td>" << escape(vec(S.p_before, d)) << "</td><td>" << escape(vec(S.p_after, d)) << "</td></tr>\n";
+          << "<tr><td>momentum (kg m/s)</td><td>" << escape(vec(S.p_before, d)) << "</td><td>"
+          << escape(vec(S.p_after, d)) << "</td></tr>\n";
         if (d > 1)
             o << "<tr><td>angular momentum about the origin (kg m²/s)</td><td>" << escape(spin(S.L_before, d))
               << "</td><td>" << escape(spin(S.L_after, d)) << "</td></tr>\n";
@@ -399,9 +405,11 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
          "<a href=\"data.json\">data.json</a>, <a href=\"events.csv\">events.csv</a>.</p>\n";
     if (!asked.empty()) o << questions_html(L, r.answers, asked, predict.empty());
     o << "<nav class=\"pager\">";
-    o << (prev ? "<a href=\"../" + prev->lesson.id + "/index.html\">← " + math(prev->lesson.title) + "</a>" : "<span></span>");
+    o << (prev ? "<a href=\"../" + prev->lesson.id + "/index.html\">← " + math(prev->lesson.title) + "</a>"
+               : "<span></span>");
     o << "<a href=\"../index.html\">All lessons</a>";
-    o << (next ? "<a href=\"../" + next->lesson.id + "/index.html\">" + math(next->lesson.title) + " →</a>" : "<span></span>");
+    o << (next ? "<a href=\"../" + next->lesson.id + "/index.html\">" + math(next->lesson.title) + " →</a>"
+               : "<span></span>");
     o << "</nav>\n" << kPageTail;
     return o.str();
 }

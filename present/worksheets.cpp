@@ -39,8 +39,7 @@ std::string answer_text(const LessonAnswer& a, int dim) {
     std::string s;
     if (a.is_vector)
         s = "(" + sig4(a.vector.x()) + ", " + sig4(a.vector.y()) + (dim == 3 ? ", " + sig4(a.vector.z()) : "") + ")";
-    else
-        s = sig4(a.value);
+    else s = sig4(a.value);
     return a.unit.empty() ? s : s + " " + a.unit;
 }
 
@@ -121,14 +120,14 @@ std::string givens_html(const Lesson& L) {
               << "</td><td>" << given(b.body2.angle) << "</td><td>" << vec_text(lift(b.body2.v), 2) << "</td><td>"
               << given(b.body2.w);
         } else {
-            o << (fixed ? "fixed" : given(b.body3.mass)) << "</td><td>" << vec_text(b.body3.position, 3)
-              << "</td><td>" << vec_text(b.body3.v, 3) << "</td><td>" << vec_text(b.body3.w, 3);
+            o << (fixed ? "fixed" : given(b.body3.mass)) << "</td><td>" << vec_text(b.body3.position, 3) << "</td><td>"
+              << vec_text(b.body3.v, 3) << "</td><td>" << vec_text(b.body3.w, 3);
         }
         const toml::table* t = bodies && i < bodies->size() ? bodies->get(i)->as_table() : nullptr;
         o << "</td><td>" << (t ? size_text(*t) : "") << "</td></tr>\n";
     }
-    o << "</table>\n<p>Coefficient of restitution e = " << given(sc.restitution) << "; friction coefficient \u03bc = "
-      << given(sc.friction);
+    o << "</table>\n<p>Coefficient of restitution e = " << given(sc.restitution)
+      << "; friction coefficient \u03bc = " << given(sc.friction);
     for (const SceneBody& b : sc.bodies) {
         if (b.restitution) o << "; " << escape(b.name) << "'s own e = " << given(*b.restitution);
         if (b.friction) o << "; " << escape(b.name) << "'s own \u03bc = " << given(*b.friction);
@@ -158,7 +157,8 @@ std::string sheet_question(const Lesson& L, std::size_t i, const LessonAnswer& a
     } else if (q.has_quantity()) {
         char style[48];
         std::snprintf(style, sizeof style, " style=\"height: %.0fmm\"", work_mm);
-        o << "<div class=\"work\"" << style << "></div>\n<p class=\"blank\">Answer:<span class=\"line\"></span>" << math(a.unit) << "</p>\n";
+        o << "<div class=\"work\"" << style << "></div>\n<p class=\"blank\">Answer:<span class=\"line\"></span>"
+          << math(a.unit) << "</p>\n";
     } else {
         o << "<div class=\"tall\"></div>\n";
     }
@@ -184,7 +184,8 @@ std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets
     for (const StudentSheet& s : sheets) {
         o << "<section class=\"sheet\">\n<h1>" << math(L.title) << "</h1>\n<p class=\"student\">Student " << s.student
           << "</p>\n<p>Name: <span class=\"fill\"></span> Class: <span class=\"fill short\"></span></p>\n<h2>Given</h2>\n"
-          << givens_html(s.lesson) << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
+          << givens_html(s.lesson)
+          << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
         const double work = work_height(L, s.asked);
         for (std::size_t k = 0; k < s.asked.size(); ++k) o << sheet_question(L, s.asked[k], s.answers[k], work);
         o << "</section>\n";
@@ -201,10 +202,12 @@ std::string key_answer(const Lesson& L, std::size_t i, const LessonAnswer& a) {
     o << "<div class=\"q\"><p class=\"ask\"><b>" << question_number(L, i) << ".</b> " << math(q.text) << "</p>\n";
     if (q.has_quantity()) {
         o << "<p><span class=\"answer\">" << math(answer_text(a, L.scene.dimension)) << "</span>";
-        if (shows_tolerance(q)) o << " <span class=\"tolerance\">(right within " << escape(tolerance_text(q.tolerance)) << ")</span>";
+        if (shows_tolerance(q))
+            o << " <span class=\"tolerance\">(right within " << escape(tolerance_text(q.tolerance)) << ")</span>";
         o << "</p>\n";
     } else if (q.has_choices()) {
-        o << "<p><span class=\"answer\">Option " << option_number(static_cast<std::size_t>(q.correct - 1)) << ".</span></p>\n<ul>\n";
+        o << "<p><span class=\"answer\">Option " << option_number(static_cast<std::size_t>(q.correct - 1))
+          << ".</span></p>\n<ul>\n";
         for (std::size_t k = 0; k < q.choices.size(); ++k)
             o << "<li>(" << option_number(k) << ") " << (static_cast<int>(k) + 1 == q.correct ? "Right: " : "Wrong: ")
               << math(q.reasons[k]) << "</li>\n";
@@ -232,9 +235,9 @@ std::string key_page(const Lesson& L, const std::vector<StudentSheet>& sheets, s
         for (std::size_t k = 0; k < s.asked.size(); ++k) o << key_answer(L, s.asked[k], s.answers[k]);
         for (const WorkedCollision& w : s.worked) {
             o << "<h2>Collision " << w.event << " (" << escape(w.problem.a.name) << " and " << escape(w.problem.b.name)
-              << "), worked out</h2>\n<p class=\"note\">The normal n points from " << escape(w.problem.a.name) << " into "
-              << escape(w.problem.b.name) << "; the impulse P acts as +P on " << escape(w.problem.b.name) << " and \u2212P on "
-              << escape(w.problem.a.name) << "; SI units.</p>\n"
+              << "), worked out</h2>\n<p class=\"note\">The normal n points from " << escape(w.problem.a.name)
+              << " into " << escape(w.problem.b.name) << "; the impulse P acts as +P on " << escape(w.problem.b.name)
+              << " and \u2212P on " << escape(w.problem.a.name) << "; SI units.</p>\n"
               << html::worked_html(w.problem, w.solution, "");
         }
         o << "</section>\n";
@@ -261,8 +264,10 @@ std::string key_json(const Lesson& L, const std::vector<StudentSheet>& sheets, s
             } else {
                 value = a.value;
             }
-            answers.push_back({{"question", question_number(L, s.asked[k])}, {"quantity", quantity_name(*q.quantity)},
-                               {"value", value}, {"unit", a.unit}});
+            answers.push_back({{"question", question_number(L, s.asked[k])},
+                               {"quantity", quantity_name(*q.quantity)},
+                               {"value", value},
+                               {"unit", a.unit}});
         }
         students.push_back({{"student", s.student}, {"values", values}, {"answers", answers}});
     }
@@ -294,7 +299,8 @@ std::string index_page(const std::vector<Lesson>& lessons, int students) {
     o << page_head("Worksheets") << "<h1>Worksheets</h1>\n<p>" << students << " students each.</p>\n<ul>\n";
     for (const Lesson& L : lessons)
         o << "<li>" << math(L.title) << ": <a href=\"" << escape(L.id) << "/sheets.html\">sheets</a>, <a href=\""
-          << escape(L.id) << "/key.html\">answer key</a>, <a href=\"" << escape(L.id) << "/key.json\">key.json</a></li>\n";
+          << escape(L.id) << "/key.html\">answer key</a>, <a href=\"" << escape(L.id)
+          << "/key.json\">key.json</a></li>\n";
     o << "</ul>\n" << kPageTail;
     return o.str();
 }

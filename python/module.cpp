@@ -110,8 +110,9 @@ std::string solve_json(const py::object& source, const std::string& model) {
         SolveProblem p = py::isinstance<py::dict>(source) ? parse_solve_table(to_table(source, ""), kDictName)
                                                           : parse_solve_file(source.cast<std::string>());
         if (!model.empty() && !parse_model(model, &p.model))
-            throw InputError("", {}, "model",
-                             "expected frictionless, coulomb, matrix, stick, page-listing or routh, got '" + model + "'");
+            throw InputError(
+                "", {}, "model",
+                "expected frictionless, coulomb, matrix, stick, page-listing or routh, got '" + model + "'");
         return p;
     });
     std::ostringstream out;
@@ -177,7 +178,6 @@ PYBIND11_MODULE(_collide, m) {
     m.def("run_json", &collide::run_json, py::arg("source"), py::arg("installed_lessons") = "",
           "One run of a scene: the lines of `collide step --json` and of `--events --json`.");
     m.def("figure_png", &collide::figure_png_bytes, py::arg("source"), py::arg("installed_lessons") = "",
-          py::arg("size") = "720p", py::arg("view") = "", py::arg("quality") = "medium",
-          py::arg("backend") = "osmesa", py::arg("fps") = 30.0,
-          "collide render's figure.png of a scene: PNG bytes, or None when nothing collides.");
+          py::arg("size") = "720p", py::arg("view") = "", py::arg("quality") = "medium", py::arg("backend") = "osmesa",
+          py::arg("fps") = 30.0, "collide render's figure.png of a scene: PNG bytes, or None when nothing collides.");
 }

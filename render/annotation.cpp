@@ -7,21 +7,21 @@ namespace collide::render {
 
 const char* mark_name(Mark kind) {
     switch (kind) {
-    case Mark::body: return "body";
-    case Mark::plane: return "plane";
-    case Mark::velocity: return "velocity";
-    case Mark::spin: return "spin";
-    case Mark::impulse: return "impulse";
-    case Mark::normal: return "normal";
-    case Mark::lever_arm: return "lever_arm";
-    case Mark::contact: return "contact";
-    case Mark::direction: return "direction";
-    case Mark::label: return "label";
-    case Mark::point: return "point";
-    case Mark::point_velocity: return "point_velocity";
-    case Mark::table_cell: return "table_cell";
-    case Mark::formula_line: return "formula_line";
-    case Mark::plot_value: return "plot_value";
+        case Mark::body: return "body";
+        case Mark::plane: return "plane";
+        case Mark::velocity: return "velocity";
+        case Mark::spin: return "spin";
+        case Mark::impulse: return "impulse";
+        case Mark::normal: return "normal";
+        case Mark::lever_arm: return "lever_arm";
+        case Mark::contact: return "contact";
+        case Mark::direction: return "direction";
+        case Mark::label: return "label";
+        case Mark::point: return "point";
+        case Mark::point_velocity: return "point_velocity";
+        case Mark::table_cell: return "table_cell";
+        case Mark::formula_line: return "formula_line";
+        case Mark::plot_value: return "plot_value";
     }
     return "label";
 }
@@ -108,18 +108,18 @@ std::string quoted(const std::string& text) {
     std::string s = "\"";
     for (const char c : text) {
         switch (c) {
-        case '"': s += "\\\""; break;
-        case '\\': s += "\\\\"; break;
-        case '\n': s += "\\n"; break;
-        case '\t': s += "\\t"; break;
-        default:
-            if (static_cast<unsigned char>(c) < 0x20) {
-                char buf[8];
-                std::snprintf(buf, sizeof buf, "\\u%04x", c);
-                s += buf;
-            } else {
-                s += c;
-            }
+            case '"': s += "\\\""; break;
+            case '\\': s += "\\\\"; break;
+            case '\n': s += "\\n"; break;
+            case '\t': s += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(c) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", c);
+                    s += buf;
+                } else {
+                    s += c;
+                }
         }
     }
     return s + "\"";
@@ -136,10 +136,8 @@ void write_annotations_json(std::ostream& out, const Annotations& items, int dim
         out << (k ? ",\n" : "\n") << pad << "  {\"kind\": \"" << mark_name(a.kind) << "\", \"body\": ";
         if (a.body >= 0 && static_cast<std::size_t>(a.body) < body_names.size())
             out << quoted(body_names[static_cast<std::size_t>(a.body)]);
-        else
-            out << "null";
-        out << ", \"from\": " << point(a.from, dimension) << ", \"to\": " << point(a.to, dimension)
-            << ", \"value\": ";
+        else out << "null";
+        out << ", \"from\": " << point(a.from, dimension) << ", \"to\": " << point(a.to, dimension) << ", \"value\": ";
         if (a.value.empty()) {
             out << "null";
         } else if (a.value.size() == 1) {
@@ -149,8 +147,8 @@ void write_annotations_json(std::ostream& out, const Annotations& items, int dim
             for (std::size_t i = 0; i < a.value.size(); ++i) out << (i ? ", " : "") << number(a.value[i]);
             out << "]";
         }
-        out << ", \"text\": " << quoted(a.text) << ", \"box\": [" << pixels(a.box.x) << ", "
-            << pixels(a.box.y) << ", " << pixels(a.box.z) << ", " << pixels(a.box.w) << "]";
+        out << ", \"text\": " << quoted(a.text) << ", \"box\": [" << pixels(a.box.x) << ", " << pixels(a.box.y) << ", "
+            << pixels(a.box.z) << ", " << pixels(a.box.w) << "]";
         if (a.kind == Mark::spin) out << ", \"sweep\": " << number(a.sweep);
         if (a.kind == Mark::label) out << ", \"of\": " << a.of << ", \"font_px\": " << pixels(a.font_px);
         out << "}";

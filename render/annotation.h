@@ -20,17 +20,17 @@
 namespace collide::render {
 
 enum class Mark {
-    body,       // a body at its pose; `value` the pose (see Annotation)
-    plane,      // ground or a wall: `from` a point of its line, `value` its outward normal
-    velocity,   // v of `body`: from its centre to the arrow's tip
-    spin,       // ω of `body`: an arc about its centre, `sweep` its signed angle
-    impulse,    // the impulse on `body`: +P on b, −P on a, from the contact point
-    normal,     // n, from a into b, drawn beside the contact point
-    lever_arm,  // r of `body`: from its centre to the contact point
-    contact,    // the contact point
-    direction,  // a positive direction (+x, +y, +ω, +v), not a quantity
-    label,      // text; `of` is the item it names or gives the value of
-    point,      // a point of `body` a lesson marks (a handle): `from` where it is, `text` its name
+    body,            // a body at its pose; `value` the pose (see Annotation)
+    plane,           // ground or a wall: `from` a point of its line, `value` its outward normal
+    velocity,        // v of `body`: from its centre to the arrow's tip
+    spin,            // ω of `body`: an arc about its centre, `sweep` its signed angle
+    impulse,         // the impulse on `body`: +P on b, −P on a, from the contact point
+    normal,          // n, from a into b, drawn beside the contact point
+    lever_arm,       // r of `body`: from its centre to the contact point
+    contact,         // the contact point
+    direction,       // a positive direction (+x, +y, +ω, +v), not a quantity
+    label,           // text; `of` is the item it names or gives the value of
+    point,           // a point of `body` a lesson marks (a handle): `from` where it is, `text` its name
     point_velocity,  // that point's velocity v + ω × (p − x) (m/s), from the point
     // The overlays (frames with the table, formula and plots on; not in figure panels):
     table_cell,    // a cell of the data table: `text`, `box`, `of` its column (0 the name, then
@@ -44,7 +44,7 @@ const char* mark_name(Mark kind);
 
 struct Annotation {
     Mark kind = Mark::label;
-    int body = -1;            // scene index of the body it shows or acts on; -1: none
+    int body = -1;  // scene index of the body it shows or acts on; -1: none
     // World (m): an arrow's tail and tip; a body's or spin's centre (both); a label's anchor,
     // the point it belongs to (both).
     Vec3 from = Vec3::Zero(), to = Vec3::Zero();
@@ -53,20 +53,20 @@ struct Annotation {
     // body's pose: 1D [x]; 2D [x, y, angle]; 3D [x, y, z, qw, qx, qy, qz]. A label: the number
     // it prints, at full precision (empty for names).
     std::vector<double> value;
-    std::string text;         // labels: as drawn (rich text: "r_{a}", "ω = 1.5 rad/s"); 3D lever
-                              // arms: their name ("r_{a}")
-    ImVec4 box{0, 0, 0, 0};   // pixels (x0, y0, x1, y1): a label's box, an arrow's extent
-    double sweep = 0.0;       // spin: the arc's angle, radians, + counter-clockwise as seen
-    int of = -1;              // labels: the index of the item labelled; -1: none
-    float font_px = 0.0f;     // labels: the font's size (pixels): how tall the text is drawn
+    std::string text;        // labels: as drawn (rich text: "r_{a}", "ω = 1.5 rad/s"); 3D lever
+                             // arms: their name ("r_{a}")
+    ImVec4 box{0, 0, 0, 0};  // pixels (x0, y0, x1, y1): a label's box, an arrow's extent
+    double sweep = 0.0;      // spin: the arc's angle, radians, + counter-clockwise as seen
+    int of = -1;             // labels: the index of the item labelled; -1: none
+    float font_px = 0.0f;    // labels: the font's size (pixels): how tall the text is drawn
 
     // How it is drawn (not part of annotations.json).
     Colour colour = 0;
-    bool small = false;        // labels: the small font; bodies: with a centre-of-mass marker
-    ImVec2 anchor{0, 0};       // labels: the point they belong to (pixels)
-    float radius = 0.0f;       // spin: the arc's radius (pixels)
-    bool faint = false;        // the reaction −P on a: drawn lighter; 2D labels: no backing
-                               // (they stand where they are: names inside bodies, +x, +y)
+    bool small = false;   // labels: the small font; bodies: with a centre-of-mass marker
+    ImVec2 anchor{0, 0};  // labels: the point they belong to (pixels)
+    float radius = 0.0f;  // spin: the arc's radius (pixels)
+    bool faint = false;   // the reaction −P on a: drawn lighter; 2D labels: no backing
+                          // (they stand where they are: names inside bodies, +x, +y)
 };
 using Annotations = std::vector<Annotation>;
 

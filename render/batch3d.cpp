@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstddef>
 
-#include "assets/shaders.h"  // generated from assets/shaders/ (cmake/embed.cmake)
+#include "assets/shaders.h"      // generated from assets/shaders/ (cmake/embed.cmake)
 #include "render/imgui_layer.h"  // build_program
 
 namespace collide::render {
@@ -17,7 +17,8 @@ struct LineVertex {
 
 Vec3f colour3(Colour c) {
     return Vec3f(static_cast<float>(c & 0xFF), static_cast<float>((c >> 8) & 0xFF),
-                 static_cast<float>((c >> 16) & 0xFF)) / 255.0f;
+                 static_cast<float>((c >> 16) & 0xFF)) /
+           255.0f;
 }
 
 }  // namespace
@@ -173,8 +174,7 @@ void Batch3d::use_mesh_program() {
     gl_.UniformMatrix4fv(gl_.GetUniformLocation(mesh_program_, "view_projection"), 1, GL_FALSE,
                          frame_projection_.data());
     gl_.Uniform3f(gl_.GetUniformLocation(mesh_program_, "eye"), eye_.x(), eye_.y(), eye_.z());
-    gl_.Uniform3f(gl_.GetUniformLocation(mesh_program_, "key_light"), key_light_.x(), key_light_.y(),
-                  key_light_.z());
+    gl_.Uniform3f(gl_.GetUniformLocation(mesh_program_, "key_light"), key_light_.x(), key_light_.y(), key_light_.z());
     gl_.Uniform3f(gl_.GetUniformLocation(mesh_program_, "fill_light"), fill_light_.x(), fill_light_.y(),
                   fill_light_.z());
 }
@@ -208,10 +208,9 @@ void Batch3d::lines(const std::vector<Segment>& segments, bool depth_test, float
     vertices.reserve(6 * segments.size());
     const float corners[6][2] = {{0, -1}, {1, -1}, {1, 1}, {0, -1}, {1, 1}, {0, 1}};
     for (const Segment& s : segments) {
-        const float col[4] = {static_cast<float>(s.colour & 0xFF) / 255.0f,
-                              static_cast<float>((s.colour >> 8) & 0xFF) / 255.0f,
-                              static_cast<float>((s.colour >> 16) & 0xFF) / 255.0f,
-                              static_cast<float>((s.colour >> 24) & 0xFF) / 255.0f};
+        const float col[4] = {
+            static_cast<float>(s.colour & 0xFF) / 255.0f, static_cast<float>((s.colour >> 8) & 0xFF) / 255.0f,
+            static_cast<float>((s.colour >> 16) & 0xFF) / 255.0f, static_cast<float>((s.colour >> 24) & 0xFF) / 255.0f};
         for (const auto& c : corners) {
             LineVertex v;
             for (int k = 0; k < 3; ++k) {
@@ -238,8 +237,8 @@ void Batch3d::lines(const std::vector<Segment>& segments, bool depth_test, float
     gl_.DepthMask(GL_FALSE);
     gl_.BindVertexArray(line_vao_);
     gl_.BindBuffer(GL_ARRAY_BUFFER, line_vbo_);
-    gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)),
-                   vertices.data(), GL_STREAM_DRAW);
+    gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(LineVertex)), vertices.data(),
+                   GL_STREAM_DRAW);
     gl_.DrawArrays(GL_TRIANGLES, 0, static_cast<GLsizei>(vertices.size()));
     gl_.BindVertexArray(0);
     gl_.Disable(GL_BLEND);

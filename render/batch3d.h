@@ -27,9 +27,9 @@ struct MeshDraw {
 
 // A line of constant width on the screen between two world points.
 struct Segment {
-    Vec3 a, b;     // m
+    Vec3 a, b;  // m
     Colour colour;
-    float width;   // pixels
+    float width;  // pixels
 };
 
 // The ground plane: a square of half side `extent` about `origin` in the plane of the unit
@@ -52,7 +52,7 @@ struct Shadow {
 enum class MeshDepth {
     behind_lines,  // depth-tested, pushed back a little (polygon offset) so that outlines win
     tested,
-    over,          // no depth test: drawn over everything, in list order
+    over,  // no depth test: drawn over everything, in list order
 };
 
 class Batch3d {

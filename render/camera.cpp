@@ -51,8 +51,8 @@ void Camera::look(const Vec3f& dir, float distance, const Vec3f& look, double ra
     eye_ = look + dir * distance;
     const float near = std::max(0.01f * distance, distance - 4.0f * static_cast<float>(radius));
     const float far = distance + 8.0f * static_cast<float>(radius);
-    view_projection_ = perspective(static_cast<float>(kFovY), vw / vh, near, far) *
-                       look_at(eye_, target_, Vec3f(0, 1, 0));
+    view_projection_ =
+        perspective(static_cast<float>(kFovY), vw / vh, near, far) * look_at(eye_, target_, Vec3f(0, 1, 0));
     // Viewport clip coordinates -> frame clip coordinates (x right, y up).
     const float W = static_cast<float>(frame_w_), H = static_cast<float>(frame_h_);
     Mat4f to_frame = Mat4f::Identity();
@@ -63,8 +63,8 @@ void Camera::look(const Vec3f& dir, float distance, const Vec3f& look, double ra
     frame_projection_ = to_frame * view_projection_;
 }
 
-void Camera::frame(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius,
-                   const CameraRequest& request, int dimension) {
+void Camera::frame(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius, const CameraRequest& request,
+                   int dimension) {
     // The default: from the front (+z), turned 32 degrees to the right and raised 24; 2D and
     // 1D scenes a little more from the front. Then the distance and the aim are adjusted so
     // that the box's projection fills the viewport.
@@ -104,13 +104,11 @@ void Camera::frame(const Vec3& lo, const Vec3& hi, const Vec3& centre, double ra
 }
 
 ImVec2 Camera::project(const Vec3& p) const {
-    const Eigen::Vector4f c = view_projection_ * Eigen::Vector4f(static_cast<float>(p.x()),
-                                                                  static_cast<float>(p.y()),
-                                                                  static_cast<float>(p.z()), 1.0f);
+    const Eigen::Vector4f c = view_projection_ * Eigen::Vector4f(static_cast<float>(p.x()), static_cast<float>(p.y()),
+                                                                 static_cast<float>(p.z()), 1.0f);
     const float w = std::abs(c.w()) > 1e-9f ? c.w() : 1e-9f;
     const float vw = viewport_.z - viewport_.x, vh = viewport_.w - viewport_.y;
-    return ImVec2(viewport_.x + (c.x() / w * 0.5f + 0.5f) * vw,
-                  viewport_.y + (0.5f - c.y() / w * 0.5f) * vh);
+    return ImVec2(viewport_.x + (c.x() / w * 0.5f + 0.5f) * vw, viewport_.y + (0.5f - c.y() / w * 0.5f) * vh);
 }
 
 bool Camera::in_front(const Vec3f& p) const {

@@ -39,8 +39,8 @@ public:
     // `dimension`), aimed and moved back so that the box's projection fills 80% of the
     // viewport, except what the request fixes (a target is not re-aimed, a distance not
     // changed); then the request's zoom. `radius` (m) sizes the depth range.
-    void frame(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius,
-               const CameraRequest& request, int dimension);
+    void frame(const Vec3& lo, const Vec3& hi, const Vec3& centre, double radius, const CameraRequest& request,
+               int dimension);
 
     // A world point (m) on the frame (pixels, top-left origin).
     ImVec2 project(const Vec3& p) const;

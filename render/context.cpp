@@ -19,13 +19,12 @@ std::string GlContext::description() const {
 
 std::unique_ptr<GlContext> create_gl_context(GlBackend backend, int width, int height) {
     switch (backend) {
-    case GlBackend::osmesa:
-        return create_osmesa_context(width, height);
-    case GlBackend::egl:
+        case GlBackend::osmesa: return create_osmesa_context(width, height);
+        case GlBackend::egl:
 #ifdef COLLIDE_HAVE_EGL
-        return create_egl_context();
+            return create_egl_context();
 #else
-        throw std::runtime_error("this build has no EGL backend (install libegl-dev and rebuild)");
+            throw std::runtime_error("this build has no EGL backend (install libegl-dev and rebuild)");
 #endif
     }
     throw std::logic_error("unknown GL backend");

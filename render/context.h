@@ -43,8 +43,7 @@ protected:
 // A context of the given backend, current on the calling thread. width and height (pixels) size
 // the backend's own buffer where it needs one; frames of any size are drawn into render targets.
 // Throws std::runtime_error saying what failed (and which Debian package provides the backend).
-std::unique_ptr<GlContext> create_gl_context(GlBackend backend = GlBackend::osmesa, int width = 16,
-                                             int height = 16);
+std::unique_ptr<GlContext> create_gl_context(GlBackend backend = GlBackend::osmesa, int width = 16, int height = 16);
 
 // "osmesa" or "egl"; false for anything else (or for egl when it was not built).
 bool parse_gl_backend(const std::string& name, GlBackend* out);

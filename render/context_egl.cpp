@@ -26,14 +26,13 @@ std::string egl_error(const char* what) {
 class EglContext final : public GlContext {
 public:
     EglContext() {
-        const auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
-            eglGetProcAddress("eglGetPlatformDisplayEXT"));
+        const auto get_display =
+            reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(eglGetProcAddress("eglGetPlatformDisplayEXT"));
         if (!get_display) throw std::runtime_error("EGL: no eglGetPlatformDisplayEXT");
         display_ = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         if (display_ == EGL_NO_DISPLAY) throw std::runtime_error(egl_error("surfaceless display"));
         EGLint major = 0, minor = 0;
-        if (!eglInitialize(display_, &major, &minor))
-            throw std::runtime_error(egl_error("eglInitialize"));
+        if (!eglInitialize(display_, &major, &minor)) throw std::runtime_error(egl_error("eglInitialize"));
         try {
             if (!eglBindAPI(EGL_OPENGL_API)) throw std::runtime_error(egl_error("eglBindAPI"));
             // No surface is ever made, so no config is needed where EGL_KHR_no_config_context
@@ -46,9 +45,13 @@ public:
                 if (!eglChooseConfig(display_, config_attribs, &config, 1, &count) || count < 1)
                     throw std::runtime_error(egl_error("eglChooseConfig"));
             }
-            const EGLint context_attribs[] = {
-                EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
-                EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+            const EGLint context_attribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                              3,
+                                              EGL_CONTEXT_MINOR_VERSION,
+                                              3,
+                                              EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                              EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                              EGL_NONE};
             context_ = eglCreateContext(display_, config, EGL_NO_CONTEXT, context_attribs);
             if (context_ == EGL_NO_CONTEXT) throw std::runtime_error(egl_error("eglCreateContext"));
             make_current();

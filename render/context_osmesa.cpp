@@ -17,28 +17,32 @@ namespace collide::render {
 
 namespace {
 
-void* osmesa_proc(const char* name) {
-    return reinterpret_cast<void*>(OSMesaGetProcAddress(name));
-}
+void* osmesa_proc(const char* name) { return reinterpret_cast<void*>(OSMesaGetProcAddress(name)); }
 
 class OsmesaContext final : public GlContext {
 public:
     OsmesaContext(int width, int height)
-        : width_(width), height_(height),
+        : width_(width),
+          height_(height),
           buffer_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 4) {
         // OpenGL 3.3 core (Mesa gives 4.5); no depth or stencil in the default buffer.
-        const int attribs[] = {OSMESA_FORMAT, OSMESA_RGBA,
-                               OSMESA_DEPTH_BITS, 0,
-                               OSMESA_STENCIL_BITS, 0,
-                               OSMESA_ACCUM_BITS, 0,
-                               OSMESA_PROFILE, OSMESA_CORE_PROFILE,
-                               OSMESA_CONTEXT_MAJOR_VERSION, 3,
-                               OSMESA_CONTEXT_MINOR_VERSION, 3,
+        const int attribs[] = {OSMESA_FORMAT,
+                               OSMESA_RGBA,
+                               OSMESA_DEPTH_BITS,
+                               0,
+                               OSMESA_STENCIL_BITS,
+                               0,
+                               OSMESA_ACCUM_BITS,
+                               0,
+                               OSMESA_PROFILE,
+                               OSMESA_CORE_PROFILE,
+                               OSMESA_CONTEXT_MAJOR_VERSION,
+                               3,
+                               OSMESA_CONTEXT_MINOR_VERSION,
+                               3,
                                0};
         ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
-        if (!ctx_)
-            throw std::runtime_error(
-                "OSMesa could not create an OpenGL 3.3 core context (Debian: libosmesa6)");
+        if (!ctx_) throw std::runtime_error("OSMesa could not create an OpenGL 3.3 core context (Debian: libosmesa6)");
         make_current();
         gl_ = load_gl(&osmesa_proc);
     }

@@ -5,9 +5,8 @@
 namespace collide::render {
 
 std::vector<Vec2> convex_hull(std::vector<Vec2> p) {
-    std::sort(p.begin(), p.end(), [](const Vec2& a, const Vec2& b) {
-        return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y());
-    });
+    std::sort(p.begin(), p.end(),
+              [](const Vec2& a, const Vec2& b) { return a.x() < b.x() || (a.x() == b.x() && a.y() < b.y()); });
     if (p.size() < 3) return p;
     std::vector<Vec2> h(2 * p.size());
     std::size_t k = 0;

@@ -142,16 +142,16 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 const double shown = dim == 1 ? on_b.x() : Vec2(on_b.x(), on_b.y()).norm();
                 if (!scene_.bodies[im.a].is_static()) {
                     const int k = arrow_item(Mark::impulse, static_cast<int>(im.a), im.point,
-                                             im.point - Vec3(kP.x(), kP.y(), 0), components(-on_b, dim),
-                                             c.impulse);
+                                             im.point - Vec3(kP.x(), kP.y(), 0), components(-on_b, dim), c.impulse);
                     items[static_cast<std::size_t>(k)].faint = true;
                     const ImVec2 rtip = p - (tip - p);
                     pending.push_back({k, rtip, unit(p - tip), "\u2212P", {}, c.impulse, false});
                 }
                 const int k = arrow_item(Mark::impulse, static_cast<int>(im.b), im.point,
                                          im.point + Vec3(kP.x(), kP.y(), 0), components(on_b, dim), c.impulse);
-                pending.insert(pending.begin(), {k, tip, unit(tip - p), "P = " + format_number(shown) + " N s",
-                                                 {shown}, c.impulse, false});
+                pending.insert(
+                    pending.begin(),
+                    {k, tip, unit(tip - p), "P = " + format_number(shown) + " N s", {shown}, c.impulse, false});
                 labelled[im.a] = labelled[im.b] = true;
             }
             Annotation dot;
@@ -159,7 +159,8 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
             dot.from = dot.to = im.point;
             dot.value = components(im.point, dim);
             dot.colour = c.impulse;
-            dot.box = ImVec4(p.x - style_.px(4.5f), p.y - style_.px(4.5f), p.x + style_.px(4.5f), p.y + style_.px(4.5f));
+            dot.box =
+                ImVec4(p.x - style_.px(4.5f), p.y - style_.px(4.5f), p.x + style_.px(4.5f), p.y + style_.px(4.5f));
             add(std::move(dot));
         }
     }
@@ -181,8 +182,8 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 // 1D: the signed velocity along +x; else the speed.
                 const double shown = dim == 1 ? s.v.x() : xy(s.v).norm();
                 if (labels_of.speed[i]) {
-                    pending.push_back({k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s",
-                                       {shown}, c.velocity, false});
+                    pending.push_back(
+                        {k, tip, unit(tip - from), "v = " + format_number(shown) + " m/s", {shown}, c.velocity, false});
                     labelled[i] = true;
                 }
             }
@@ -201,8 +202,13 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
                 a.box = ImVec4(from.x - r, from.y - r, from.x + r, from.y + r);
                 const int k = add(std::move(a));
                 if (labels_of.spin[i]) {
-                    pending.push_back({k, from - ImVec2(0, r), ImVec2(0, -1),
-                                       "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
+                    pending.push_back({k,
+                                       from - ImVec2(0, r),
+                                       ImVec2(0, -1),
+                                       "\u03C9 = " + format_number(w) + " rad/s",
+                                       {w},
+                                       c.spin,
+                                       false});
                     labelled[i] = true;
                 }
             }
@@ -216,7 +222,7 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
     for (const BodyState& s : frame.bodies) fastest = std::max(fastest, s.v.norm());
     for (const PointMark& m : decor.points) {
         if (m.body >= n || !decor.in_focus(m.body)) continue;  // a figure about another pair
-        if (m.velocity && !decor.velocities) continue;  // a point shown for its velocity
+        if (m.velocity && !decor.velocities) continue;         // a point shown for its velocity
         const BodyState& s = frame.bodies[m.body];
         const Vec3 p = point_position(m, s, dim);
         Annotation a;
@@ -236,8 +242,13 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
             const int kv = arrow_item(Mark::point_velocity, static_cast<int>(m.body), p, p + k_velocity_ * vp,
                                       components(vp, dim), c.velocity);
             const double shown = dim == 1 ? vp.x() : xy(vp).norm();
-            pending.push_back({kv, tip, unit(tip - at), m.name + ": v = " + format_number(shown) + " m/s", {shown},
-                               c.velocity, true});
+            pending.push_back({kv,
+                               tip,
+                               unit(tip - at),
+                               m.name + ": v = " + format_number(shown) + " m/s",
+                               {shown},
+                               c.velocity,
+                               true});
         } else {
             pending.push_back({k, at, ImVec2(0, 1), moving ? m.name + ": at rest" : m.name, {}, c.ink, true});
         }
@@ -289,7 +300,8 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         direction_items.push_back(add(std::move(a)));
         const float fh = fonts.text->FontSize;
         direction_labels.push_back({o + ImVec2(L + style_.px(6.0f), -0.5f * fh), "+x"});
-        direction_labels.push_back({o + ImVec2(-0.5f * rich_text_size(fonts, fonts.text, "+y").x, -L - fh - style_.px(4.0f)), "+y"});
+        direction_labels.push_back(
+            {o + ImVec2(-0.5f * rich_text_size(fonts, fonts.text, "+y").x, -L - fh - style_.px(4.0f)), "+y"});
         direction_labels.push_back({arc + ImVec2(r + style_.px(5.0f), -r - 0.3f * fh), "+\u03C9"});
     }
     // Labels drawn where they are, without a backing.
@@ -390,13 +402,11 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
             const float above = centre.y - style_.lw(style_.com) - style_.px(4) - size.y;
             const float x0 = centre.x - 0.5f * size.x;
             const bool crossed = crosses_arrow(items, ImVec4(x0, below, x0 + size.x, below + size.y));
-            const ImVec2 at(x0, crossed && !crosses_arrow(items, ImVec4(x0, above, x0 + size.x, above + size.y))
-                                    ? above
-                                    : below);
+            const ImVec2 at(
+                x0, crossed && !crosses_arrow(items, ImVec4(x0, above, x0 + size.x, above + size.y)) ? above : below);
             fixed_label(body_item[i], ImVec2(std::round(at.x), std::round(at.y)), name, c.ink, true);
         } else if (!many || labelled[i]) {
-            pending.push_back({body_item[i], ImVec2(centre.x, s_lo.y), ImVec2(0, -1), name,
-                               {}, c.ink, true});
+            pending.push_back({body_item[i], ImVec2(centre.x, s_lo.y), ImVec2(0, -1), name, {}, c.ink, true});
         }
     }
     const float pad = style_.px(3.0f), gap = style_.px(6.0f);

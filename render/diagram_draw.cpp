@@ -50,8 +50,7 @@ bool clip_to_convex(const std::vector<ImVec2>& poly, ImVec2* a, ImVec2* b) {
 }
 
 // Diagonal hatching (45 degrees) clipped to a convex screen polygon.
-void hatch_convex(ImDrawList* dl, const std::vector<ImVec2>& poly, float step, Colour colour,
-                  float thickness) {
+void hatch_convex(ImDrawList* dl, const std::vector<ImVec2>& poly, float step, Colour colour, float thickness) {
     if (poly.empty()) return;
     const ImVec4 box = bounds_of(poly);
     const float x0 = box.x, y0 = box.y, x1 = box.z, y1 = box.w;
@@ -115,8 +114,8 @@ void DiagramView::draw_axis_1d(ImDrawList* dl) const {
     const float x0 = viewport_.x + style_.px(8), x1 = viewport_.z - style_.px(8);
     const Palette& c = style_.colours;
     dl->AddLine(ImVec2(x0, y), ImVec2(x1 - style_.px(10), y), c.ink, style_.lw(style_.outline));
-    draw_arrow(dl, ImVec2(x1 - style_.px(30), y), ImVec2(x1, y), c.ink, style_.lw(style_.outline),
-               style_.lw(12), style_.lw(9));
+    draw_arrow(dl, ImVec2(x1 - style_.px(30), y), ImVec2(x1, y), c.ink, style_.lw(style_.outline), style_.lw(12),
+               style_.lw(9));
 }
 
 void DiagramView::draw_body(ImDrawList* dl, std::size_t i, const BodyState& s, bool com) const {
@@ -205,78 +204,70 @@ void DiagramView::draw(ImDrawList* dl, const FontSet& fonts, const FrameState& f
             clipped = false;
         }
         switch (a.kind) {
-        case Mark::plane:
-            break;  // draw_planes
-        case Mark::body:
-            draw_body(dl, static_cast<std::size_t>(a.body), pose_of(a), a.small);
-            break;
-        case Mark::lever_arm: {
-            const ImVec2 d = unit(q - p);
-            draw_dashed_line(dl, p, q - d * style_.px(9), a.colour, style_.lw(style_.thin), style_.px(6),
-                             style_.px(4));
-            draw_arrow(dl, q - d * style_.px(11), q, a.colour, style_.lw(style_.thin), style_.lw(9), style_.lw(7));
-            break;
-        }
-        case Mark::normal: {
-            // Beside the contact point, along the tangent line through it.
-            const ImVec2 nd = unit(q - p);
-            const ImVec2 td(-nd.y, nd.x);
-            const float nl = style_.px(style_.normal_length);
-            draw_dashed_line(dl, p - td * (0.9f * nl), p + td * (0.9f * nl), with_alpha(a.colour, 0.8f),
-                             style_.lw(style_.thin), style_.px(7), style_.px(4));
-            const ImVec2 n0 = p + td * style_.px(18.0f);
-            draw_arrow(dl, n0, n0 + nd * nl, a.colour, style_.lw(2.0f), hl * 0.85f, hw * 0.85f);
-            break;
-        }
-        case Mark::impulse:
-            draw_arrow(dl, p, q, a.faint ? with_alpha(a.colour, 0.75f) : a.colour, arrow, hl, hw);
-            break;
-        case Mark::contact:
-            dl->AddCircleFilled(p, style_.px(4.5f), c.background);
-            dl->AddCircleFilled(p, style_.px(3.2f), a.colour);
-            break;
-        case Mark::velocity:
-            draw_arrow(dl, p, q, a.colour, arrow, hl, hw);
-            break;
-        case Mark::point:
-            dl->AddCircleFilled(p, style_.px(5.0f), c.background);
-            dl->AddCircle(p, style_.px(4.5f), a.colour, 0, style_.lw(2.0f));
-            break;
-        case Mark::point_velocity:
-            draw_arrow(dl, p, q, a.colour, style_.lw(2.0f), hl * 0.85f, hw * 0.85f);
-            break;
-        case Mark::spin: {
-            // An arc centred above the body, its head in the sense of the spin.
-            const double mid = 0.5 * kPi;
-            draw_curved_arrow(dl, p, a.radius, static_cast<float>(mid - a.sweep / 2),
-                              static_cast<float>(mid + a.sweep / 2), a.colour, style_.lw(2.5f), hl * 0.85f,
-                              hw * 0.85f);
-            break;
-        }
-        case Mark::direction:
-            if (a.radius > 0) {  // the counter-clockwise arc of +ω
-                draw_curved_arrow(dl, p, a.radius, static_cast<float>(-0.6 * kPi), static_cast<float>(0.9 * kPi),
-                                  a.colour, style_.lw(1.8f), hl * 0.6f, hw * 0.6f);
-            } else {
-                const float s = scene_.dimension == 1 ? 0.8f : 0.75f;
-                draw_arrow(dl, p, q, a.colour, style_.lw(2.0f), hl * s, hw * s);
+            case Mark::plane: break;  // draw_planes
+            case Mark::body: draw_body(dl, static_cast<std::size_t>(a.body), pose_of(a), a.small); break;
+            case Mark::lever_arm: {
+                const ImVec2 d = unit(q - p);
+                draw_dashed_line(dl, p, q - d * style_.px(9), a.colour, style_.lw(style_.thin), style_.px(6),
+                                 style_.px(4));
+                draw_arrow(dl, q - d * style_.px(11), q, a.colour, style_.lw(style_.thin), style_.lw(9), style_.lw(7));
+                break;
             }
-            break;
-        case Mark::label: {
-            ImFont* font = a.small ? fonts.small : fonts.text;
-            if (a.faint) {  // where it stands, no backing
-                draw_rich_text(dl, fonts, font, ImVec2(a.box.x, a.box.y), a.colour, a.text);
-            } else {
-                const float pad = style_.px(3.0f), gap = style_.px(6.0f);
-                draw_placed_label(dl, fonts, font, a.box, a.anchor, a.text, a.colour,
-                                  with_alpha(c.background, 0.85f), pad, gap);
+            case Mark::normal: {
+                // Beside the contact point, along the tangent line through it.
+                const ImVec2 nd = unit(q - p);
+                const ImVec2 td(-nd.y, nd.x);
+                const float nl = style_.px(style_.normal_length);
+                draw_dashed_line(dl, p - td * (0.9f * nl), p + td * (0.9f * nl), with_alpha(a.colour, 0.8f),
+                                 style_.lw(style_.thin), style_.px(7), style_.px(4));
+                const ImVec2 n0 = p + td * style_.px(18.0f);
+                draw_arrow(dl, n0, n0 + nd * nl, a.colour, style_.lw(2.0f), hl * 0.85f, hw * 0.85f);
+                break;
             }
-            break;
-        }
-        case Mark::table_cell:
-        case Mark::formula_line:
-        case Mark::plot_value:
-            break;  // the overlays draw their own
+            case Mark::impulse:
+                draw_arrow(dl, p, q, a.faint ? with_alpha(a.colour, 0.75f) : a.colour, arrow, hl, hw);
+                break;
+            case Mark::contact:
+                dl->AddCircleFilled(p, style_.px(4.5f), c.background);
+                dl->AddCircleFilled(p, style_.px(3.2f), a.colour);
+                break;
+            case Mark::velocity: draw_arrow(dl, p, q, a.colour, arrow, hl, hw); break;
+            case Mark::point:
+                dl->AddCircleFilled(p, style_.px(5.0f), c.background);
+                dl->AddCircle(p, style_.px(4.5f), a.colour, 0, style_.lw(2.0f));
+                break;
+            case Mark::point_velocity: draw_arrow(dl, p, q, a.colour, style_.lw(2.0f), hl * 0.85f, hw * 0.85f); break;
+            case Mark::spin: {
+                // An arc centred above the body, its head in the sense of the spin.
+                const double mid = 0.5 * kPi;
+                draw_curved_arrow(dl, p, a.radius, static_cast<float>(mid - a.sweep / 2),
+                                  static_cast<float>(mid + a.sweep / 2), a.colour, style_.lw(2.5f), hl * 0.85f,
+                                  hw * 0.85f);
+                break;
+            }
+            case Mark::direction:
+                if (a.radius > 0) {  // the counter-clockwise arc of +ω
+                    draw_curved_arrow(dl, p, a.radius, static_cast<float>(-0.6 * kPi), static_cast<float>(0.9 * kPi),
+                                      a.colour, style_.lw(1.8f), hl * 0.6f, hw * 0.6f);
+                } else {
+                    const float s = scene_.dimension == 1 ? 0.8f : 0.75f;
+                    draw_arrow(dl, p, q, a.colour, style_.lw(2.0f), hl * s, hw * s);
+                }
+                break;
+            case Mark::label: {
+                ImFont* font = a.small ? fonts.small : fonts.text;
+                if (a.faint) {  // where it stands, no backing
+                    draw_rich_text(dl, fonts, font, ImVec2(a.box.x, a.box.y), a.colour, a.text);
+                } else {
+                    const float pad = style_.px(3.0f), gap = style_.px(6.0f);
+                    draw_placed_label(dl, fonts, font, a.box, a.anchor, a.text, a.colour,
+                                      with_alpha(c.background, 0.85f), pad, gap);
+                }
+                break;
+            }
+            case Mark::table_cell:
+            case Mark::formula_line:
+            case Mark::plot_value: break;  // the overlays draw their own
         }
     }
     if (clipped) dl->PopClipRect();

@@ -25,15 +25,15 @@ DiagramView::Kind DiagramView::kind(std::size_t i) const {
     if (scene_.dimension == 1) return Kind::polygon;
     if (scene_.dimension == 2) {
         switch (b.shape2.kind) {
-        case Shape2::Kind::disc: return Kind::round;
-        case Shape2::Kind::polygon: return Kind::polygon;
-        case Shape2::Kind::half_plane: return Kind::plane;
+            case Shape2::Kind::disc: return Kind::round;
+            case Shape2::Kind::polygon: return Kind::polygon;
+            case Shape2::Kind::half_plane: return Kind::plane;
         }
     }
     switch (b.shape3.kind) {
-    case Shape3::Kind::sphere: return Kind::round;
-    case Shape3::Kind::box: return Kind::polygon;
-    case Shape3::Kind::half_space: return xy(b.shape3.normal).norm() > 0.3 ? Kind::plane : Kind::none;
+        case Shape3::Kind::sphere: return Kind::round;
+        case Shape3::Kind::box: return Kind::polygon;
+        case Shape3::Kind::half_space: return xy(b.shape3.normal).norm() > 0.3 ? Kind::plane : Kind::none;
     }
     return Kind::none;
 }
@@ -108,25 +108,23 @@ void DiagramView::plane_of(std::size_t i, Vec2* normal, double* offset) const {
 
 void DiagramView::extent(std::size_t i, const BodyState& s, Vec2* lo, Vec2* hi) const {
     switch (kind(i)) {
-    case Kind::round: {
-        const double r = radius(i);
-        *lo = lo->cwiseMin(xy(s.x) - Vec2(r, r));
-        *hi = hi->cwiseMax(xy(s.x) + Vec2(r, r));
-        break;
-    }
-    case Kind::polygon:
-        for (const Vec2& p : outline(i, s)) {
-            *lo = lo->cwiseMin(p);
-            *hi = hi->cwiseMax(p);
+        case Kind::round: {
+            const double r = radius(i);
+            *lo = lo->cwiseMin(xy(s.x) - Vec2(r, r));
+            *hi = hi->cwiseMax(xy(s.x) + Vec2(r, r));
+            break;
         }
-        break;
-    default:
-        break;
+        case Kind::polygon:
+            for (const Vec2& p : outline(i, s)) {
+                *lo = lo->cwiseMin(p);
+                *hi = hi->cwiseMax(p);
+            }
+            break;
+        default: break;
     }
 }
 
-void DiagramView::fit(const std::vector<FrameState>& samples,
-                      const std::vector<ImpactMark>& impacts, ImVec4 viewport) {
+void DiagramView::fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts, ImVec4 viewport) {
     viewport_ = viewport;
     // Room around the content for the margin and for labels at arrow tips near the edge.
     const double m = style_.px(style_.margin);
@@ -188,7 +186,7 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
             Vec2 n;
             double offset;
             plane_of(i, &n, &offset);
-            const double distance = n.dot(c) - offset;  // of the box centre from the boundary
+            const double distance = n.dot(c) - offset;    // of the box centre from the boundary
             if (distance > 0.75 * diag + 1e-9) continue;  // far away: not framed
             const Vec2 foot = c - distance * n;
             const Vec2 below = foot - n * (1.6 * style_.px(style_.hatch_depth) / pixels_per_metre);
@@ -249,7 +247,8 @@ void DiagramView::fit(const std::vector<FrameState>& samples,
         for (const PointMark& m : points_) {
             if (!m.velocity || m.body >= f.bodies.size() || !framed(m.body)) continue;
             const BodyState& s = f.bodies[m.body];
-            const Vec2 tip = xy(point_position(m, s, scene_.dimension) + k_velocity_ * point_velocity(m, s, scene_.dimension));
+            const Vec2 tip =
+                xy(point_position(m, s, scene_.dimension) + k_velocity_ * point_velocity(m, s, scene_.dimension));
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
         }

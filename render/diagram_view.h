@@ -44,8 +44,8 @@ struct Decor {
     bool velocities = true;  // velocity arrows and spin arcs
     bool impacts = true;     // the frame's impacts: impulse, normal, r vectors, contact point
     bool trails = true;
-    bool labels = true;      // values and names
-    bool com = true;         // centre-of-mass markers
+    bool labels = true;  // values and names
+    bool com = true;     // centre-of-mass markers
     // The positive directions, as in the page's "Directions" figures: 1D, over each moving
     // block an arrow along +x ("+v": velocities are measured that way, and may be negative);
     // 2D, one glyph in the corner: +x, +y and the counter-clockwise arc of +ω.
@@ -65,8 +65,7 @@ public:
 
     // Frames everything the samples show, with their arrows, inside `viewport` (pixels:
     // x0, y0, x1, y1). Impacts set the impulse scale. Call before draw().
-    void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
-             ImVec4 viewport);
+    void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts, ImVec4 viewport);
     // Leave room above the moving bodies for the positive-direction arrows (Decor::directions).
     void reserve_directions(bool on) { directions_room_ = on; }
     // Frame `bodies` only (empty: all). A static body among them (a cushion, a wall) is framed
@@ -82,8 +81,7 @@ public:
 
     // What draw() draws of `frame`, in drawing order, the labels placed by `labels` (which
     // holds what the other overlays took; null: no labels).
-    Annotations annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor,
-                         LabelPlacer* labels) const;
+    Annotations annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor, LabelPlacer* labels) const;
     // Draws the ground and walls, the trails (Decor::trails), then `items` and nothing else.
     void draw(ImDrawList* dl, const FontSet& fonts, const FrameState& frame, const Decor& decor,
               const Annotations& items) const;
@@ -109,8 +107,8 @@ public:
 private:
     enum class Kind { round, polygon, plane, none };
     Kind kind(std::size_t i) const;
-    double radius(std::size_t i) const;                                // round bodies
-    double reach(std::size_t i) const;  // largest distance of the surface from the centre (m)
+    double radius(std::size_t i) const;  // round bodies
+    double reach(std::size_t i) const;   // largest distance of the surface from the centre (m)
     // The radius of body i's spin arc in pixels at `scale` (px per m): just outside a small
     // body, a fixed size around the centre of a long one (a bar's arc would span the frame).
     float spin_radius(std::size_t i, double scale) const;
@@ -133,10 +131,10 @@ private:
     bool framed(std::size_t i) const {
         return frame_only_.empty() || std::find(frame_only_.begin(), frame_only_.end(), i) != frame_only_.end();
     }
-    double scale_ = 100.0;        // pixels per metre
-    double k_velocity_ = 0.0;     // metres of arrow per m/s
-    double k_impulse_ = 0.0;      // metres of arrow per N s
-    double max_spin_ = 0.0;       // rad/s, the largest |w| of the run
+    double scale_ = 100.0;     // pixels per metre
+    double k_velocity_ = 0.0;  // metres of arrow per m/s
+    double k_impulse_ = 0.0;   // metres of arrow per N s
+    double max_spin_ = 0.0;    // rad/s, the largest |w| of the run
     Vec2 box_lo_ = Vec2::Zero(), box_hi_ = Vec2::Zero();
 };
 

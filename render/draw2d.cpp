@@ -45,8 +45,8 @@ std::vector<Run> runs_of(const std::string& s) {
 
 }  // namespace
 
-void draw_arrow(ImDrawList* dl, ImVec2 from, ImVec2 to, Colour colour, float thickness,
-                float head_length, float head_width) {
+void draw_arrow(ImDrawList* dl, ImVec2 from, ImVec2 to, Colour colour, float thickness, float head_length,
+                float head_width) {
     const ImVec2 d = sub(to, from);
     const float len = length(d);
     if (len < 0.5f) return;
@@ -74,8 +74,8 @@ void draw_arrow(ImDrawList* dl, ImVec2 from, ImVec2 to, Colour colour, float thi
     dl->AddConvexPolyFilled(t2, 3, colour);
 }
 
-void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Colour colour,
-                       float thickness, float head_length, float head_width) {
+void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Colour colour, float thickness,
+                       float head_length, float head_width) {
     // World angles (y up) to screen (y down): negate.
     const float sweep = a1 - a0;
     if (std::abs(sweep) < 1e-3f || r < 1.0f) return;
@@ -99,12 +99,10 @@ void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Co
     if (len < 0.5f) return;
     // From 1.5 head lengths back along that chord: draw_arrow draws the head at full size
     // (it shrinks the heads of shorter arrows), 0.3 px off the arc at most for the radii used.
-    draw_arrow(dl, sub(tip, mul(d, 1.5f * head_length / len)), tip, colour, thickness, head_length,
-               head_width);
+    draw_arrow(dl, sub(tip, mul(d, 1.5f * head_length / len)), tip, colour, thickness, head_length, head_width);
 }
 
-void draw_dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, Colour colour, float thickness,
-                      float dash, float gap) {
+void draw_dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, Colour colour, float thickness, float dash, float gap) {
     const ImVec2 d = sub(b, a);
     const float len = length(d);
     if (len < 0.5f) return;
@@ -139,8 +137,8 @@ ImVec2 rich_text_size(const FontSet& fonts, ImFont* font, const std::string& tex
     return ImVec2(w, font->FontSize);
 }
 
-void draw_rich_text(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left,
-                    Colour colour, const std::string& text) {
+void draw_rich_text(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left, Colour colour,
+                    const std::string& text) {
     float x = top_left.x;
     for (const Run& r : runs_of(text)) {
         ImFont* f = r.script == 0 ? font : fonts.small;
@@ -267,8 +265,8 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
                 // extent along u so that the box never covers the anchor.
                 const float reach = gap + step * h + 0.5f * (std::abs(u.x) * size.x + std::abs(u.y) * size.y);
                 const ImVec2 centre = add(anchor, mul(u, reach));
-                const ImVec4 r(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y,
-                               centre.x + 0.5f * size.x, centre.y + 0.5f * size.y);
+                const ImVec4 r(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x,
+                               centre.y + 0.5f * size.y);
                 if (free(r, strict == 1)) {
                     taken_.push_back(r);
                     last_free_ = true;
@@ -286,17 +284,16 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
     return best;
 }
 
-void draw_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left,
-                const std::string& text, Colour colour, Colour backing, float pad) {
+void draw_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left, const std::string& text,
+                Colour colour, Colour backing, float pad) {
     const ImVec2 size = rich_text_size(fonts, font, text);
     dl->AddRectFilled(ImVec2(top_left.x - pad, top_left.y - pad * 0.5f),
-                      ImVec2(top_left.x + size.x + pad, top_left.y + size.y + pad * 0.5f), backing,
-                      pad);
+                      ImVec2(top_left.x + size.x + pad, top_left.y + size.y + pad * 0.5f), backing, pad);
     draw_rich_text(dl, fonts, font, top_left, colour, text);
 }
 
-ImVec4 place_label_box(const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor,
-                       ImVec2 direction, const std::string& text, float pad, float gap) {
+ImVec4 place_label_box(const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor, ImVec2 direction,
+                       const std::string& text, float pad, float gap) {
     const ImVec2 size = rich_text_size(fonts, font, text);
     const ImVec2 box(size.x + 2 * pad, size.y + pad);
     const ImVec2 at = placer->place(anchor, box, direction, gap);
@@ -317,9 +314,8 @@ void draw_placed_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec
     draw_label(dl, fonts, font, ImVec2(box.x + pad, box.y + 0.5f * pad), text, colour, backing, pad);
 }
 
-void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font,
-                 ImVec2 anchor, ImVec2 direction, const std::string& text, Colour colour,
-                 Colour backing, float pad, float gap) {
+void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor,
+                 ImVec2 direction, const std::string& text, Colour colour, Colour backing, float pad, float gap) {
     const ImVec4 box = place_label_box(fonts, placer, font, anchor, direction, text, pad, gap);
     draw_placed_label(dl, fonts, font, box, anchor, text, colour, backing, pad, gap);
 }

@@ -18,14 +18,13 @@ namespace collide::render {
 
 // An arrow from `from` to `to` (the tip). The head shrinks on arrows shorter than 1.5 heads;
 // nothing is drawn for arrows under half a pixel.
-void draw_arrow(ImDrawList* dl, ImVec2 from, ImVec2 to, Colour colour, float thickness,
-                float head_length, float head_width);
+void draw_arrow(ImDrawList* dl, ImVec2 from, ImVec2 to, Colour colour, float thickness, float head_length,
+                float head_width);
 // An arc of radius r about c from angle a0 to a1 (radians, counter-clockwise on screen as
 // seen by the reader: the angles are those of the world, y up), with the head at a1.
-void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Colour colour,
-                       float thickness, float head_length, float head_width);
-void draw_dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, Colour colour, float thickness,
-                      float dash, float gap);
+void draw_curved_arrow(ImDrawList* dl, ImVec2 c, float r, float a0, float a1, Colour colour, float thickness,
+                       float head_length, float head_width);
+void draw_dashed_line(ImDrawList* dl, ImVec2 a, ImVec2 b, Colour colour, float thickness, float dash, float gap);
 // The screen box (x0, y0, x1, y1) around a polygon's points; inverted (x0 > x1) when empty.
 ImVec4 bounds_of(const std::vector<ImVec2>& poly);
 
@@ -34,8 +33,8 @@ void draw_com_marker(ImDrawList* dl, ImVec2 c, float r, Colour ink, Colour paper
 
 // Rich text (see above).
 ImVec2 rich_text_size(const FontSet& fonts, ImFont* font, const std::string& text);
-void draw_rich_text(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left,
-                    Colour colour, const std::string& text);
+void draw_rich_text(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left, Colour colour,
+                    const std::string& text);
 
 // Numbers for labels: `digits` significant digits, a true minus sign (U+2212), no "-0".
 std::string format_number(double x, int digits = 3);
@@ -70,19 +69,18 @@ private:
 };
 
 // A label with a soft paper-coloured backing so that it reads over lines and fills.
-void draw_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left,
-                const std::string& text, Colour colour, Colour backing, float pad);
+void draw_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec2 top_left, const std::string& text,
+                Colour colour, Colour backing, float pad);
 
 // A label's box (pixels: x0, y0, x1, y1, its padding included) placed for `anchor` (see
 // LabelPlacer::place), and the label drawn in that box; a label that had to move away from
 // its anchor gets a thin leader line back to it.
-ImVec4 place_label_box(const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor,
-                       ImVec2 direction, const std::string& text, float pad, float gap);
+ImVec4 place_label_box(const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor, ImVec2 direction,
+                       const std::string& text, float pad, float gap);
 void draw_placed_label(ImDrawList* dl, const FontSet& fonts, ImFont* font, ImVec4 box, ImVec2 anchor,
                        const std::string& text, Colour colour, Colour backing, float pad, float gap);
 // Both at once.
-void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font,
-                 ImVec2 anchor, ImVec2 direction, const std::string& text, Colour colour,
-                 Colour backing, float pad, float gap);
+void place_label(ImDrawList* dl, const FontSet& fonts, LabelPlacer* placer, ImFont* font, ImVec2 anchor,
+                 ImVec2 direction, const std::string& text, Colour colour, Colour backing, float pad, float gap);
 
 }  // namespace collide::render

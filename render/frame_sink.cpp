@@ -108,14 +108,12 @@ void FrameSink::encode_loop() {
 
 namespace {
 double now_seconds() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 }  // namespace
 
 ProgressBar::ProgressBar(std::ostream& out, long total, bool enabled, std::string label)
-    : out_(out), total_(std::max(1L, total)), enabled_(enabled), label_(std::move(label)),
-      start_(now_seconds()) {}
+    : out_(out), total_(std::max(1L, total)), enabled_(enabled), label_(std::move(label)), start_(now_seconds()) {}
 
 void ProgressBar::update(long done) {
     if (!enabled_ || finished_) return;
@@ -141,9 +139,8 @@ void ProgressBar::draw(long done) {
     char line[160];
     std::snprintf(line, sizeof line, "\r%s [%s%s] %ld/%ld %3d %%  %.1f frames/s", label_.c_str(),
                   std::string(static_cast<std::size_t>(filled), '#').c_str(),
-                  std::string(static_cast<std::size_t>(kWidth - filled), '-').c_str(), done,
-                  total_, static_cast<int>(fraction * 100.0 + 0.5),
-                  elapsed > 0.0 ? static_cast<double>(done) / elapsed : 0.0);
+                  std::string(static_cast<std::size_t>(kWidth - filled), '-').c_str(), done, total_,
+                  static_cast<int>(fraction * 100.0 + 0.5), elapsed > 0.0 ? static_cast<double>(done) / elapsed : 0.0);
     out_ << line << std::flush;
 }
 

@@ -24,12 +24,12 @@
 namespace collide::render {
 
 struct FrameSinkOptions {
-    std::string dir;               // existing directory
+    std::string dir;  // existing directory
     std::string prefix = "frame_";
-    int digits = 5;                // frame_00000.png
+    int digits = 5;  // frame_00000.png
     PngOptions png;
-    int threads = 1;               // encoder threads (>= 1)
-    int buffers = 3;               // frames in flight (>= threads + 1 keeps rendering busy)
+    int threads = 1;  // encoder threads (>= 1)
+    int buffers = 3;  // frames in flight (>= threads + 1 keeps rendering busy)
 };
 
 class FrameSink {
@@ -46,8 +46,8 @@ public:
     // Waits until every submitted frame is written; rethrows the first error.
     void finish();
 
-    std::string path_of(long index) const;  // DIR/frame_00042.png
-    long written() const;                   // frames written so far
+    std::string path_of(long index) const;                        // DIR/frame_00042.png
+    long written() const;                                         // frames written so far
     std::size_t buffer_count() const { return storage_.size(); }  // frames in memory, at most
 
 private:

@@ -196,14 +196,12 @@ std::vector<ImpactMark> shown_impacts(std::vector<ImpactMark> impacts) {
 
 void add_trails(const std::vector<FrameState>& history, double span, FrameState* frame) {
     frame->trails.assign(frame->bodies.size(), {});
-    const auto first = std::lower_bound(
-        history.begin(), history.end(), frame->t - span,
-        [](const FrameState& f, double t) { return f.t < t; });
+    const auto first = std::lower_bound(history.begin(), history.end(), frame->t - span,
+                                        [](const FrameState& f, double t) { return f.t < t; });
     for (auto it = first; it != history.end() && it->t < frame->t; ++it)
         for (std::size_t i = 0; i < frame->bodies.size() && i < it->bodies.size(); ++i)
             frame->trails[i].push_back({it->t, it->bodies[i].x});
-    for (std::size_t i = 0; i < frame->bodies.size(); ++i)
-        frame->trails[i].push_back({frame->t, frame->bodies[i].x});
+    for (std::size_t i = 0; i < frame->bodies.size(); ++i) frame->trails[i].push_back({frame->t, frame->bodies[i].x});
 }
 
 double body_mass(const Scene& scene, std::size_t i) {
@@ -241,9 +239,9 @@ Body3 body3_of(const Scene& scene, std::size_t i, const BodyState& s) {
 
 double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s) {
     switch (scene.dimension) {
-    case 1: return totals(std::vector<Body1>{body1_of(scene, i, s)}).kinetic_energy;
-    case 2: return totals(std::vector<Body2>{body2_of(scene, i, s)}).kinetic_energy;
-    default: return totals(std::vector<Body3>{body3_of(scene, i, s)}).kinetic_energy;
+        case 1: return totals(std::vector<Body1>{body1_of(scene, i, s)}).kinetic_energy;
+        case 2: return totals(std::vector<Body2>{body2_of(scene, i, s)}).kinetic_energy;
+        default: return totals(std::vector<Body3>{body3_of(scene, i, s)}).kinetic_energy;
     }
 }
 
@@ -264,9 +262,9 @@ FrameTotals frame_totals(const Scene& scene, const FrameState& frame) {
         else t.momentum = sums.momentum;
     };
     switch (scene.dimension) {
-    case 1: sum([&](std::size_t i) { return body1_of(scene, i, frame.bodies[i]); }); break;
-    case 2: sum([&](std::size_t i) { return body2_of(scene, i, frame.bodies[i]); }); break;
-    default: sum([&](std::size_t i) { return body3_of(scene, i, frame.bodies[i]); }); break;
+        case 1: sum([&](std::size_t i) { return body1_of(scene, i, frame.bodies[i]); }); break;
+        case 2: sum([&](std::size_t i) { return body2_of(scene, i, frame.bodies[i]); }); break;
+        default: sum([&](std::size_t i) { return body3_of(scene, i, frame.bodies[i]); }); break;
     }
     return t;
 }

@@ -17,12 +17,12 @@ using collide::BodyState;  // engine/body.h: every body's state lifted to 3D
 
 // One collision as the diagrams draw it (docs/conventions.md: n from a into b, +P on b).
 struct ImpactMark {
-    double t = 0.0;          // s
+    double t = 0.0;  // s
     std::size_t a = 0, b = 0;
     Vec3 point = Vec3::Zero();    // m
     Vec3 normal = Vec3::UnitX();  // unit
     Vec3 impulse = Vec3::Zero();  // N s, on b
-    bool detailed = true;  // drawn with its value, n and r_a, r_b; else its impulse arrow only
+    bool detailed = true;         // drawn with its value, n and r_a, r_b; else its impulse arrow only
 };
 
 struct TrailPoint {
@@ -31,9 +31,9 @@ struct TrailPoint {
 };
 
 struct FrameState {
-    double t = 0.0;                              // s
-    std::vector<BodyState> bodies;               // scene order
-    std::vector<ImpactMark> impacts;             // drawn as "at the collision" annotations
+    double t = 0.0;                               // s
+    std::vector<BodyState> bodies;                // scene order
+    std::vector<ImpactMark> impacts;              // drawn as "at the collision" annotations
     std::vector<std::vector<TrailPoint>> trails;  // per body, oldest first (may be empty)
 };
 
@@ -75,9 +75,7 @@ constexpr std::size_t kMaxMotionLabels = 6;
 // How many velocity (or spin) labels a frame of `moving` moving bodies gets at most: every one
 // that motion_labelled() admits up to kQuietBodies, else kMaxMotionLabels (in scene order among
 // equals: a bin's 100 boxes falling together all have the sixth largest speed).
-inline std::size_t motion_label_budget(std::size_t moving) {
-    return moving > kQuietBodies ? kMaxMotionLabels : moving;
-}
+inline std::size_t motion_label_budget(std::size_t moving) { return moving > kQuietBodies ? kMaxMotionLabels : moving; }
 // Which moving bodies get a velocity (or spin) label: `sizes` their speeds (or spins) and
 // `first` the bodies of the frame's collisions, one entry each, in scene order. Those that
 // motion_labelled() admits, at most motion_label_budget() of them: the bodies of a collision
@@ -136,8 +134,8 @@ double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s);
 // Totals of the moving bodies of a frame, by the engine's formulas: kinetic energy, potential
 // energy in the scene's gravity (zero at the origin), momentum (1D: x; 2D: x, y).
 struct FrameTotals {
-    double kinetic = 0.0;    // J
-    double potential = 0.0;  // J
+    double kinetic = 0.0;          // J
+    double potential = 0.0;        // J
     Vec3 momentum = Vec3::Zero();  // kg m/s
 };
 FrameTotals frame_totals(const Scene& scene, const FrameState& frame);

@@ -8,8 +8,8 @@ namespace collide::render {
 
 Gl load_gl(GlProcLoader loader) {
     Gl gl;
-#define COLLIDE_GL_LOAD(type, name)                                                       \
-    gl.name = reinterpret_cast<type>(loader("gl" #name));                                 \
+#define COLLIDE_GL_LOAD(type, name)                                                                                    \
+    gl.name = reinterpret_cast<type>(loader("gl" #name));                                                              \
     if (!gl.name) throw std::runtime_error("OpenGL function gl" #name " is not available");
     COLLIDE_GL_FUNCTIONS(COLLIDE_GL_LOAD)
 #undef COLLIDE_GL_LOAD

@@ -33,9 +33,7 @@ const ImWchar kGlyphRanges[] = {
 
 std::vector<char> read_file(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw std::runtime_error(path +
-                                 ": font not found (Debian: apt-get install fonts-dejavu-core)");
+    if (!in) throw std::runtime_error(path + ": font not found (Debian: apt-get install fonts-dejavu-core)");
     return std::vector<char>(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
@@ -105,8 +103,7 @@ GLuint build_program(const Gl& gl, const char* vertex_source, const char* fragme
     return p;
 }
 
-ImGuiLayer::ImGuiLayer(const Gl& gl, int width, int height, const FontSizes& sizes,
-                       const std::string& font_dir)
+ImGuiLayer::ImGuiLayer(const Gl& gl, int width, int height, const FontSizes& sizes, const std::string& font_dir)
     : gl_(gl), width_(width), height_(height) {
     font_files_.push_back(read_file(font_dir + "/DejaVuSans.ttf"));
     font_files_.push_back(read_file(font_dir + "/DejaVuSans-Bold.ttf"));
@@ -133,8 +130,7 @@ ImGuiLayer::ImGuiLayer(const Gl& gl, int width, int height, const FontSizes& siz
         config.FontDataOwnedByAtlas = false;
         config.OversampleH = 1;  // FreeType ignores oversampling; keep the atlas small
         config.PixelSnapH = true;
-        ImFont* f = atlas->AddFontFromMemoryTTF(file.data(), static_cast<int>(file.size()), px,
-                                                &config, kGlyphRanges);
+        ImFont* f = atlas->AddFontFromMemoryTTF(file.data(), static_cast<int>(file.size()), px, &config, kGlyphRanges);
         if (!f) throw std::runtime_error("Dear ImGui could not load a font");
         return f;
     };
@@ -175,12 +171,9 @@ ImGuiLayer::ImGuiLayer(const Gl& gl, int width, int height, const FontSizes& siz
     gl_.EnableVertexAttribArray(1);
     gl_.EnableVertexAttribArray(2);
     const auto offset = [](std::size_t o) { return reinterpret_cast<const void*>(o); };
-    gl_.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(ImDrawVert),
-                            offset(offsetof(ImDrawVert, pos)));
-    gl_.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, sizeof(ImDrawVert),
-                            offset(offsetof(ImDrawVert, uv)));
-    gl_.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(ImDrawVert),
-                            offset(offsetof(ImDrawVert, col)));
+    gl_.VertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, sizeof(ImDrawVert), offset(offsetof(ImDrawVert, pos)));
+    gl_.VertexAttribPointer(1, 2, GL_FLOAT, GL_FALSE, sizeof(ImDrawVert), offset(offsetof(ImDrawVert, uv)));
+    gl_.VertexAttribPointer(2, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(ImDrawVert), offset(offsetof(ImDrawVert, col)));
     gl_.BindVertexArray(0);
     check_gl(gl_, "setting up Dear ImGui");
     if (previous) ImGui::SetCurrentContext(previous);
@@ -237,10 +230,8 @@ void ImGuiLayer::render_draw_data() {
     // Pixels (origin top left, y down) to clip space.
     const float L = data->DisplayPos.x, R = L + data->DisplaySize.x;
     const float T = data->DisplayPos.y, B = T + data->DisplaySize.y;
-    const float projection[16] = {2.0f / (R - L), 0, 0, 0,
-                                  0, 2.0f / (T - B), 0, 0,
-                                  0, 0, -1, 0,
-                                  (R + L) / (L - R), (T + B) / (B - T), 0, 1};
+    const float projection[16] = {2.0f / (R - L),    0, 0, 0, 0, 2.0f / (T - B), 0, 0, 0, 0, -1, 0, (R + L) / (L - R),
+                                  (T + B) / (B - T), 0, 1};
     gl_.UniformMatrix4fv(proj_location_, 1, GL_FALSE, projection);
     gl_.Uniform1i(tex_location_, 0);
     gl_.ActiveTexture(GL_TEXTURE0);
@@ -249,28 +240,24 @@ void ImGuiLayer::render_draw_data() {
     gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, ibo_);
     for (int n = 0; n < data->CmdListsCount; ++n) {
         const ImDrawList* list = data->CmdLists[n];
-        gl_.BufferData(GL_ARRAY_BUFFER,
-                       static_cast<GLsizeiptr>(list->VtxBuffer.Size) * sizeof(ImDrawVert),
+        gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(list->VtxBuffer.Size) * sizeof(ImDrawVert),
                        list->VtxBuffer.Data, GL_STREAM_DRAW);
-        gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER,
-                       static_cast<GLsizeiptr>(list->IdxBuffer.Size) * sizeof(ImDrawIdx),
+        gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(list->IdxBuffer.Size) * sizeof(ImDrawIdx),
                        list->IdxBuffer.Data, GL_STREAM_DRAW);
         for (const ImDrawCmd& cmd : list->CmdBuffer) {
             if (cmd.UserCallback) {
                 cmd.UserCallback(list, &cmd);
                 continue;
             }
-            const ImVec4 clip(cmd.ClipRect.x - L, cmd.ClipRect.y - T, cmd.ClipRect.z - L,
-                              cmd.ClipRect.w - T);
+            const ImVec4 clip(cmd.ClipRect.x - L, cmd.ClipRect.y - T, cmd.ClipRect.z - L, cmd.ClipRect.w - T);
             if (clip.z <= clip.x || clip.w <= clip.y) continue;
             gl_.Scissor(static_cast<GLint>(clip.x), static_cast<GLint>(static_cast<float>(height_) - clip.w),
                         static_cast<GLsizei>(clip.z - clip.x), static_cast<GLsizei>(clip.w - clip.y));
             gl_.BindTexture(GL_TEXTURE_2D, static_cast<GLuint>(reinterpret_cast<std::uintptr_t>(cmd.GetTexID())));
-            gl_.DrawElementsBaseVertex(
-                GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount),
-                sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT,
-                reinterpret_cast<const void*>(cmd.IdxOffset * sizeof(ImDrawIdx)),
-                static_cast<GLint>(cmd.VtxOffset));
+            gl_.DrawElementsBaseVertex(GL_TRIANGLES, static_cast<GLsizei>(cmd.ElemCount),
+                                       sizeof(ImDrawIdx) == 2 ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT,
+                                       reinterpret_cast<const void*>(cmd.IdxOffset * sizeof(ImDrawIdx)),
+                                       static_cast<GLint>(cmd.VtxOffset));
         }
     }
     gl_.Disable(GL_SCISSOR_TEST);

@@ -12,8 +12,7 @@ namespace {
 constexpr float kPiF = static_cast<float>(kPi);
 
 // One triangle a, b, c (counter-clockwise from outside) with the normals at its corners.
-void tri(Mesh* out, const Vec3f& a, const Vec3f& b, const Vec3f& c, const Vec3f& na,
-         const Vec3f& nb, const Vec3f& nc) {
+void tri(Mesh* out, const Vec3f& a, const Vec3f& b, const Vec3f& c, const Vec3f& na, const Vec3f& nb, const Vec3f& nc) {
     for (const auto& [p, n] : {std::pair(a, na), std::pair(b, nb), std::pair(c, nc)})
         out->push_back({{p.x(), p.y(), p.z()}, {n.x(), n.y(), n.z()}, {p.x(), p.y(), p.z()}});
 }

@@ -21,7 +21,6 @@ std::string vec_text(const Vec3& v, int dims, int decimals) {
     return s + ")";
 }
 
-
 // The background of an overlay: a white rounded panel with a thin border.
 void draw_panel(ImDrawList* dl, const Style& style, ImVec2 at, ImVec2 size) {
     const Palette& c = style.colours;
@@ -111,8 +110,7 @@ void DataTable::prepare(const FontSet& fonts, const std::vector<FrameState>& sam
             largest[c] = std::max(largest[c], (body_mass(scene_, r) * s.v).cwiseAbs().maxCoeff());
         }
         const FrameTotals sums = frame_totals(scene_, f);
-        largest[columns_.size() - 2] =
-            std::max(largest[columns_.size() - 2], sums.momentum.cwiseAbs().maxCoeff());
+        largest[columns_.size() - 2] = std::max(largest[columns_.size() - 2], sums.momentum.cwiseAbs().maxCoeff());
         largest.back() = std::max(largest.back(), sums.kinetic);
     }
     for (std::size_t c = 1; c < columns_.size(); ++c) columns_[c].decimals = decimals_for(largest[c]);
@@ -226,13 +224,12 @@ void DataTable::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, const Fram
     const TableRows shown = rows(f);
     for (std::size_t i : shown.shown) {
         // A body's swatch has its colour in the view: its place among the moving bodies.
-        const std::size_t order =
-            static_cast<std::size_t>(std::find(rows_.begin(), rows_.end(), i) - rows_.begin());
+        const std::size_t order = static_cast<std::size_t>(std::find(rows_.begin(), rows_.end(), i) - rows_.begin());
         const float sy = y + 0.5f * (row_height_ - swatch_);
         dl->AddRectFilled(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_),
                           c.fills[order % Palette::kFills], style_.lw(2.0f));
-        dl->AddRect(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_), c.ink,
-                    style_.px(2.0f), 0, style_.lw(1.0f));
+        dl->AddRect(ImVec2(at.x + pad_, sy), ImVec2(at.x + pad_ + swatch_, sy + swatch_), c.ink, style_.px(2.0f), 0,
+                    style_.lw(1.0f));
         y += row_height_;
     }
     if (shown.others > 0) y += row_height_;
@@ -258,8 +255,7 @@ std::vector<std::vector<std::string>> DataTable::text(const FrameState& f) const
     return lines;
 }
 
-void Header::prepare(const FontSet& fonts, std::string title, int time_decimals,
-                     std::vector<LegendEntry> legend) {
+void Header::prepare(const FontSet& fonts, std::string title, int time_decimals, std::vector<LegendEntry> legend) {
     title_ = std::move(title);
     decimals_ = time_decimals;
     legend_ = std::move(legend);
@@ -292,25 +288,25 @@ void Header::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) con
         const float cy = std::round(y + 0.55f * fh);
         const float mark = std::max(e.pixels, style_.px(30.0f));
         switch (e.mark) {
-        case LegendEntry::Mark::arrow:
-            draw_arrow(dl, ImVec2(at.x, cy), ImVec2(at.x + e.pixels, cy), e.colour, style_.lw(style_.arrow),
-                       style_.lw(style_.head_length), style_.lw(style_.head_width));
-            break;
-        case LegendEntry::Mark::curved_arrow:
-            draw_curved_arrow(dl, ImVec2(at.x + 0.5f * mark, cy + fh * 0.9f), fh * 1.1f, 2.3f, 0.85f,
-                              e.colour, style_.lw(2.5f), style_.lw(12.0f), style_.lw(10.0f));
-            break;
-        case LegendEntry::Mark::direction: {
-            const float L = std::min(mark, style_.px(30.0f));
-            const ImVec2 c0(at.x + 0.5f * mark, cy);
-            const ImVec2 d(e.direction.x * 0.5f * L, e.direction.y * 0.5f * L);
-            draw_arrow(dl, ImVec2(c0.x - d.x, c0.y - d.y), ImVec2(c0.x + d.x, c0.y + d.y), e.colour,
-                       style_.lw(2.5f), style_.lw(10.0f), style_.lw(8.0f));
-            break;
-        }
-        case LegendEntry::Mark::dot:
-            dl->AddCircleFilled(ImVec2(at.x + 0.5f * mark, cy), style_.px(3.5f), e.colour);
-            break;
+            case LegendEntry::Mark::arrow:
+                draw_arrow(dl, ImVec2(at.x, cy), ImVec2(at.x + e.pixels, cy), e.colour, style_.lw(style_.arrow),
+                           style_.lw(style_.head_length), style_.lw(style_.head_width));
+                break;
+            case LegendEntry::Mark::curved_arrow:
+                draw_curved_arrow(dl, ImVec2(at.x + 0.5f * mark, cy + fh * 0.9f), fh * 1.1f, 2.3f, 0.85f, e.colour,
+                                  style_.lw(2.5f), style_.lw(12.0f), style_.lw(10.0f));
+                break;
+            case LegendEntry::Mark::direction: {
+                const float L = std::min(mark, style_.px(30.0f));
+                const ImVec2 c0(at.x + 0.5f * mark, cy);
+                const ImVec2 d(e.direction.x * 0.5f * L, e.direction.y * 0.5f * L);
+                draw_arrow(dl, ImVec2(c0.x - d.x, c0.y - d.y), ImVec2(c0.x + d.x, c0.y + d.y), e.colour,
+                           style_.lw(2.5f), style_.lw(10.0f), style_.lw(8.0f));
+                break;
+            }
+            case LegendEntry::Mark::dot:
+                dl->AddCircleFilled(ImVec2(at.x + 0.5f * mark, cy), style_.px(3.5f), e.colour);
+                break;
         }
         draw_rich_text(dl, fonts, fonts.small, ImVec2(at.x + mark + style_.px(10.0f), y), c.ink, e.text);
         y += fh * 1.6f;
@@ -341,8 +337,8 @@ void FormulaBox::prepare(const FontSet& fonts, FormulaText text, float max_width
         text_.lines.erase(text_.lines.begin() + static_cast<long>(widest));
     }
     if (!text_.note.empty() && width_of() > max_width) text_.note.clear();
-    float h = 2 * pad + fonts.bold->FontSize * 1.4f +
-              static_cast<float>(text_.lines.size()) * fonts.table->FontSize * 1.45f;
+    float h =
+        2 * pad + fonts.bold->FontSize * 1.4f + static_cast<float>(text_.lines.size()) * fonts.table->FontSize * 1.45f;
     if (!text_.note.empty()) h += fonts.small->FontSize * 1.5f;
     size_ = ImVec2(std::ceil(std::min(width_of(), max_width)), std::ceil(h));
 }
@@ -388,8 +384,8 @@ void FormulaBox::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at) const {
 
 // ---- Plot ----
 
-void Plot::prepare(const FontSet& fonts, std::string title, std::vector<double> times,
-                   std::vector<Series> series, ImVec2 size) {
+void Plot::prepare(const FontSet& fonts, std::string title, std::vector<double> times, std::vector<Series> series,
+                   ImVec2 size) {
     (void)fonts;
     title_ = std::move(title);
     times_ = std::move(times);
@@ -409,8 +405,7 @@ void Plot::prepare(const FontSet& fonts, std::string title, std::vector<double> 
     if (lo_ > 0 && lo_ < 0.5 * hi_) lo_ = 0;
     if (hi_ < 0 && hi_ > 0.5 * lo_) hi_ = 0;
     const double span = hi_ - lo_;
-    const double pad = span > 1e-12 * std::max(std::abs(hi_), 1.0) ? 0.08 * span
-                                                                    : std::max(0.05 * std::abs(hi_), 1e-3);
+    const double pad = span > 1e-12 * std::max(std::abs(hi_), 1.0) ? 0.08 * span : std::max(0.05 * std::abs(hi_), 1e-3);
     lo_ -= pad;
     hi_ += pad;
 }
@@ -437,15 +432,22 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
     const ImVec4 r = area(fonts, at);
     const ImVec2 p0(r.x, r.y), p1(r.z, r.w);
     if (p1.x - p0.x < 10 || p1.y - p0.y < 10) return;
-    draw_rich_text(dl, fonts, fonts.small, ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, hi_text).x, p0.y - 0.5f * fonts.small->FontSize), c.muted, hi_text);
-    draw_rich_text(dl, fonts, fonts.small, ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, lo_text).x, p1.y - 0.5f * fonts.small->FontSize), c.muted, lo_text);
+    draw_rich_text(dl, fonts, fonts.small,
+                   ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, hi_text).x,
+                          p0.y - 0.5f * fonts.small->FontSize),
+                   c.muted, hi_text);
+    draw_rich_text(dl, fonts, fonts.small,
+                   ImVec2(p0.x - style_.px(6.0f) - rich_text_size(fonts, fonts.small, lo_text).x,
+                          p1.y - 0.5f * fonts.small->FontSize),
+                   c.muted, lo_text);
     const double t0 = times_.front(), t1 = std::max(times_.back(), t0 + 1e-12);
     const auto X = [&](double tt) { return p0.x + static_cast<float>((tt - t0) / (t1 - t0)) * (p1.x - p0.x); };
     const auto Y = [&](double v) { return p1.y - static_cast<float>((v - lo_) / (hi_ - lo_)) * (p1.y - p0.y); };
     dl->AddLine(ImVec2(p0.x, p1.y), ImVec2(p1.x, p1.y), c.panel_border, style_.lw(1.0f));
     dl->AddLine(ImVec2(p0.x, p0.y), ImVec2(p0.x, p1.y), c.panel_border, style_.lw(1.0f));
     if (lo_ < 0 && hi_ > 0)
-        draw_dashed_line(dl, ImVec2(p0.x, Y(0)), ImVec2(p1.x, Y(0)), c.grid, style_.lw(1.0f), style_.px(4.0f), style_.px(4.0f));
+        draw_dashed_line(dl, ImVec2(p0.x, Y(0)), ImVec2(p1.x, Y(0)), c.grid, style_.lw(1.0f), style_.px(4.0f),
+                         style_.px(4.0f));
     // At most one point per pixel column.
     const std::size_t n = times_.size();
     const std::size_t stride = std::max<std::size_t>(1, n / static_cast<std::size_t>(std::max(1.0f, p1.x - p0.x)));
@@ -454,7 +456,8 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
         // (A point on the one before it, as at an instant that leaves the value alone, would
         // draw a spike: ImGui's polyline has no direction for a segment of no length.)
         const auto add = [](std::vector<ImVec2>& line, ImVec2 q) {
-            if (line.empty() || std::abs(line.back().x - q.x) + std::abs(line.back().y - q.y) > 0.01f) line.push_back(q);
+            if (line.empty() || std::abs(line.back().x - q.x) + std::abs(line.back().y - q.y) > 0.01f)
+                line.push_back(q);
         };
         for (std::size_t k = 0; k < n; k += stride) {
             const ImVec2 q(X(times_[k]), Y(s.values[k]));
@@ -463,8 +466,7 @@ void Plot::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) const
         }
         if (all.size() >= 2)
             dl->AddPolyline(all.data(), static_cast<int>(all.size()), with_alpha(s.colour, 0.25f), 0, style_.lw(1.5f));
-        if (past.size() >= 2)
-            dl->AddPolyline(past.data(), static_cast<int>(past.size()), s.colour, 0, style_.lw(2.0f));
+        if (past.size() >= 2) dl->AddPolyline(past.data(), static_cast<int>(past.size()), s.colour, 0, style_.lw(2.0f));
     }
     for (const Annotation& a : annotate(fonts, at, t)) dl->AddCircleFilled(a.anchor, style_.px(3.5f), a.colour);
 }
@@ -526,7 +528,8 @@ void TimeLine::draw(ImDrawList* dl, const FontSet& fonts, ImVec2 at, double t) c
     const float bar = style_.px(3.0f);
     const auto X = [&](double tt) { return x0 + static_cast<float>(std::clamp(tt / duration_, 0.0, 1.0)) * (x1 - x0); };
     draw_rich_text(dl, fonts, fonts.small, ImVec2(at.x, cy - 0.55f * fonts.small->FontSize), c.muted, "0");
-    draw_rich_text(dl, fonts, fonts.small, ImVec2(x1 + style_.px(8.0f), cy - 0.55f * fonts.small->FontSize), c.muted, end);
+    draw_rich_text(dl, fonts, fonts.small, ImVec2(x1 + style_.px(8.0f), cy - 0.55f * fonts.small->FontSize), c.muted,
+                   end);
     dl->AddRectFilled(ImVec2(x0, cy - bar), ImVec2(x1, cy + bar), c.grid, bar);
     dl->AddRectFilled(ImVec2(x0, cy - bar), ImVec2(X(t), cy + bar), with_alpha(c.velocity, 0.55f), bar);
     // Collisions: ticks across the bar (the first one a triangle below it). Many collisions

@@ -68,8 +68,8 @@ private:
 struct LegendEntry {
     enum class Mark { arrow, curved_arrow, dot, direction } mark = Mark::arrow;
     Colour colour = 0;
-    float pixels = 0;    // arrow length
-    std::string text;    // rich text
+    float pixels = 0;        // arrow length
+    std::string text;        // rich text
     ImVec2 direction{1, 0};  // Mark::direction: where a short arrow points (screen, unit)
 };
 
@@ -77,8 +77,7 @@ class Header {
 public:
     explicit Header(const Style& style) : style_(style) {}
     // title: bold first line (may be empty); time_decimals: for "t = 0.350 s".
-    void prepare(const FontSet& fonts, std::string title, int time_decimals,
-                 std::vector<LegendEntry> legend);
+    void prepare(const FontSet& fonts, std::string title, int time_decimals, std::vector<LegendEntry> legend);
     ImVec2 size() const { return size_; }
     void draw(ImDrawList* dl, const FontSet& fonts, ImVec2 top_left, double t) const;
 
@@ -127,8 +126,8 @@ public:
         std::vector<double> values;  // one per time
     };
     explicit Plot(const Style& style) : style_(style) {}
-    void prepare(const FontSet& fonts, std::string title, std::vector<double> times,
-                 std::vector<Series> series, ImVec2 size);
+    void prepare(const FontSet& fonts, std::string title, std::vector<double> times, std::vector<Series> series,
+                 ImVec2 size);
     ImVec2 size() const { return size_; }
     bool empty() const { return series_.empty(); }
     // Draws the axes, the series, and a dot where annotate() puts each series' value.

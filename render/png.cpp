@@ -60,8 +60,7 @@ void on_warning(png_structp, png_const_charp) {}
 // The libpng calls, between setjmp and any longjmp: only plain data lives in this frame (no
 // destructors are skipped). rows: height pointers prepared by the caller. Returns false with
 // state->message set on failure.
-bool encode_rows(Sink* sink, ErrorState* state, int width, int height, png_bytepp rows,
-                 const PngOptions& options) {
+bool encode_rows(Sink* sink, ErrorState* state, int width, int height, png_bytepp rows, const PngOptions& options) {
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, state, on_error, on_warning);
     if (!png) {
         std::snprintf(state->message, sizeof state->message, "out of memory");
@@ -89,15 +88,13 @@ bool encode_rows(Sink* sink, ErrorState* state, int width, int height, png_bytep
 
 void check_args(int width, int height, const std::uint8_t* rgba, const PngOptions& options) {
     if (width < 1 || height < 1 || !rgba) throw std::invalid_argument("PNG: empty image");
-    if (options.level < 0 || options.level > 9)
-        throw std::invalid_argument("PNG: zlib level must be 0..9");
+    if (options.level < 0 || options.level > 9) throw std::invalid_argument("PNG: zlib level must be 0..9");
 }
 
 std::vector<png_bytep> row_pointers(int width, int height, const std::uint8_t* rgba) {
     std::vector<png_bytep> rows(static_cast<std::size_t>(height));
     for (int y = 0; y < height; ++y)
-        rows[static_cast<std::size_t>(y)] =
-            const_cast<png_bytep>(rgba + static_cast<std::size_t>(y) * width * 4);
+        rows[static_cast<std::size_t>(y)] = const_cast<png_bytep>(rgba + static_cast<std::size_t>(y) * width * 4);
     return rows;
 }
 
@@ -105,8 +102,7 @@ std::string errno_text(int e) { return std::strerror(e); }
 
 }  // namespace
 
-std::vector<std::uint8_t> encode_png(int width, int height, const std::uint8_t* rgba,
-                                     const PngOptions& options) {
+std::vector<std::uint8_t> encode_png(int width, int height, const std::uint8_t* rgba, const PngOptions& options) {
     check_args(width, height, rgba, options);
     std::vector<png_bytep> rows = row_pointers(width, height, rgba);
     std::vector<std::uint8_t> out;
@@ -176,12 +172,9 @@ void write_png_atomic(const std::string& path, int width, int height, const std:
     const int close_result = ::close(fd);
     const int close_errno = errno;
     std::string failure;
-    if (!ok)
-        failure = sink.error ? errno_text(sink.error) : std::string("PNG encoding failed: ") + state.message;
-    else if (close_result != 0)
-        failure = errno_text(close_errno);
-    else if (::rename(tmp.c_str(), path.c_str()) != 0)
-        failure = errno_text(errno);
+    if (!ok) failure = sink.error ? errno_text(sink.error) : std::string("PNG encoding failed: ") + state.message;
+    else if (close_result != 0) failure = errno_text(close_errno);
+    else if (::rename(tmp.c_str(), path.c_str()) != 0) failure = errno_text(errno);
     if (!failure.empty()) {
         ::unlink(tmp.c_str());
         throw std::runtime_error(path + ": cannot write: " + failure);
@@ -223,7 +216,8 @@ Image shrink(const Image& im, int width) {
                     for (int c = 0; c < 4; ++c) sum[c] += im.pixel(xx, yy)[c];
             const unsigned count = static_cast<unsigned>((x1 - x0) * (y1 - y0));
             for (int c = 0; c < 4; ++c)
-                out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] = static_cast<std::uint8_t>(sum[c] / count);
+                out.rgba[(static_cast<std::size_t>(y) * out.width + x) * 4 + c] =
+                    static_cast<std::uint8_t>(sum[c] / count);
         }
     return out;
 }

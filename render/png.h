@@ -25,8 +25,7 @@ struct PngOptions {
 };
 
 // Encodes to memory. Throws std::runtime_error.
-std::vector<std::uint8_t> encode_png(int width, int height, const std::uint8_t* rgba,
-                                     const PngOptions& options = {});
+std::vector<std::uint8_t> encode_png(int width, int height, const std::uint8_t* rgba, const PngOptions& options = {});
 
 // Writes `path` atomically: the image goes to `path.tmp-<unique>` in the same directory, which
 // is then renamed to `path`; readers see either the complete file or none (or the previous

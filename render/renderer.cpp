@@ -25,14 +25,15 @@ void clear(const Gl& gl, Colour c) {
 }  // namespace
 
 Renderer::Renderer(GlContext& context, const Scene& scene, const RenderSettings& settings)
-    : context_(context), scene_(scene), settings_(settings),
+    : context_(context),
+      scene_(scene),
+      settings_(settings),
       style_(Style::for_height(settings.font_height > 0 ? settings.font_height : settings.height)) {
     const Gl& gl = context_.gl();
     target_ = std::make_unique<RenderTarget>(gl, settings_.width, settings_.height, settings_.samples);
     imgui_ = std::make_unique<ImGuiLayer>(
         gl, settings_.width, settings_.height,
-        FontSizes::for_height(settings.font_height > 0 ? settings.font_height : settings.height),
-        settings_.font_dir);
+        FontSizes::for_height(settings.font_height > 0 ? settings.font_height : settings.height), settings_.font_dir);
     diagram_ = std::make_unique<DiagramView>(scene_, style_);
     diagram_->reserve_directions(settings_.directions);
     diagram_->frame_only(settings_.frame_bodies);
@@ -62,8 +63,7 @@ void Renderer::set_camera(const CameraRequest& camera) {
     if (view3d_) view3d_->set_camera(camera);
 }
 
-void Renderer::prepare(const std::vector<FrameState>& samples,
-                       const std::vector<ImpactMark>& impacts) {
+void Renderer::prepare(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts) {
     const FontSet& fonts = imgui_->fonts();
     const float W = static_cast<float>(settings_.width), H = static_cast<float>(settings_.height);
     const float m = style_.px(style_.margin);
@@ -79,16 +79,18 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     // The legend, with arrows at their longest for the layout (the final ones are shorter).
     const auto legend = [&](float v_px, double v_value, float p_px, double p_value) {
         std::vector<LegendEntry> entries;
-        entries.push_back({LegendEntry::Mark::arrow, c.velocity, v_px,
-                           "velocity  " + format_compact(v_value) + " m/s", {1, 0}});
+        entries.push_back(
+            {LegendEntry::Mark::arrow, c.velocity, v_px, "velocity  " + format_compact(v_value) + " m/s", {1, 0}});
         if (any_spin)
-            entries.push_back({LegendEntry::Mark::curved_arrow, c.spin, 0.0f,
+            entries.push_back({LegendEntry::Mark::curved_arrow,
+                               c.spin,
+                               0.0f,
                                view3d_ ? "angular velocity \u03C9 (right-hand rule)"
                                        : "angular velocity \u03C9 (+: counter-clockwise)",
                                {1, 0}});
         if (any_impulse)
-            entries.push_back({LegendEntry::Mark::arrow, c.impulse, p_px,
-                               "impulse  " + format_compact(p_value) + " N s", {1, 0}});
+            entries.push_back(
+                {LegendEntry::Mark::arrow, c.impulse, p_px, "impulse  " + format_compact(p_value) + " N s", {1, 0}});
         const Vec3 g = scene_.gravity;
         if (g.norm() > 0) {
             // Where gravity points on the screen (the 3D view: about down).
@@ -102,8 +104,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
     };
     const float longest = style_.px(110.0f);
     if (settings_.header)
-        header_->prepare(fonts, scene_.title, settings_.time_decimals,
-                         legend(longest, 5.0, longest, 5.0));
+        header_->prepare(fonts, scene_.title, settings_.time_decimals, legend(longest, 5.0, longest, 5.0));
     const ImVec2 hs = settings_.header ? header_->size() : ImVec2(0, 0);
 
     // The bottom strip: the time line across the frame; above it the plots and the formula.
@@ -153,8 +154,7 @@ void Renderer::prepare(const std::vector<FrameState>& samples,
                 momentum.push_back({"p_{y}", c.impulse, col.py});
                 if (scene_.dimension == 3) momentum.push_back({"p_{z}", c.normal, col.pz});
             }
-            momentum_plot_->prepare(fonts, "momentum (kg m/s)", t, momentum,
-                                    ImVec2(plot_w, row_h));
+            momentum_plot_->prepare(fonts, "momentum (kg m/s)", t, momentum, ImVec2(plot_w, row_h));
             energy_at_ = ImVec2(m, y);
             momentum_at_ = ImVec2(m + plot_w + gap, y);
         } else {
@@ -259,8 +259,8 @@ void Renderer::draw(const FrameState& frame, const Decor& decor) {
         const ImVec2 s = formula_->size();
         labels.reserve(ImVec4(formula_at_.x, formula_at_.y, formula_at_.x + s.x, formula_at_.y + s.y));
     }
-    annotations_ = view3d_ ? view3d_->annotate(fonts, frame, decor, &labels)
-                           : diagram_->annotate(fonts, frame, decor, &labels);
+    annotations_ =
+        view3d_ ? view3d_->annotate(fonts, frame, decor, &labels) : diagram_->annotate(fonts, frame, decor, &labels);
 
     if (view3d_ && target_->samples() > 0 && settings_.msaa_region) {
         // The ground everywhere without MSAA; then, in the rectangle the bodies, arrows and
@@ -336,8 +336,7 @@ Image Renderer::render(const FrameState& frame, const Decor& decor) {
     return image;
 }
 
-Image compose_figure(GlContext& context, const std::vector<Image>& panels,
-                     const std::vector<std::string>& captions,
+Image compose_figure(GlContext& context, const std::vector<Image>& panels, const std::vector<std::string>& captions,
                      const std::vector<std::string>& notes, int font_height, bool stacked,
                      const std::string& font_dir) {
     if (panels.empty()) throw std::invalid_argument("compose_figure: no panels");
@@ -350,8 +349,8 @@ Image compose_figure(GlContext& context, const std::vector<Image>& panels,
     const float caption_h = sizes.bold * 1.5f + (notes.empty() ? 0.0f : sizes.small * 1.5f);
     const int across = stacked ? 1 : n, down = stacked ? n : 1;
     const int width = static_cast<int>(std::ceil(static_cast<float>(across * pw) + g * static_cast<float>(across + 1)));
-    const int height = static_cast<int>(
-        std::ceil(static_cast<float>(down) * (static_cast<float>(ph) + g + caption_h) + g));
+    const int height =
+        static_cast<int>(std::ceil(static_cast<float>(down) * (static_cast<float>(ph) + g + caption_h) + g));
 
     RenderTarget target(gl, width, height, 0);  // panels are already anti-aliased
     ImGuiLayer imgui(gl, width, height, sizes, font_dir);
@@ -364,8 +363,7 @@ Image compose_figure(GlContext& context, const std::vector<Image>& panels,
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);  // 1:1, no filtering
         gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         gl.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, pw, ph, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                      panels[k].rgba.data());
+        gl.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, pw, ph, 0, GL_RGBA, GL_UNSIGNED_BYTE, panels[k].rgba.data());
     }
     target.bind();
     clear(gl, style.colours.background);
@@ -378,8 +376,8 @@ Image compose_figure(GlContext& context, const std::vector<Image>& panels,
         const ImVec2 p0(x, top), p1(x + static_cast<float>(pw), top + static_cast<float>(ph));
         dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(textures[static_cast<std::size_t>(k)])),
                      p0, p1);
-        dl->AddRect(ImVec2(p0.x - 0.5f, p0.y - 0.5f), ImVec2(p1.x + 0.5f, p1.y + 0.5f),
-                    style.colours.panel_border, 0.0f, 0, style.px(1.0f));
+        dl->AddRect(ImVec2(p0.x - 0.5f, p0.y - 0.5f), ImVec2(p1.x + 0.5f, p1.y + 0.5f), style.colours.panel_border,
+                    0.0f, 0, style.px(1.0f));
         float y = p1.y + g * 0.6f;
         if (static_cast<std::size_t>(k) < captions.size()) {
             const ImVec2 s = rich_text_size(fonts, fonts.bold, captions[static_cast<std::size_t>(k)]);

@@ -36,24 +36,24 @@ struct RenderSettings {
     // 3D with samples: multisample only the rectangle the bodies and arrows cover, the ground
     // around it drawn once without (Scene3dView::above_bounds). Off: the whole frame.
     bool msaa_region = true;
-    bool smooth = true;              // Dear ImGui's edge anti-aliasing (lines, fills, text)
+    bool smooth = true;  // Dear ImGui's edge anti-aliasing (lines, fills, text)
     ViewKind view = ViewKind::diagram;
-    bool header = true;              // title, time, arrow legends
-    bool table = true;               // the data table
-    bool plots = true;               // energy and momentum against time (bottom)
-    bool timeline = true;            // the run's time line with its collisions (bottom)
-    FormulaText formula;             // the first collision's formula with numbers (bottom)
-    CameraRequest camera;            // the 3D view's camera, where the scenario sets it
-    bool directions = false;         // the 2D view's positive-direction arrows (Decor::directions)
+    bool header = true;       // title, time, arrow legends
+    bool table = true;        // the data table
+    bool plots = true;        // energy and momentum against time (bottom)
+    bool timeline = true;     // the run's time line with its collisions (bottom)
+    FormulaText formula;      // the first collision's formula with numbers (bottom)
+    CameraRequest camera;     // the 3D view's camera, where the scenario sets it
+    bool directions = false;  // the 2D view's positive-direction arrows (Decor::directions)
     // When not empty, the 2D view frames these bodies only (scene indices): a figure about one
     // pair of a busy scene is drawn at that pair's size (DiagramView::frame_only).
     std::vector<std::size_t> frame_bodies;
     // Marked points whose velocity arrows the frames draw: counted in the framing and the
     // arrow scale (DiagramView::frame_points).
     std::vector<PointMark> points;
-    int time_decimals = 3;           // "t = 0.350 s"
+    int time_decimals = 3;  // "t = 0.350 s"
     // Font sizes: by default for the frame height; figure panels use the frame's.
-    int font_height = 0;             // 0: height
+    int font_height = 0;  // 0: height
     std::string font_dir = "/usr/share/fonts/truetype/dejavu";
 };
 
@@ -124,8 +124,7 @@ private:
 // One figure of panels side by side with a caption under each (e.g. before / at collision /
 // after), on the diagrams' paper; `stacked`: one above the other (wide strips, so that the
 // figure fits a page's width). All panels must have the same size.
-Image compose_figure(GlContext& context, const std::vector<Image>& panels,
-                     const std::vector<std::string>& captions,
+Image compose_figure(GlContext& context, const std::vector<Image>& panels, const std::vector<std::string>& captions,
                      const std::vector<std::string>& notes, int font_height, bool stacked = false,
                      const std::string& font_dir = "/usr/share/fonts/truetype/dejavu");
 

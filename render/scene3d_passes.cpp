@@ -38,8 +38,8 @@ void arrow(std::vector<MeshDraw>* out, const Vec3& p, const Vec3& d, Colour colo
     const double shaft = len - head;
     if (shaft > 0)
         out->push_back({kShaftMesh, model(p, static_cast<float>(thickness), static_cast<float>(shaft)), R, colour, 0});
-    out->push_back({kHeadMesh, model(p + d / len * shaft, static_cast<float>(head_r), static_cast<float>(head)), R,
-                    colour, 0});
+    out->push_back(
+        {kHeadMesh, model(p + d / len * shaft, static_cast<float>(head_r), static_cast<float>(head)), R, colour, 0});
 }
 
 // The arrows' thickness (m).
@@ -175,7 +175,8 @@ void impact_pass(const View3d& view, const Annotations& items, Overlay* out) {
         if (a.kind == Mark::lever_arm)
             out->impact_lines.push_back({a.from, a.to, with_alpha(a.colour, 0.9f), view.style.lw(view.style.thin)});
         else if (a.kind == Mark::normal)
-            out->impact_lines.push_back({a.from, a.from + (0.75 / 0.95) * (a.to - a.from), a.colour, view.style.lw(2.0f)});
+            out->impact_lines.push_back(
+                {a.from, a.from + (0.75 / 0.95) * (a.to - a.from), a.colour, view.style.lw(2.0f)});
     }
     for (const Annotation& a : items) {
         if (a.kind == Mark::impulse)
@@ -230,8 +231,14 @@ Ground ground_under(const std::vector<Plane>& planes, const Vec3& centre, double
 }
 
 GroundDraw ground_draw(const Ground& g, const Style& style) {
-    return {g.origin, g.u, g.v, static_cast<float>(g.extent), static_cast<float>(g.spacing),
-            style.colours.background, rgb(238, 238, 233), rgb(168, 170, 174)};
+    return {g.origin,
+            g.u,
+            g.v,
+            static_cast<float>(g.extent),
+            static_cast<float>(g.spacing),
+            style.colours.background,
+            rgb(238, 238, 233),
+            rgb(168, 170, 174)};
 }
 
 std::vector<Shadow> shadows(const View3d& view, const Ground& ground, const FrameState& frame) {
@@ -244,8 +251,8 @@ std::vector<Shadow> shadows(const View3d& view, const Ground& ground, const Fram
         if (height < -0.5 * r) continue;
         const double radius = r * (1.0 + 0.25 * std::max(0.0, height) / std::max(r, 1e-9));
         const double strength = 0.30 * std::exp(-std::max(0.0, height - r) / (3 * r));
-        out.push_back({frame.bodies[i].x - height * ground.normal, static_cast<float>(radius),
-                       static_cast<float>(strength)});
+        out.push_back(
+            {frame.bodies[i].x - height * ground.normal, static_cast<float>(radius), static_cast<float>(strength)});
     }
     return out;
 }
@@ -325,8 +332,7 @@ Overlay overlay(const View3d& view, const FrameState& frame, const Decor& decor,
     return out;
 }
 
-bool overlay_bounds(const Overlay& overlay, const Camera& camera, const std::vector<Box3f>& mesh_bounds,
-                    ImVec4* rect) {
+bool overlay_bounds(const Overlay& overlay, const Camera& camera, const std::vector<Box3f>& mesh_bounds, ImVec4* rect) {
     ScreenBox box;
     for (const auto* draws : {&overlay.bodies, &overlay.arrows, &overlay.curl_heads, &overlay.impact_arrows})
         for (const MeshDraw& d : *draws) {
@@ -361,8 +367,6 @@ bool shows_spin(const ArrowScales& scales, const BodyState& s) {
     return scales.k_spin > 0 && w > 1e-9 * scales.max_spin && w > 1e-12;
 }
 
-Vec3 spin_start(const Solid& solid, const BodyState& s) {
-    return s.x + s.w.normalized() * (0.5 * solid.size * 0.9);
-}
+Vec3 spin_start(const Solid& solid, const BodyState& s) { return s.x + s.w.normalized() * (0.5 * solid.size * 0.9); }
 
 }  // namespace collide::render

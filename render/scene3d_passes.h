@@ -83,8 +83,7 @@ Overlay overlay(const View3d& view, const FrameState& frame, const Decor& decor,
 // clipped to the frame): each mesh's bounding box and each line's ends, with a margin of 2
 // pixels (lines: and half their width) for anti-aliasing. A point behind the eye makes it the
 // whole frame. False when the overlay is empty. mesh_bounds: by mesh id.
-bool overlay_bounds(const Overlay& overlay, const Camera& camera, const std::vector<Box3f>& mesh_bounds,
-                    ImVec4* rect);
+bool overlay_bounds(const Overlay& overlay, const Camera& camera, const std::vector<Box3f>& mesh_bounds, ImVec4* rect);
 
 // Where body i's velocity arrow starts: where it leaves the surface, so that the body does not
 // hide it.

@@ -37,10 +37,9 @@ struct Scene3dView::Impl {
     Vec3 centre = Vec3::Zero();  // m: the framed region's centre
     double radius = 1.0;         // m: and its radius
 
-    Impl(const Gl& gl, const Scene& s, const Style& st)
-        : scene(s), style(st), solids(make_solids(s)), batch(gl) {
-        add(arrow_shaft());  // kShaftMesh
-        add(arrow_head());   // kHeadMesh
+    Impl(const Gl& gl, const Scene& s, const Style& st) : scene(s), style(st), solids(make_solids(s)), batch(gl) {
+        add(arrow_shaft());                                        // kShaftMesh
+        add(arrow_head());                                         // kHeadMesh
         for (const Solid& solid : solids.bodies) add(solid.mesh);  // body_mesh(i)
     }
     void add(const Mesh& mesh) {
@@ -93,8 +92,8 @@ Scene3dView::Scene3dView(const Gl& gl, const Scene& scene, const Style& style)
 
 Scene3dView::~Scene3dView() = default;
 
-void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
-                      ImVec4 viewport, int frame_width, int frame_height) {
+void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts, ImVec4 viewport,
+                      int frame_width, int frame_height) {
     Impl& I = *impl_;
     const std::vector<Solid>& solids = I.solids.bodies;
     I.camera.set_viewport(viewport, frame_width, frame_height);
@@ -148,7 +147,8 @@ void Scene3dView::fit(const std::vector<FrameState>& samples, const std::vector<
         for (std::size_t i = 0; i < f.bodies.size() && i < I.scene.bodies.size(); ++i) {
             if (I.scene.bodies[i].is_static() || !solids[i].drawn()) continue;
             const Vec3 tip = f.bodies[i].x + k.k_velocity * f.bodies[i].v +
-                             (f.bodies[i].v.norm() > 0 ? Vec3(0.5 * solids[i].size * f.bodies[i].v.normalized()) : Vec3(Vec3::Zero()));
+                             (f.bodies[i].v.norm() > 0 ? Vec3(0.5 * solids[i].size * f.bodies[i].v.normalized())
+                                                       : Vec3(Vec3::Zero()));
             lo = lo.cwiseMin(tip);
             hi = hi.cwiseMax(tip);
         }
@@ -185,8 +185,7 @@ void Scene3dView::draw(const FrameState& frame, const Decor& decor, const Annota
     draw_above(frame, decor, items);
 }
 
-bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, const Annotations& items,
-                               ImVec4* rect) {
+bool Scene3dView::above_bounds(const FrameState& frame, const Decor& decor, const Annotations& items, ImVec4* rect) {
     const Impl& I = *impl_;
     return overlay_bounds(overlay(I.view(), frame, decor, items), I.camera, I.mesh_bounds, rect);
 }
@@ -245,42 +244,45 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
         const int of = static_cast<int>(k);
         const ImVec2 p = screen(a.from), tip = screen(a.to);
         switch (a.kind) {
-        case Mark::impulse:
-            if (!a.faint) {
-                const double P = norm_of(a.value);
-                impacts.push_back({of, tip, toward(p, tip), "P = " + format_number(P) + " N s", {P}, c.impulse, false});
-                label_body(a.body);
+            case Mark::impulse:
+                if (!a.faint) {
+                    const double P = norm_of(a.value);
+                    impacts.push_back(
+                        {of, tip, toward(p, tip), "P = " + format_number(P) + " N s", {P}, c.impulse, false});
+                    label_body(a.body);
+                }
+                break;
+            case Mark::normal: impacts.push_back({of, tip, toward(p, tip), "n", {}, c.normal, false}); break;
+            case Mark::lever_arm:
+                impacts.push_back({of,
+                                   ImVec2(0.5f * (p.x + tip.x), 0.5f * (p.y + tip.y)),
+                                   ImVec2(-(tip.y - p.y), tip.x - p.x),
+                                   a.text,
+                                   {},
+                                   c.lever,
+                                   false});
+                break;
+            case Mark::velocity: {
+                const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
+                const double v = norm_of(a.value);
+                if (gets(labels_of.speed, a.body)) {
+                    motion.push_back(
+                        {of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v}, c.velocity, false});
+                    label_body(a.body);
+                }
+                break;
             }
-            break;
-        case Mark::normal:
-            impacts.push_back({of, tip, toward(p, tip), "n", {}, c.normal, false});
-            break;
-        case Mark::lever_arm:
-            impacts.push_back({of, ImVec2(0.5f * (p.x + tip.x), 0.5f * (p.y + tip.y)),
-                               ImVec2(-(tip.y - p.y), tip.x - p.x), a.text, {}, c.lever, false});
-            break;
-        case Mark::velocity: {
-            const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
-            const double v = norm_of(a.value);
-            if (gets(labels_of.speed, a.body)) {
-                motion.push_back({of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v},
-                                  c.velocity, false});
-                label_body(a.body);
+            case Mark::spin: {
+                const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
+                const double w = norm_of(a.value);
+                if (gets(labels_of.spin, a.body)) {
+                    motion.push_back(
+                        {of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
+                    label_body(a.body);
+                }
+                break;
             }
-            break;
-        }
-        case Mark::spin: {
-            const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
-            const double w = norm_of(a.value);
-            if (gets(labels_of.spin, a.body)) {
-                motion.push_back({of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w},
-                                  c.spin, false});
-                label_body(a.body);
-            }
-            break;
-        }
-        default:
-            break;
+            default: break;
         }
     }
     pending = impacts;

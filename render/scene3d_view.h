@@ -19,7 +19,7 @@
 #include <imgui.h>
 
 #include "engine/scene.h"
-#include "render/camera.h"  // CameraRequest, default_azimuth, default_elevation
+#include "render/camera.h"        // CameraRequest, default_azimuth, default_elevation
 #include "render/diagram_view.h"  // Decor
 #include "render/draw2d.h"
 #include "render/frame_state.h"
@@ -37,13 +37,12 @@ public:
 
     // Frames the camera on the run inside `viewport` (pixels, top-left origin) of a frame
     // `frame_width` x `frame_height`; sets the arrow scales.
-    void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts,
-             ImVec4 viewport, int frame_width, int frame_height);
+    void fit(const std::vector<FrameState>& samples, const std::vector<ImpactMark>& impacts, ImVec4 viewport,
+             int frame_width, int frame_height);
     void set_camera(const CameraRequest& camera) { camera_ = camera; }
     // What a frame shows (render/annotation.h), its labels placed by `labels` (null: none).
     // Made first: the GL pass and the labels draw this list.
-    Annotations annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor,
-                         LabelPlacer* labels) const;
+    Annotations annotate(const FontSet& fonts, const FrameState& frame, const Decor& decor, LabelPlacer* labels) const;
     // The GL pass (the render target is bound, colour and depth cleared): draw_ground() (the
     // ground, its grid and the shadows) then draw_above() (the items' bodies, arrows, outlines
     // and the collision's vectors; the trails of `frame`).

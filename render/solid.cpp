@@ -124,8 +124,7 @@ Solids make_solids(const Scene& scene) {
         } else if (scene.dimension == 2) {
             if (b.shape2.kind == Shape2::Kind::half_plane)
                 out.planes.push_back({Vec3(b.shape2.normal.x(), b.shape2.normal.y(), 0.0), b.shape2.offset});
-            else
-                s = extruded(b.shape2, out.extrude);
+            else s = extruded(b.shape2, out.extrude);
         } else {
             if (b.shape3.kind == Shape3::Kind::half_space) out.planes.push_back({b.shape3.normal, b.shape3.offset});
             else s = solid3(b.shape3);

@@ -16,9 +16,9 @@ constexpr Colour with_alpha(Colour c, float a) {
 }
 
 struct Palette {
-    Colour background = rgb(251, 251, 248);   // paper
-    Colour ink = rgb(28, 28, 30);             // outlines, text
-    Colour muted = rgb(110, 112, 118);        // secondary text, axes
+    Colour background = rgb(251, 251, 248);  // paper
+    Colour ink = rgb(28, 28, 30);            // outlines, text
+    Colour muted = rgb(110, 112, 118);       // secondary text, axes
     Colour grid = rgb(222, 222, 218);
     Colour static_fill = rgb(214, 214, 210);  // ground, walls, static bodies
     Colour hatch = rgb(90, 90, 92);
@@ -26,20 +26,20 @@ struct Palette {
     // pair differs by at least 15 (CIELAB ΔE) in normal vision and in deuteranopia and
     // protanopia as simulated (tests/render/palette_test.cpp). (A violet spin was 6.6 from
     // the blue velocity for deuteranopes.)
-    Colour velocity = rgb(29, 78, 216);       // blue
-    Colour spin = rgb(200, 110, 0);           // amber
-    Colour impulse = rgb(206, 32, 41);        // red
-    Colour normal = rgb(15, 118, 110);        // dark teal
-    Colour lever = rgb(40, 40, 44);           // r vectors (dashed): near the ink
-    Colour panel = rgb(255, 255, 255, 236);   // table and legend backgrounds
+    Colour velocity = rgb(29, 78, 216);      // blue
+    Colour spin = rgb(200, 110, 0);          // amber
+    Colour impulse = rgb(206, 32, 41);       // red
+    Colour normal = rgb(15, 118, 110);       // dark teal
+    Colour lever = rgb(40, 40, 44);          // r vectors (dashed): near the ink
+    Colour panel = rgb(255, 255, 255, 236);  // table and legend backgrounds
     Colour panel_border = rgb(200, 200, 196);
     // Flat body fills, in scene order (cycled).
     static constexpr int kFills = 6;
     Colour fills[kFills] = {rgb(141, 179, 226), rgb(245, 185, 113), rgb(155, 211, 155),
                             rgb(212, 166, 224), rgb(242, 142, 142), rgb(158, 219, 215)};
     // The same hues, darker: trails and 3D outlines.
-    Colour darks[kFills] = {rgb(46, 94, 160), rgb(184, 110, 24), rgb(52, 128, 52),
-                            rgb(128, 68, 150), rgb(170, 52, 52), rgb(38, 130, 124)};
+    Colour darks[kFills] = {rgb(46, 94, 160),  rgb(184, 110, 24), rgb(52, 128, 52),
+                            rgb(128, 68, 150), rgb(170, 52, 52),  rgb(38, 130, 124)};
 };
 
 struct Style {
@@ -50,9 +50,9 @@ struct Style {
     float arrow = 3.0f;         // arrow shafts
     float head_length = 15.0f;  // arrow heads
     float head_width = 12.0f;
-    float thin = 1.5f;          // r vectors, radius lines, trails
-    float com = 6.0f;           // centre-of-mass marker radius
-    float margin = 24.0f;       // between the frame's edge and its content
+    float thin = 1.5f;            // r vectors, radius lines, trails
+    float com = 6.0f;             // centre-of-mass marker radius
+    float margin = 24.0f;         // between the frame's edge and its content
     float normal_length = 70.0f;  // the unit normal's arrow
     float hatch_depth = 14.0f;    // ground hatching
     float hatch_step = 11.0f;

@@ -13,20 +13,17 @@ namespace {
 void require_complete(const Gl& gl, const char* what) {
     const GLenum status = gl.CheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE)
-        throw std::runtime_error(std::string(what) + " framebuffer incomplete (status " +
-                                 std::to_string(status) + ")");
+        throw std::runtime_error(std::string(what) + " framebuffer incomplete (status " + std::to_string(status) + ")");
 }
 
 }  // namespace
 
-RenderTarget::RenderTarget(const Gl& gl, int width, int height, int samples)
-    : gl_(gl), width_(width), height_(height) {
+RenderTarget::RenderTarget(const Gl& gl, int width, int height, int samples) : gl_(gl), width_(width), height_(height) {
     GLint max_size = 0, max_samples = 0;
     gl_.GetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
     if (width < 1 || height < 1 || width > max_size || height > max_size)
-        throw std::runtime_error("frame size " + std::to_string(width) + "x" +
-                                 std::to_string(height) + " is outside 1.." +
-                                 std::to_string(max_size) + " pixels");
+        throw std::runtime_error("frame size " + std::to_string(width) + "x" + std::to_string(height) +
+                                 " is outside 1.." + std::to_string(max_size) + " pixels");
     gl_.GetIntegerv(GL_MAX_SAMPLES, &max_samples);
     samples_ = samples > 1 ? std::min(samples, static_cast<int>(max_samples)) : 0;
     if (samples_ < 2) samples_ = 0;
@@ -42,8 +39,7 @@ RenderTarget::RenderTarget(const Gl& gl, int width, int height, int samples)
         gl_.GenRenderbuffers(1, &depth_);
         gl_.BindRenderbuffer(GL_RENDERBUFFER, depth_);
         gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
-        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                    depth_);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depth_);
     }
     require_complete(gl_, "the frame's");
 
@@ -53,14 +49,11 @@ RenderTarget::RenderTarget(const Gl& gl, int width, int height, int samples)
         gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_RGBA8, width, height);
         gl_.GenRenderbuffers(1, &msaa_depth_);
         gl_.BindRenderbuffer(GL_RENDERBUFFER, msaa_depth_);
-        gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH24_STENCIL8, width,
-                                           height);
+        gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples_, GL_DEPTH24_STENCIL8, width, height);
         gl_.GenFramebuffers(1, &msaa_fbo_);
         gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
-        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                    msaa_colour_);
-        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
-                                    msaa_depth_);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, msaa_colour_);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, msaa_depth_);
         require_complete(gl_, "the multisampled");
     }
     check_gl(gl_, "creating the render target");

@@ -44,9 +44,9 @@ public:
 private:
     const Gl& gl_;
     int width_, height_, samples_ = 0;
-    bool resolved_ = false;  // since the last bind()
+    bool resolved_ = false;                                   // since the last bind()
     GLuint msaa_fbo_ = 0, msaa_colour_ = 0, msaa_depth_ = 0;  // when multisampled
-    GLuint fbo_ = 0, colour_ = 0, depth_ = 0;                  // single-sample
+    GLuint fbo_ = 0, colour_ = 0, depth_ = 0;                 // single-sample
 };
 
 }  // namespace collide::render

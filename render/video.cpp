@@ -50,19 +50,18 @@ ProgramRun run_program(const std::vector<std::string>& args, const std::string& 
     return run;
 }
 
-void encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps,
-                  VideoFormat format, const std::string& out_path) {
+void encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps, VideoFormat format,
+                  const std::string& out_path) {
     char rate[32];
     std::snprintf(rate, sizeof rate, "%.6g", fps);
     const std::string tmp = out_path + ".tmp-" + std::to_string(::getpid());
     const std::string log =
         (fs::temp_directory_path() / ("collide-ffmpeg-" + std::to_string(::getpid()) + ".log")).string();
-    std::vector<std::string> args = {ffmpeg, "-nostdin", "-y", "-loglevel", "error",
-                                     "-framerate", rate, "-i", frames_dir + "/frame_%05d.png"};
+    std::vector<std::string> args = {
+        ffmpeg, "-nostdin", "-y", "-loglevel", "error", "-framerate", rate, "-i", frames_dir + "/frame_%05d.png"};
     if (format == VideoFormat::mp4) {
-        for (const char* a : {"-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264",
-                              "-pix_fmt", "yuv420p", "-crf", "20", "-movflags", "+faststart",
-                              "-f", "mp4"})
+        for (const char* a : {"-vf", "scale=trunc(iw/2)*2:trunc(ih/2)*2", "-c:v", "libx264", "-pix_fmt", "yuv420p",
+                              "-crf", "20", "-movflags", "+faststart", "-f", "mp4"})
             args.emplace_back(a);
     } else {
         char filter[256];
@@ -70,8 +69,7 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
                       "fps=%.6g,scale='min(640,iw)':-1:flags=lanczos,split[s0][s1];"
                       "[s0]palettegen=stats_mode=diff[p];[s1][p]paletteuse",
                       fps < 30 ? fps : 30.0);
-        for (const char* a : {"-vf", static_cast<const char*>(filter), "-loop", "0", "-f", "gif"})
-            args.emplace_back(a);
+        for (const char* a : {"-vf", static_cast<const char*>(filter), "-loop", "0", "-f", "gif"}) args.emplace_back(a);
     }
     args.push_back(tmp);
 
@@ -89,8 +87,9 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
         fs::remove(tmp, ec);
         while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
         throw std::runtime_error(out_path + ": ffmpeg failed" +
-                                 (!run.started ? std::string(": cannot run ") + ffmpeg
-                                               : message.empty() ? std::string() : ": " + message));
+                                 (!run.started      ? std::string(": cannot run ") + ffmpeg
+                                  : message.empty() ? std::string()
+                                                    : ": " + message));
     }
     fs::rename(tmp, out_path, ec);
     if (ec) {

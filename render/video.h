@@ -27,7 +27,7 @@ ProgramRun run_program(const std::vector<std::string>& args, const std::string& 
 // into `out_path`. MP4: H.264, yuv420p (what players expect), odd sizes rounded down to even.
 // GIF: at most 30 frames/s and 640 pixels wide, with a palette made for the frames.
 // Throws std::runtime_error with ffmpeg's own message when it fails; nothing is left behind.
-void encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps,
-                  VideoFormat format, const std::string& out_path);
+void encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps, VideoFormat format,
+                  const std::string& out_path);
 
 }  // namespace collide::render

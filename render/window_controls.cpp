@@ -80,7 +80,8 @@ void WindowImage::upload(int width, int height, const unsigned char* rgba) {
 
 void WindowImage::draw_behind(int width, int height) const {
     ImGui::GetBackgroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_)),
-                                             ImVec2(0, 0), ImVec2(static_cast<float>(width), static_cast<float>(height)));
+                                             ImVec2(0, 0),
+                                             ImVec2(static_cast<float>(width), static_cast<float>(height)));
 }
 
 }  // namespace collide::render

@@ -38,7 +38,10 @@ class InputError : public std::runtime_error {
 public:
     InputError(std::string file, SourcePos pos, std::string key, std::string message)
         : std::runtime_error(format(file, pos, key, message)),
-          file_(std::move(file)), pos_(pos), key_(std::move(key)), message_(std::move(message)) {}
+          file_(std::move(file)),
+          pos_(pos),
+          key_(std::move(key)),
+          message_(std::move(message)) {}
 
     const std::string& file() const { return file_; }
     SourcePos pos() const { return pos_; }

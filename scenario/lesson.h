@@ -31,10 +31,10 @@ enum class QuestionKind { numeric, predict, choice, explain };
 
 struct LessonQuestion {
     QuestionKind kind = QuestionKind::numeric;
-    std::string text;      // the question, as asked
+    std::string text;                  // the question, as asked
     std::optional<Quantity> quantity;  // what answers it (scenario/lesson_quantity.h); none when
                                        // the question has none (choice, explain, predict with choices)
-    int event = 1;         // event quantities: which collision of the run, from 1
+    int event = 1;                     // event quantities: which collision of the run, from 1
     // Or, instead of `event`, the collision named by its bodies: the `collision`-th (from 1)
     // of pair[0] and pair[1], with pair[0] as the page's a and pair[1] as its b (the impulse is
     // the one on pair[1]). A run of many bodies numbers its collisions in an order that any
@@ -43,12 +43,12 @@ struct LessonQuestion {
     std::vector<std::string> pair;       // empty, or two body names
     std::size_t pair_a = 0, pair_b = 0;  // their scene indices
     int collision = 1;
-    std::string body;      // body quantities: the body's name
-    std::string explain;   // optional (required for predict): why, shown with the answer
-    std::optional<Vec3> at;     // point_velocity_*: a point of the body (world frame at the
-                                // collision instant, m); unset: the contact point
-    std::optional<Vec3> about;  // angular_momentum_*: the fixed point (m); unset: the origin
-    double tolerance = 0.02;    // with a quantity: relative tolerance for marking an answer
+    std::string body;                  // body quantities: the body's name
+    std::string explain;               // optional (required for predict): why, shown with the answer
+    std::optional<Vec3> at;            // point_velocity_*: a point of the body (world frame at the
+                                       // collision instant, m); unset: the contact point
+    std::optional<Vec3> about;         // angular_momentum_*: the fixed point (m); unset: the origin
+    double tolerance = 0.02;           // with a quantity: relative tolerance for marking an answer
     std::vector<std::string> choices;  // choice, predict with choices: the options, in order
     int correct = 0;                   // with choices: the right option, from 1
     std::vector<std::string> reasons;  // with choices: why each option is right or wrong
@@ -67,8 +67,8 @@ const char* question_kind_name(QuestionKind kind);
 
 // The same scene with other settings, shown side by side with it ("e = 1, 0.5, 0").
 struct LessonVariant {
-    std::string label;        // e.g. "e = 0"
-    Scene scene;              // the lesson's scene with the variant's settings
+    std::string label;  // e.g. "e = 0"
+    Scene scene;        // the lesson's scene with the variant's settings
 };
 
 // [[figure]]: a collision the lesson is about, shown as its own before / at / after figure and
@@ -104,12 +104,12 @@ struct LessonPenalty {
 // from: `key` of the [[body]] named `body` (or of [scene] when body is "scene") takes one of
 // lo, lo + step, ... up to hi. The key is a number the table already has (its lesson value).
 struct LessonVary {
-    std::string body;        // a body's name, or "scene"
-    std::string key;         // e.g. "mass"
+    std::string body;  // a body's name, or "scene"
+    std::string key;   // e.g. "mass"
     double lo = 0.0, hi = 0.0, step = 1.0;
     double lesson_value = 0.0;  // the lesson's own value: what the table gives the key
-    SourcePos pos;           // of the entry (for errors found when a draw is run)
-    std::string where;       // "vary[K]"
+    SourcePos pos;              // of the entry (for errors found when a draw is run)
+    std::string where;          // "vary[K]"
 
     // "A.mass" or "scene.restitution": the name lesson_with_values takes.
     std::string name() const { return body + "." + key; }
@@ -127,7 +127,7 @@ struct Lesson {
     std::string id;           // e.g. "catch-up": `collide render catch-up`
     int order = 0;            // position in `collide lessons`
     std::string title;
-    std::string section;      // the page's section it teaches
+    std::string section;  // the page's section it teaches
     std::vector<std::string> goals;
     std::string explanation;  // plain language, Markdown paragraphs
     // For the teacher, not the students (commands to run, files to read): the site shows it
@@ -135,7 +135,7 @@ struct Lesson {
     std::string teacher_notes;
     std::vector<LessonQuestion> questions;
     Scene scene;
-    std::string label;        // the scene's own label beside its variants (e.g. "e = 0.5")
+    std::string label;  // the scene's own label beside its variants (e.g. "e = 0.5")
     std::vector<LessonVariant> variants;
     std::optional<LessonPenalty> penalty;
     std::vector<LessonFigure> figures;  // [[figure]] entries, in order (may be empty)
@@ -184,8 +184,7 @@ std::string resolve_lesson(const std::string& id_or_file, const std::string& dir
 
 // The scenario for a command-line argument: a scenario file, a lesson file or a lesson id (in
 // lessons_dir()). `lesson` receives the lesson when it is one. Throws InputError.
-Scene load_scenario(const std::string& arg, SceneView* view = nullptr,
-                    std::optional<Lesson>* lesson = nullptr);
+Scene load_scenario(const std::string& arg, SceneView* view = nullptr, std::optional<Lesson>* lesson = nullptr);
 // The same from a file's text (`name` in messages, `path` kept as Lesson::file): a lesson when
 // it has a [lesson] table, else a scenario (the WebAssembly module's run(), wasm/).
 Scene parse_scenario_text(const std::string& text, const std::string& name, const std::string& path,

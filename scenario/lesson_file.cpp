@@ -53,8 +53,10 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     const toml::table table = parse_toml_text(text, name);
     const TableReader root(table, name, "");
     const auto lt = root.table("lesson");
-    if (!lt) root.fail("", "missing table [lesson] (a scenario file without one is run with "
-                           "'collide step' or 'collide render FILE')");
+    if (!lt)
+        root.fail("",
+                  "missing table [lesson] (a scenario file without one is run with "
+                  "'collide step' or 'collide render FILE')");
     lt->allow_only({"id", "order", "title", "section", "goals", "explanation", "teacher_notes", "label"});
     L.id = lt->string("id", "a lesson id (letters, digits and -)").value_or("");
     if (L.id.empty()) lt->fail("id", "missing key 'id' (used as `collide render ID`)");
@@ -97,10 +99,10 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
                 for (SceneBody& b : V.scene.bodies) b.friction.reset();
             }
             if (v.has("model"))
-                parse_model(read_choice(v, "model",
-                                        {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"},
-                                        "model", ""),
-                            &V.scene.model);
+                parse_model(
+                    read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"},
+                                "model", ""),
+                    &V.scene.model);
             if (v.has("restitution_law")) {
                 if (V.scene.model != Model::routh)
                     v.fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
@@ -165,8 +167,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     if (root.has("penalty")) {
         const auto pt = root.table("penalty");
         if (!pt) root.fail("penalty", "expected a table [penalty]");
-        if (L.scene.dimension != 1)
-            pt->fail("", "the penalty contact is on a line: [penalty] needs dimension = 1");
+        if (L.scene.dimension != 1) pt->fail("", "the penalty contact is on a line: [penalty] needs dimension = 1");
         pt->allow_only({"stiffness", "damping_ratios", "stiffnesses", "time_step"});
         LessonPenalty P;
         if (!pt->has("stiffness")) pt->fail("stiffness", "missing key 'stiffness' (the spring's k, N/m)");

@@ -71,9 +71,8 @@ std::string resolve_lesson(const std::string& id_or_file, const std::string& dir
     for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {
         const std::string stem = e.path().stem().string();
         const bool named = stem == id_or_file ||
-                           (stem.size() > id_or_file.size() &&
-                            stem.compare(stem.size() - id_or_file.size() - 1, std::string::npos,
-                                         "-" + id_or_file) == 0);
+                           (stem.size() > id_or_file.size() && stem.compare(stem.size() - id_or_file.size() - 1,
+                                                                            std::string::npos, "-" + id_or_file) == 0);
         if (!named || e.path().extension() != ".toml") continue;
         try {
             if (load_lesson(e.path().string()).id == id_or_file) return e.path().string();
@@ -87,10 +86,10 @@ std::string resolve_lesson(const std::string& id_or_file, const std::string& dir
         ids.push_back(L.id);
     }
     const std::string hint = closest_match(id_or_file, ids);
-    throw InputError(id_or_file, {}, "",
-                     "no such file, and no lesson with this id" +
-                         (hint.empty() ? std::string(" (collide lessons lists them)")
-                                       : "; did you mean '" + hint + "'?"));
+    throw InputError(
+        id_or_file, {}, "",
+        "no such file, and no lesson with this id" +
+            (hint.empty() ? std::string(" (collide lessons lists them)") : "; did you mean '" + hint + "'?"));
 }
 
 Scene load_scenario(const std::string& arg, SceneView* view, std::optional<Lesson>* lesson) {
@@ -115,8 +114,11 @@ Scene parse_scenario_text(const std::string& text, const std::string& name, cons
 void write_lesson_list(const std::vector<Lesson>& lessons, bool json, std::ostream& out) {
     if (json) {
         for (const Lesson& L : lessons)
-            out << nlohmann::ordered_json{{"id", L.id}, {"order", L.order}, {"title", L.title},
-                                          {"section", L.section}, {"dimension", L.scene.dimension},
+            out << nlohmann::ordered_json{{"id", L.id},
+                                          {"order", L.order},
+                                          {"title", L.title},
+                                          {"section", L.section},
+                                          {"dimension", L.scene.dimension},
                                           {"duration", L.scene.duration}}
                        .dump()
                 << "\n";

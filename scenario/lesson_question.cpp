@@ -17,9 +17,9 @@ namespace {
 
 // The keys a question of each kind may have (anything else is refused by name).
 const std::vector<std::string>& question_keys() {
-    static const std::vector<std::string> keys = {"kind", "text", "quantity", "event", "pair", "collision", "body",
-                                                  "explain", "at", "about", "tolerance", "choices", "correct",
-                                                  "reasons", "answer", "what_if"};
+    static const std::vector<std::string> keys = {"kind",    "text",    "quantity", "event",  "pair",      "collision",
+                                                  "body",    "explain", "at",       "about",  "tolerance", "choices",
+                                                  "correct", "reasons", "answer",   "what_if"};
     return keys;
 }
 
@@ -107,12 +107,11 @@ void parse_choices(const TableReader& q, LessonQuestion& Q) {
         q.fail("correct", "expected an option's number from 1 to " + std::to_string(Q.choices.size()) + ", got " +
                               std::to_string(k));
     Q.correct = static_cast<int>(k);
-    if (!q.has("reasons"))
-        q.fail("reasons", "missing key 'reasons' (one for each choice: why it is right or wrong)");
+    if (!q.has("reasons")) q.fail("reasons", "missing key 'reasons' (one for each choice: why it is right or wrong)");
     Q.reasons = text_list(q, "reasons", "a list of reasons (strings), one for each choice");
     if (Q.reasons.size() != Q.choices.size())
-        q.fail("reasons", "expected one reason for each of the " + std::to_string(Q.choices.size()) +
-                              " choices, got " + std::to_string(Q.reasons.size()));
+        q.fail("reasons", "expected one reason for each of the " + std::to_string(Q.choices.size()) + " choices, got " +
+                              std::to_string(Q.reasons.size()));
 }
 
 // `what_if = { "A.mass" = 4.0 }`: each value a number; the lesson with them must load (its
@@ -143,53 +142,53 @@ LessonQuestion parse_question(const TableReader& q, const Lesson& L) {
     q.allow_only(question_keys());
     LessonQuestion Q;
     const std::string kind = read_choice(q, "kind", {"numeric", "predict", "choice", "explain"}, "kind", "numeric");
-    Q.kind = kind == "predict" ? QuestionKind::predict
-             : kind == "choice" ? QuestionKind::choice
+    Q.kind = kind == "predict"   ? QuestionKind::predict
+             : kind == "choice"  ? QuestionKind::choice
              : kind == "explain" ? QuestionKind::explain
                                  : QuestionKind::numeric;
     Q.text = q.string("text", "the question (text)").value_or("");
     if (Q.text.empty()) q.fail("text", "missing key 'text'");
     Q.explain = q.string("explain", "why (text)").value_or("");
     const std::vector<std::string> choice_keys = {"choices", "correct", "reasons"};
-    const std::vector<std::string> quantity_keys = {"quantity", "event", "pair", "collision",
-                                                    "body", "at", "about", "tolerance"};
+    const std::vector<std::string> quantity_keys = {"quantity", "event", "pair",  "collision",
+                                                    "body",     "at",    "about", "tolerance"};
     if (Q.kind != QuestionKind::explain) forbid_on(q, kind, {"answer"}, "the model answer of an explain question");
     if (Q.kind != QuestionKind::numeric) forbid_on(q, kind, {"what_if"}, "for numeric questions");
     switch (Q.kind) {
-    case QuestionKind::numeric:
-        forbid_on(q, kind, choice_keys, "for choice and predict questions");
-        parse_quantity(q, L, Q);
-        if (q.has("what_if")) parse_what_if(q, L, Q);
-        break;
-    case QuestionKind::predict:
-        if (q.has("quantity") == q.has("choices"))
-            q.fail(q.has("quantity") ? "choices" : "quantity",
-                   "a predict question has either 'choices' (with 'correct' and 'reasons') or a 'quantity' the "
-                   "engine answers, not both and not neither");
-        if (q.has("quantity")) {
-            for (const std::string& k : choice_keys)
-                q.forbid(k, "'" + k + "' goes with 'choices'; this predict question has a 'quantity' instead");
+        case QuestionKind::numeric:
+            forbid_on(q, kind, choice_keys, "for choice and predict questions");
             parse_quantity(q, L, Q);
-        } else {
-            for (const std::string& k : quantity_keys)
-                q.forbid(k, "'" + k + "' goes with 'quantity'; this predict question has 'choices' instead");
+            if (q.has("what_if")) parse_what_if(q, L, Q);
+            break;
+        case QuestionKind::predict:
+            if (q.has("quantity") == q.has("choices"))
+                q.fail(q.has("quantity") ? "choices" : "quantity",
+                       "a predict question has either 'choices' (with 'correct' and 'reasons') or a 'quantity' the "
+                       "engine answers, not both and not neither");
+            if (q.has("quantity")) {
+                for (const std::string& k : choice_keys)
+                    q.forbid(k, "'" + k + "' goes with 'choices'; this predict question has a 'quantity' instead");
+                parse_quantity(q, L, Q);
+            } else {
+                for (const std::string& k : quantity_keys)
+                    q.forbid(k, "'" + k + "' goes with 'quantity'; this predict question has 'choices' instead");
+                parse_choices(q, Q);
+            }
+            if (Q.explain.empty())
+                q.fail("explain",
+                       "missing key 'explain' (why it happens: shown when the student checks the prediction)");
+            break;
+        case QuestionKind::choice:
+            forbid_on(q, kind, quantity_keys, "for numeric and predict questions");
             parse_choices(q, Q);
-        }
-        if (Q.explain.empty())
-            q.fail("explain",
-                   "missing key 'explain' (why it happens: shown when the student checks the prediction)");
-        break;
-    case QuestionKind::choice:
-        forbid_on(q, kind, quantity_keys, "for numeric and predict questions");
-        parse_choices(q, Q);
-        break;
-    case QuestionKind::explain:
-        forbid_on(q, kind, quantity_keys, "for numeric and predict questions");
-        forbid_on(q, kind, choice_keys, "for choice and predict questions");
-        q.forbid("explain", "an explain question's model answer is its 'answer' (write it there)");
-        Q.answer = q.string("answer", "the model answer (text)").value_or("");
-        if (Q.answer.empty()) q.fail("answer", "missing key 'answer' (the model answer an explain question shows)");
-        break;
+            break;
+        case QuestionKind::explain:
+            forbid_on(q, kind, quantity_keys, "for numeric and predict questions");
+            forbid_on(q, kind, choice_keys, "for choice and predict questions");
+            q.forbid("explain", "an explain question's model answer is its 'answer' (write it there)");
+            Q.answer = q.string("answer", "the model answer (text)").value_or("");
+            if (Q.answer.empty()) q.fail("answer", "missing key 'answer' (the model answer an explain question shows)");
+            break;
     }
     return Q;
 }
@@ -198,10 +197,10 @@ LessonQuestion parse_question(const TableReader& q, const Lesson& L) {
 
 const char* question_kind_name(QuestionKind kind) {
     switch (kind) {
-    case QuestionKind::numeric: return "numeric";
-    case QuestionKind::predict: return "predict";
-    case QuestionKind::choice: return "choice";
-    case QuestionKind::explain: return "explain";
+        case QuestionKind::numeric: return "numeric";
+        case QuestionKind::predict: return "predict";
+        case QuestionKind::choice: return "choice";
+        case QuestionKind::explain: return "explain";
     }
     return "numeric";
 }

@@ -137,8 +137,7 @@ Lesson lesson_with_values(const Lesson& L, const std::map<std::string, double>& 
         const toml::node* old = owner.get(name);
         if (old && old->is_integer() && value == std::floor(value) && std::abs(value) < 1e15)
             owner.insert_or_assign(name, static_cast<int64_t>(value));
-        else
-            owner.insert_or_assign(name, value);
+        else owner.insert_or_assign(name, value);
     }
     std::ostringstream text;
     text << file;

@@ -14,8 +14,7 @@ constexpr double kMaxOutputSteps = 1e6;
 // The 2D and 3D worlds find a contact to an absolute 1e-10 m: on a body smaller than 1 um that
 // would be more than 1e-4 of its size (tests/engine/numerical_edges_test.cpp), so it is refused.
 constexpr double kMinBodySize = 1e-6;
-const char* const kTooSmall =
-    " is below 1e-6 m (1 um): contacts are found to 1e-10 m, too coarse for so small a body";
+const char* const kTooSmall = " is below 1e-6 m (1 um): contacts are found to 1e-10 m, too coarse for so small a body";
 
 const std::vector<std::string>& shapes_of(int dim) {
     static const std::vector<std::string> s1 = {"block"};
@@ -51,7 +50,7 @@ void read_material(const TableReader& t, std::optional<double>* e, std::optional
 }
 
 SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
-    std::vector<std::string> allowed = {"name", "shape", "mass", "density", "static",
+    std::vector<std::string> allowed = {"name",        "shape",    "mass",     "density", "static",
                                         "restitution", "friction", "position", "v"};
     if (dim == 1) allowed.push_back("length");
     if (dim >= 2)
@@ -68,13 +67,12 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
     // data.csv, and a question's body = "cart" would not find it.
     if (std::any_of(b.name.begin(), b.name.end(),
                     [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; }))
-        t.fail("name", "a body's name must be one line, without line breaks or tabs, got '" +
-                           b.name + "'");
+        t.fail("name", "a body's name must be one line, without line breaks or tabs, got '" + b.name + "'");
     b.shape = read_choice(t, "shape", shapes_of(dim), std::to_string(dim) + "D shape", "");
     for (const char* k : {"radius", "size", "vertices", "length", "normal", "offset"})
         if (!shape_takes(b.shape, k))
-            t.forbid(k, std::string("a ") + b.shape + " has no '" + k + "' (that is for the " +
-                            size_key_owner(k) + ")");
+            t.forbid(k,
+                     std::string("a ") + b.shape + " has no '" + k + "' (that is for the " + size_key_owner(k) + ")");
     read_material(t, &b.restitution, &b.friction);
 
     // Geometry, and the area (2D), volume (3D) or length (1D) that a density multiplies.
@@ -93,8 +91,8 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         b.shape3.radius = r;
         extent = dim == 2 ? kPi * r * r : 4.0 / 3.0 * kPi * r * r * r;
     } else if (b.shape == "rectangle" || b.shape == "box") {
-        const std::string what = dim == 2 ? "[width, height], full edge lengths in m"
-                                          : "[x, y, z] full edge lengths in m";
+        const std::string what =
+            dim == 2 ? "[width, height], full edge lengths in m" : "[x, y, z] full edge lengths in m";
         auto size = t.numbers("size", static_cast<std::size_t>(dim), what);
         if (!size) t.fail("", "missing key 'size' (" + what + ")");
         for (double s : *size)
@@ -161,9 +159,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
     if (plane && !is_static) t.fail("static", "a plane is always static");
     const int given = t.has("mass") + t.has("density") + (is_static ? 1 : 0);
     if (given == 0) t.fail("", "missing key 'mass' (kg), 'density' or static = true");
-    if (given > 1)
-        t.fail(t.has("mass") ? "mass" : "density",
-               "give exactly one of mass, density and static = true");
+    if (given > 1) t.fail(t.has("mass") ? "mass" : "density", "give exactly one of mass, density and static = true");
     double mass = 1.0;
     if (t.has("mass")) mass = read_positive(t, "mass", "a mass in kg");
     if (t.has("density")) {
@@ -175,8 +171,9 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
     const Vec3 v = read_vec(t, "v", dim, "m/s").value_or(Vec3::Zero());
     const Vec3 w = read_spin(t, dim);
     if (is_static && (v.norm() > 0 || w.norm() > 0))
-        t.fail(v.norm() > 0 ? "v" : "w", "a static body stays where it is; remove its velocity "
-                                        "or give it a mass");
+        t.fail(v.norm() > 0 ? "v" : "w",
+               "a static body stays where it is; remove its velocity "
+               "or give it a mass");
 
     if (dim == 1) {
         b.body1 = Body1{mass, is_static, x.x(), v.x()};
@@ -189,8 +186,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
         b.body2.v = v.head<2>();
         b.body2.w = w.z();
         if (b.shape == "disc") b.body2.inertia = disc_inertia_2d(mass, b.shape2.radius);
-        if (b.shape2.kind == Shape2::Kind::polygon)
-            b.body2.inertia = mass * polygon_inertia_per_mass(b.shape2.polygon);
+        if (b.shape2.kind == Shape2::Kind::polygon) b.body2.inertia = mass * polygon_inertia_per_mass(b.shape2.polygon);
     } else {
         const Quat q = read_orientation(t);
         b.body3.mass = mass;
@@ -208,8 +204,7 @@ SceneBody read_body(const TableReader& t, int dim, std::size_t index) {
 }  // namespace
 
 double start_overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
-    if (s.dimension == 1)
-        return 0.5 * (a.length + b.length) - std::abs(a.body1.position - b.body1.position);
+    if (s.dimension == 1) return 0.5 * (a.length + b.length) - std::abs(a.body1.position - b.body1.position);
     if (s.dimension == 2)
         return -collide(a.shape2, Pose2{a.body2.position, a.body2.angle}, b.shape2,
                         Pose2{b.body2.position, b.body2.angle})
@@ -219,13 +214,11 @@ double start_overlap(const Scene& s, const SceneBody& a, const SceneBody& b) {
                 .separation;
 }
 
-
 SceneView read_view(const TableReader& root, int dim) {
     SceneView v;
     const auto t = root.table("view");
     if (!t) return v;
-    t->allow_only({"camera_azimuth", "camera_elevation", "camera_target", "camera_distance",
-                   "directions"});
+    t->allow_only({"camera_azimuth", "camera_elevation", "camera_target", "camera_distance", "directions"});
     const auto bounded = [&](const char* key, double lo, double hi, const std::string& what) {
         const std::optional<double> x = t->number(key, what);
         if (x && (*x < lo || *x > hi))
@@ -249,15 +242,16 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
                         const std::vector<std::string>& also_allowed) {
     const TableReader root(table, name, "");
     if (!root.has("scene") && (root.has("a") || root.has("dimension")))
-        root.fail("", "this is a collision file (dimension, [a], [b] at the top): run it with "
-                      "'collide solve'; scenario files have a [scene] table and [[body]] tables");
+        root.fail("",
+                  "this is a collision file (dimension, [a], [b] at the top): run it with "
+                  "'collide solve'; scenario files have a [scene] table and [[body]] tables");
     std::vector<std::string> top = {"scene", "body", "view", "mark"};
     top.insert(top.end(), also_allowed.begin(), also_allowed.end());
     root.allow_only(top);
     auto sc = root.table("scene");
     if (!sc) root.fail("", "missing table [scene]");
-    sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "restitution_law",
-                    "policy", "stepping", "restitution", "friction"});
+    sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "restitution_law", "policy",
+                    "stepping", "restitution", "friction"});
     Scene s;
     s.title = sc->string("title", "a title").value_or("");
     s.dimension = read_dimension(*sc);
@@ -272,12 +266,11 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
     if (sc->has("restitution_law")) {
         if (s.model != Model::routh)
             sc->fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
-        parse_restitution_law(read_choice(*sc, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law",
-                                          "stronge"),
-                              &s.restitution_law);
+        parse_restitution_law(
+            read_choice(*sc, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law", "stronge"),
+            &s.restitution_law);
     }
-    s.policy = read_choice(*sc, "policy", {"sequential", "simultaneous"}, "policy", "sequential") ==
-                       "sequential"
+    s.policy = read_choice(*sc, "policy", {"sequential", "simultaneous"}, "policy", "sequential") == "sequential"
                    ? Policy::sequential
                    : Policy::simultaneous;
     if (sc->has("stepping")) {
@@ -286,8 +279,9 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
         s.stepping = st == "auto" ? StepMode::automatic : st == "always" ? StepMode::always : StepMode::never;
     }
     if (s.model == Model::page_listing && (s.dimension != 3 || s.policy != Policy::sequential))
-        sc->fail("model", "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs "
-                          "only in 3D scenes with policy = \"sequential\"");
+        sc->fail("model",
+                 "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs "
+                 "only in 3D scenes with policy = \"sequential\"");
     std::optional<double> e, mu;
     read_material(*sc, &e, &mu);
     s.restitution = e.value_or(1.0);
@@ -297,8 +291,7 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
 
     const toml::node* list = root.node("body");
     const toml::array* bodies = list ? list->as_array() : nullptr;
-    if (!bodies || bodies->empty())
-        root.fail(list ? "body" : "", "expected one or more [[body]] tables");
+    if (!bodies || bodies->empty()) root.fail(list ? "body" : "", "expected one or more [[body]] tables");
     std::vector<TableReader> readers;
     for (std::size_t i = 0; i < bodies->size(); ++i) {
         const toml::table* t = bodies->get(i)->as_table();
@@ -311,8 +304,8 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
         for (std::size_t i = 0; i < j; ++i) {
             const SceneBody &a = s.bodies[i], &b = s.bodies[j];
             if (a.name == b.name)
-                readers[j].fail("name", "the name '" + b.name + "' is already used by body[" +
-                                            std::to_string(i + 1) + "]");
+                readers[j].fail("name",
+                                "the name '" + b.name + "' is already used by body[" + std::to_string(i + 1) + "]");
             if (a.is_static() && b.is_static()) continue;
             const double depth = start_overlap(s, a, b);
             if (depth > kOverlapTolerance)

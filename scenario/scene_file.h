@@ -26,7 +26,7 @@ struct SceneView {
     std::optional<double> camera_elevation;  // degrees, -89..89: above the horizon
     std::optional<Vec3> camera_target;       // m: the point looked at
     std::optional<double> camera_distance;   // m from the target, > 0
-    bool directions = false;  // the page's positive-direction arrows in the figure's panels
+    bool directions = false;                 // the page's positive-direction arrows in the figure's panels
     std::vector<ViewMark> marks;
 };
 

@@ -26,8 +26,7 @@ Shape read_shape(const TableReader& t, int dim, double mass, bool is_static) {
     const bool sized = s.name == "box" || s.name == "rectangle";
     const bool rod = s.name == "rod";
     if (!round && !(rod && dim == 3)) t.forbid("radius", "a " + s.name + " has no radius here");
-    if (!sized) t.forbid("size", "a " + s.name + " has no size (it takes " +
-                                     (round ? "radius" : "length") + ")");
+    if (!sized) t.forbid("size", "a " + s.name + " has no size (it takes " + (round ? "radius" : "length") + ")");
     if (!rod) t.forbid("length", "a " + s.name + " has no length");
     const double m = is_static ? 1.0 : mass;  // a static body's shape is geometry only
     if (round) {
@@ -36,8 +35,7 @@ Shape read_shape(const TableReader& t, int dim, double mass, bool is_static) {
         s.inertia3 = s.name == "sphere" ? sphere_inertia(m, R) : disc_inertia(m, R);
     } else if (sized) {
         const std::size_t n = s.name == "box" ? 3 : 2;
-        const std::string what = n == 3 ? "[x, y, z] full edge lengths in m"
-                                        : "[width, height] full edge lengths in m";
+        const std::string what = n == 3 ? "[x, y, z] full edge lengths in m" : "[width, height] full edge lengths in m";
         auto size = t.numbers("size", n, what);
         if (!size) t.fail("", "missing key 'size' (" + what + ") for the " + s.name);
         for (double x : *size)
@@ -72,8 +70,7 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
             t.forbid(k, std::string("'") + k + "' has no meaning in 1D (bodies are points on a line)");
     std::vector<std::string> allowed = {"name", "mass", "static", "position", "v"};
     if (dim >= 2) {
-        for (const char* k : {"inertia", "shape", "radius", "size", "length", "w", "r"})
-            allowed.push_back(k);
+        for (const char* k : {"inertia", "shape", "radius", "size", "length", "w", "r"}) allowed.push_back(k);
         allowed.push_back(dim == 2 ? "angle" : "orientation");
     }
     t.allow_only(allowed);
@@ -86,8 +83,7 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
         t.forbid("mass", "a static body is immovable (infinite mass); remove 'mass' or set static = false");
         t.forbid("inertia", "a static body is immovable; remove 'inertia'");
     } else {
-        if (!t.has("mass"))
-            t.fail("", "missing key 'mass' (kg); or set static = true for an immovable body");
+        if (!t.has("mass")) t.fail("", "missing key 'mass' (kg); or set static = true for an immovable body");
         mass = read_positive(t, "mass", "a mass in kg");
     }
     const Vec3 x = read_vec(t, "position", dim, "m").value_or(Vec3::Zero());
@@ -112,7 +108,8 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
                 t.forbid(k, std::string("'") + k + "' needs a shape (shape = \"...\")");
             if (!is_static && !t.has("inertia"))
                 t.fail("", "missing key 'inertia' (" +
-                               std::string(dim == 2 ? "a number in kg m^2" : "[[..],[..],[..]] or [Ixx, Iyy, Izz] in kg m^2") +
+                               std::string(dim == 2 ? "a number in kg m^2"
+                                                    : "[[..],[..],[..]] or [Ixx, Iyy, Izz] in kg m^2") +
                                ") or 'shape'");
             if (dim == 2 && t.has("inertia")) {
                 I2 = read_positive(t, "inertia", "a moment of inertia in kg m^2");
@@ -198,19 +195,20 @@ SolveProblem parse_solve_text(const std::string& text, const std::string& name) 
 SolveProblem parse_solve_table(const toml::table& table, const std::string& name) {
     const TableReader root(table, name, "");
     if (root.has("scene") || root.has("body"))
-        root.fail("", "this is a scenario file ([scene], [[body]]): run it with 'collide step'; "
-                      "collision files give dimension, normal, [a] and [b] at the top");
-    root.allow_only({"title", "dimension", "model", "restitution_law", "restitution", "friction", "normal",
-                     "point", "about", "a", "b"});
+        root.fail("",
+                  "this is a scenario file ([scene], [[body]]): run it with 'collide step'; "
+                  "collision files give dimension, normal, [a] and [b] at the top");
+    root.allow_only({"title", "dimension", "model", "restitution_law", "restitution", "friction", "normal", "point",
+                     "about", "a", "b"});
     SolveProblem P;
     P.file = name;
     P.title = root.string("title", "a title").value_or("");
     P.dimension = read_dimension(root);
     const int d = P.dimension;
 
-    const std::string model = read_choice(
-        root, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"}, "model",
-        "frictionless");
+    const std::string model =
+        read_choice(root, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"}, "model",
+                    "frictionless");
     parse_model(model, &P.model);
     if (root.has("restitution_law")) {
         if (P.model != Model::routh)
@@ -230,8 +228,10 @@ SolveProblem parse_solve_table(const toml::table& table, const std::string& name
         root.forbid("about", "'about' is not used in 1D (there is no angular momentum on a line)");
     }
     auto n = read_vec(root, "normal", d, "(a direction, from A into B)");
-    if (!n) root.fail("", std::string("missing key 'normal' (from A into B; ") +
-                              (d == 1 ? "1 or -1)" : d == 2 ? "[x, y])" : "[x, y, z])"));
+    if (!n)
+        root.fail("", std::string("missing key 'normal' (from A into B; ") + (d == 1   ? "1 or -1)"
+                                                                              : d == 2 ? "[x, y])"
+                                                                                       : "[x, y, z])"));
     if (!(n->norm() > 0)) root.fail("normal", "a zero normal has no direction");
     P.normal = n->normalized();
     P.about = read_vec(root, "about", d, "m").value_or(Vec3::Zero());
@@ -249,8 +249,9 @@ SolveProblem parse_solve_table(const toml::table& table, const std::string& name
         const Vec3 axis = body->b3.orientation * Vec3::UnitX();
         const Vec3 r = P.point - body->b3.position;
         if (r.cross(axis).norm() > 1e-9 * std::max(1.0, r.norm()))
-            root.table(key)->fail("radius", "a thin rod (radius 0) can only be struck on its axis; "
-                                            "give the rod a radius or move the contact point onto the rod");
+            root.table(key)->fail("radius",
+                                  "a thin rod (radius 0) can only be struck on its axis; "
+                                  "give the rod a radius or move the contact point onto the rod");
     }
     return P;
 }

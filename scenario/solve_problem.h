@@ -26,8 +26,8 @@ struct SolveProblem {
     int dimension = 3;
     Model model = Model::frictionless;
     RestitutionLaw restitution_law = RestitutionLaw::stronge;  // model routh only
-    double restitution = 0.0;  // e
-    double friction = 0.0;     // mu
+    double restitution = 0.0;                                  // e
+    double friction = 0.0;                                     // mu
     // Unit normal from A into B. 1D: +1 or -1 in x. 2D: z = 0.
     Vec3 normal = Vec3::UnitX();
     Vec3 point = Vec3::Zero();  // contact point, world frame (2D: z = 0; unused in 1D)

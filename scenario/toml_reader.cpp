@@ -69,18 +69,39 @@ std::string show(double x) {
 
 std::string closest_match(const std::string& word, const std::vector<std::string>& candidates) {
     // Names a physics student may well type for our keys.
-    static const std::vector<std::pair<std::string, std::string>> aliases = {
-        {"velocity", "v"}, {"vel", "v"}, {"omega", "w"}, {"angular_velocity", "w"},
-        {"spin", "w"}, {"pos", "position"}, {"x", "position"}, {"m", "mass"},
-        {"e", "restitution"}, {"cor", "restitution"}, {"mu", "friction"}, {"n", "normal"},
-        {"I", "inertia"}, {"quaternion", "orientation"}, {"rotation", "orientation"},
-        {"q", "orientation"}, {"theta", "angle"}, {"dim", "dimension"}, {"contact", "point"},
-        {"fixed", "static"}, {"immovable", "static"}, {"cube", "box"}, {"ball", "sphere"},
-        {"circle", "disc"}, {"disk", "disc"}, {"square", "rectangle"}, {"rect", "rectangle"},
-        {"stick", "rod"}, {"bar", "rod"}, {"ground", "plane"}, {"wall", "plane"}};
+    static const std::vector<std::pair<std::string, std::string>> aliases = {{"velocity", "v"},
+                                                                             {"vel", "v"},
+                                                                             {"omega", "w"},
+                                                                             {"angular_velocity", "w"},
+                                                                             {"spin", "w"},
+                                                                             {"pos", "position"},
+                                                                             {"x", "position"},
+                                                                             {"m", "mass"},
+                                                                             {"e", "restitution"},
+                                                                             {"cor", "restitution"},
+                                                                             {"mu", "friction"},
+                                                                             {"n", "normal"},
+                                                                             {"I", "inertia"},
+                                                                             {"quaternion", "orientation"},
+                                                                             {"rotation", "orientation"},
+                                                                             {"q", "orientation"},
+                                                                             {"theta", "angle"},
+                                                                             {"dim", "dimension"},
+                                                                             {"contact", "point"},
+                                                                             {"fixed", "static"},
+                                                                             {"immovable", "static"},
+                                                                             {"cube", "box"},
+                                                                             {"ball", "sphere"},
+                                                                             {"circle", "disc"},
+                                                                             {"disk", "disc"},
+                                                                             {"square", "rectangle"},
+                                                                             {"rect", "rectangle"},
+                                                                             {"stick", "rod"},
+                                                                             {"bar", "rod"},
+                                                                             {"ground", "plane"},
+                                                                             {"wall", "plane"}};
     for (const auto& [alias, key] : aliases)
-        if (word == alias && std::find(candidates.begin(), candidates.end(), key) != candidates.end())
-            return key;
+        if (word == alias && std::find(candidates.begin(), candidates.end(), key) != candidates.end()) return key;
     std::string best;
     std::size_t best_d = std::max<std::size_t>(2, word.size() / 3) + 1;
     for (const std::string& c : candidates) {
@@ -105,9 +126,9 @@ std::string read_input_file(const std::string& path, std::string* display_name) 
         in.seekg(0, std::ios::end);
         const auto size = static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg()));
         if (size > kMaxFileBytes)
-            throw InputError(name, {}, "",
-                             "the file is too large (" + std::to_string(size) +
-                                 " bytes); input files are limited to 1 MiB");
+            throw InputError(
+                name, {}, "",
+                "the file is too large (" + std::to_string(size) + " bytes); input files are limited to 1 MiB");
         in.seekg(0);
         text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
     }
@@ -126,8 +147,7 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
     } catch (const toml::parse_error& err) {
         std::string what(err.description());
         // toml++ reports an unterminated string as the line break it runs into.
-        if (what.find("control characters") != std::string::npos)
-            what += " (is a closing quote missing?)";
+        if (what.find("control characters") != std::string::npos) what += " (is a closing quote missing?)";
         throw InputError(name, to_pos(err.source()), "", "TOML syntax error: " + what);
     }
 }
@@ -135,9 +155,7 @@ toml::table parse_toml_text(const std::string& text, const std::string& name) {
 TableReader::TableReader(const toml::table& table, std::string file, std::string prefix)
     : table_(table), file_(std::move(file)), prefix_(std::move(prefix)) {}
 
-std::string TableReader::full_key(const std::string& key) const {
-    return prefix_.empty() ? key : prefix_ + "." + key;
-}
+std::string TableReader::full_key(const std::string& key) const { return prefix_.empty() ? key : prefix_ + "." + key; }
 
 SourcePos TableReader::table_pos() const { return to_pos(table_.source()); }
 
@@ -174,20 +192,19 @@ bool TableReader::has(const std::string& key) const { return table_.get(key) != 
 
 const toml::node* TableReader::node(const std::string& key) const { return table_.get(key); }
 
-double TableReader::checked_number(const toml::node& n, const std::string& key,
-                                   const std::string& what) const {
+double TableReader::checked_number(const toml::node& n, const std::string& key, const std::string& what) const {
     if (!n.is_number())
         throw InputError(file_, to_pos(n.source()), full_key(key),
-                         "expected " + what + ", " +
-                             got(n, "write the number without quotes or units"));
+                         "expected " + what + ", " + got(n, "write the number without quotes or units"));
     const double x = n.value<double>().value_or(std::nan(""));
     if (!std::isfinite(x))
         throw InputError(file_, to_pos(n.source()), full_key(key),
                          "expected " + what + ", got " + show(x) + " (values must be finite)");
     if (std::abs(x) > kMaxMagnitude)
         throw InputError(file_, to_pos(n.source()), full_key(key),
-                         "value " + show(x) + " is out of range (|value| <= 1e12; choose units "
-                         "that keep numbers moderate)");
+                         "value " + show(x) +
+                             " is out of range (|value| <= 1e12; choose units "
+                             "that keep numbers moderate)");
     return x;
 }
 
@@ -202,34 +219,28 @@ double TableReader::required_number(const std::string& key, const std::string& w
     fail("", "missing key '" + key + "' (" + what + ")");
 }
 
-std::optional<long long> TableReader::integer(const std::string& key,
-                                              const std::string& what) const {
+std::optional<long long> TableReader::integer(const std::string& key, const std::string& what) const {
     const toml::node* n = table_.get(key);
     if (!n) return std::nullopt;
     // "got a number" would puzzle whoever wrote 2.0 or 1.5: show the value and what to write.
     if (const auto* x = n->as_floating_point(); x && std::isfinite(x->get())) {
         const double v = x->get() + 0.0;  // -0.0 shows as 0
-        if (v != std::floor(v))
-            fail(key, "expected " + what + ", got " + show(v) + ", which is not a whole number");
+        if (v != std::floor(v)) fail(key, "expected " + what + ", got " + show(v) + ", which is not a whole number");
         if (std::abs(v) < 1e6)
-            fail(key, "expected " + what + ", got " + show(v) + ".0; write " + show(v) +
-                          ", without the decimal point");
+            fail(key, "expected " + what + ", got " + show(v) + ".0; write " + show(v) + ", without the decimal point");
     }
-    if (!n->is_integer())
-        fail(key, "expected " + what + ", " + got(*n, "write the whole number without quotes"));
+    if (!n->is_integer()) fail(key, "expected " + what + ", " + got(*n, "write the whole number without quotes"));
     return n->value<long long>();
 }
 
 std::optional<bool> TableReader::boolean(const std::string& key) const {
     const toml::node* n = table_.get(key);
     if (!n) return std::nullopt;
-    if (!n->is_boolean())
-        fail(key, "expected true or false, " + got(*n, "write true or false without quotes"));
+    if (!n->is_boolean()) fail(key, "expected true or false, " + got(*n, "write true or false without quotes"));
     return n->value<bool>();
 }
 
-std::optional<std::string> TableReader::string(const std::string& key,
-                                               const std::string& what) const {
+std::optional<std::string> TableReader::string(const std::string& key, const std::string& what) const {
     const toml::node* n = table_.get(key);
     if (!n) return std::nullopt;
     if (!n->is_string()) fail(key, "expected " + what + ", got " + type_name(*n));
@@ -244,8 +255,8 @@ std::optional<std::vector<double>> TableReader::numbers(const std::string& key, 
     if (!arr) fail(key, "expected " + what + ", got " + type_name(*n));
     if (count == 0 && arr->empty()) fail(key, "expected " + what + " (at least one number), got none");
     if (count != 0 && arr->size() != count)
-        fail(key, "expected " + what + " (" + std::to_string(count) + " numbers), got " +
-                      std::to_string(arr->size()) + (arr->size() == 1 ? " number" : " numbers"));
+        fail(key, "expected " + what + " (" + std::to_string(count) + " numbers), got " + std::to_string(arr->size()) +
+                      (arr->size() == 1 ? " number" : " numbers"));
     std::vector<double> out;
     for (const toml::node& el : *arr) out.push_back(checked_number(el, key, what));
     return out;
@@ -261,8 +272,7 @@ std::optional<Mat3> TableReader::matrix3(const std::string& key, const std::stri
         const toml::array* row = rows->get(i)->as_array();
         if (!row || row->size() != 3)
             throw InputError(file_, to_pos(rows->get(i)->source()), full_key(key),
-                             "expected " + what + "; row " + std::to_string(i + 1) +
-                                 " is not 3 numbers");
+                             "expected " + what + "; row " + std::to_string(i + 1) + " is not 3 numbers");
         for (int j = 0; j < 3; ++j) m(i, j) = checked_number(*row->get(j), key, what);
     }
     return m;
@@ -277,8 +287,7 @@ std::optional<TableReader> TableReader::table(const std::string& key) const {
 }
 
 // A vector of the problem's dimension, zero-padded to 3D: 1D a number, 2D [x, y], 3D [x, y, z].
-std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim,
-                             const std::string& unit) {
+std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim, const std::string& unit) {
     if (dim == 1) {
         if (auto x = t.number(key, "a number (" + unit + ")")) return Vec3(*x, 0, 0);
         return std::nullopt;
@@ -303,13 +312,11 @@ void check_inertia(const TableReader& t, const std::string& key, const Mat3& I) 
         t.fail(key, "the inertia tensor must be symmetric (I[i][j] == I[j][i])");
     const Vec3 lambda = Eigen::SelfAdjointEigenSolver<Mat3>(I).eigenvalues();  // ascending
     if (!(lambda[0] > 1e-12 * lambda[2]))
-        t.fail(key, "the inertia tensor must be positive definite; its principal moments are " +
-                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
-                        show(lambda[2]) + " kg m^2");
+        t.fail(key, "the inertia tensor must be positive definite; its principal moments are " + show(lambda[0]) +
+                        ", " + show(lambda[1]) + ", " + show(lambda[2]) + " kg m^2");
     if (lambda[0] + lambda[1] < lambda[2] * (1 - 1e-9))
-        t.fail(key, "no rigid body has this inertia: the principal moments " +
-                        show(lambda[0]) + ", " + show(lambda[1]) + ", " +
-                        show(lambda[2]) + " break I1 + I2 >= I3");
+        t.fail(key, "no rigid body has this inertia: the principal moments " + show(lambda[0]) + ", " +
+                        show(lambda[1]) + ", " + show(lambda[2]) + " break I1 + I2 >= I3");
 }
 
 int read_dimension(const TableReader& t) {
@@ -320,8 +327,7 @@ int read_dimension(const TableReader& t) {
 }
 
 Vec3 read_spin(const TableReader& t, int dim) {
-    if (dim == 2)
-        return Vec3(0, 0, t.number("w", "an angular velocity in rad/s (counter-clockwise +)").value_or(0.0));
+    if (dim == 2) return Vec3(0, 0, t.number("w", "an angular velocity in rad/s (counter-clockwise +)").value_or(0.0));
     if (dim == 3) return read_vec(t, "w", 3, "rad/s").value_or(Vec3::Zero());
     return Vec3::Zero();
 }
@@ -340,9 +346,8 @@ void forbid_other_dimension_keys(const TableReader& t, int dim) {
     if (dim == 1) t.forbid("w", "'w' has no meaning in 1D (bodies move on a line)");
 }
 
-std::string read_choice(const TableReader& t, const std::string& key,
-                        const std::vector<std::string>& options, const std::string& what,
-                        const std::string& fallback) {
+std::string read_choice(const TableReader& t, const std::string& key, const std::vector<std::string>& options,
+                        const std::string& what, const std::string& fallback) {
     const auto value = t.string(key, what);
     if (!value) {
         if (fallback.empty()) t.fail("", "missing key '" + key + "' (" + what + ")");

@@ -48,8 +48,7 @@ public:
     std::optional<bool> boolean(const std::string& key) const;
     std::optional<std::string> string(const std::string& key, const std::string& what) const;
     // Array of exactly n numbers (n = 0: of any length but empty).
-    std::optional<std::vector<double>> numbers(const std::string& key, std::size_t n,
-                                               const std::string& what) const;
+    std::optional<std::vector<double>> numbers(const std::string& key, std::size_t n, const std::string& what) const;
     // 3x3 array of arrays of numbers.
     std::optional<Mat3> matrix3(const std::string& key, const std::string& what) const;
     const toml::node* node(const std::string& key) const;
@@ -59,8 +58,7 @@ public:
     const std::string& file() const { return file_; }
 
 private:
-    double checked_number(const toml::node& n, const std::string& key,
-                          const std::string& what) const;
+    double checked_number(const toml::node& n, const std::string& key, const std::string& what) const;
 
     const toml::table& table_;
     std::string file_;
@@ -68,8 +66,7 @@ private:
 };
 
 // A vector of dimension dim, zero-padded to 3D: 1D a number, 2D [x, y], 3D [x, y, z].
-std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim,
-                             const std::string& unit);
+std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim, const std::string& unit);
 constexpr double kMinSize = 1e-12;  // smallest mass or length accepted (kg, m)
 
 // A required number > 0 and >= kMinSize (masses, lengths).
@@ -87,8 +84,7 @@ Quat read_orientation(const TableReader& t);
 // 2D, w in 1D), not "unknown key".
 void forbid_other_dimension_keys(const TableReader& t, int dim);
 // One of `options` (with a "did you mean" hint); `fallback` when absent ("" = required).
-std::string read_choice(const TableReader& t, const std::string& key,
-                        const std::vector<std::string>& options, const std::string& what,
-                        const std::string& fallback);
+std::string read_choice(const TableReader& t, const std::string& key, const std::vector<std::string>& options,
+                        const std::string& what, const std::string& fallback);
 
 }  // namespace collide

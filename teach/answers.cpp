@@ -79,7 +79,8 @@ LessonAnswer what_if_answer(const Lesson& L, const LessonQuestion& q, std::size_
         return answer_questions(changed).front();
     } catch (const InputError& e) {
         std::string values;
-        for (const auto& [key, value] : q.what_if) values += (values.empty() ? "" : ", ") + key + " = " + notation::num_text(value);
+        for (const auto& [key, value] : q.what_if)
+            values += (values.empty() ? "" : ", ") + key + " = " + notation::num_text(value);
         throw InputError(L.file, {}, where, "with " + values + ": " + e.message());
     }
 }
@@ -144,8 +145,8 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
             if (q.has_pair()) c = with_roles(c, q.pair_a, q.pair_b);
             if (info.needs_body && body != c.a && body != c.b)
                 throw InputError(L.file, {}, where + ".body",
-                                 "'" + q.body + "' takes no part in collision " + std::to_string(k + 1) +
-                                     " (" + scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + ")");
+                                 "'" + q.body + "' takes no part in collision " + std::to_string(k + 1) + " (" +
+                                     scene.bodies[c.a].name + " and " + scene.bodies[c.b].name + ")");
             is_a = body == c.a;
         }
         // Before or after the impulse: the velocities of the body's side of the collision.
@@ -157,83 +158,84 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
         // vector quantity's case gives `vec`, read out below as its catalogue entry says.
         Vec3 vec = Vec3::Zero();
         switch (quantity) {
-        case Quantity::impulse: vec = c.impulse; break;
-        case Quantity::impulse_normal: a.value = c.impulse.dot(c.normal); break;
-        case Quantity::velocity_before: vec = v_before; break;
-        case Quantity::velocity_after: vec = v_after; break;
-        case Quantity::spin_before: vec = w_before; break;
-        case Quantity::spin_after: vec = w_after; break;
-        case Quantity::kinetic_energy_before: a.value = pair_kinetic_energy(scene, c, false); break;
-        case Quantity::kinetic_energy_after: a.value = pair_kinetic_energy(scene, c, true); break;
-        case Quantity::energy_lost:
-            a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
-            break;
-        case Quantity::time: a.value = c.t; break;
-        case Quantity::slip_stop_impulse: {
-            // The event's own problem solved again (the world applied this same impact):
-            // the end of the first slip phase when another phase follows it.
-            if (scene.model != Model::routh)
-                throw InputError(L.file, {}, where + ".quantity", "'slip_stop_impulse' needs model = \"routh\"");
-            const Solution s = solve(collision_problem(scene, c));
-            const std::vector<RouthPhase>& ph = s.routh.phases;
-            if (ph.size() < 2 || ph[0].kind != RouthPhase::Kind::slip)
-                throw InputError(L.file, {}, where + ".quantity",
-                                 "the slip does not stop during collision " + std::to_string(k + 1));
-            a.value = ph[0].normal_impulse_to;
-            break;
-        }
-        case Quantity::point_velocity_before:
-        case Quantity::point_velocity_after: {
-            const bool after = quantity == Quantity::point_velocity_after;
-            const Vec3 v = after ? v_after : v_before;
-            const Vec3 w = after ? w_after : w_before;
-            const Vec3& x = is_a ? c.before_a.x : c.before_b.x;
-            vec = v + w.cross(q.at.value_or(c.point) - x);
-            break;
-        }
-        case Quantity::normal_velocity_before:
-        case Quantity::normal_velocity_after: {
-            const bool after = quantity == Quantity::normal_velocity_after;
-            const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
-            const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
-            const Vec3 u = (vb + wb.cross(c.point - c.before_b.x)) - (va + wa.cross(c.point - c.before_a.x));
-            a.value = u.dot(c.normal);
-            break;
-        }
-        case Quantity::momentum_before:
-        case Quantity::momentum_after:
-            vec = pair_momenta(scene, c, quantity == Quantity::momentum_after, Vec3::Zero()).first;
-            break;
-        case Quantity::angular_momentum_before:
-        case Quantity::angular_momentum_after:
-            vec = pair_momenta(scene, c, quantity == Quantity::angular_momentum_after, q.about.value_or(Vec3::Zero()))
-                      .second;
-            break;
-        case Quantity::spin_angular_momentum_before:
-        case Quantity::spin_angular_momentum_after: {
-            const SolveProblem p = collision_problem(scene, c);
-            const Vec3 w = quantity == Quantity::spin_angular_momentum_after ? w_after : w_before;
-            const SolveBody& sb = is_a ? p.a : p.b;
-            if (scene.bodies[body].is_static()) vec = Vec3::Zero();
-            else if (D == 2) vec = Vec3(0, 0, sb.b2.inertia * w.z());
-            else vec = sb.b3.inertia_world() * w;
-            break;
-        }
-        case Quantity::collisions: a.value = static_cast<double>(events.size()); break;
-        case Quantity::last_collision_time:
-            if (events.empty()) throw InputError(L.file, {}, where + ".quantity", "the run has no collision");
-            a.value = events.back().t;
-            break;
-        case Quantity::final_velocity: vec = lift(final_bodies[body].v); break;
-        case Quantity::final_spin: vec = spin_of(final_bodies[body]); break;
-        case Quantity::final_kinetic_energy: a.value = totals(final_bodies).kinetic_energy; break;
-        case Quantity::penalty_damping_ratio: a.value = study().zeta; break;
-        case Quantity::penalty_damping: a.value = study().damping; break;
-        case Quantity::penalty_contact_time: a.value = study().matched.contact_time; break;
-        case Quantity::penalty_peak_force: a.value = study().matched.peak_force; break;
-        case Quantity::penalty_max_overlap: a.value = study().matched.max_overlap; break;
-        case Quantity::penalty_impulse: a.value = study().matched.impulse; break;
-        case Quantity::penalty_restitution: a.value = study().matched.restitution; break;
+            case Quantity::impulse: vec = c.impulse; break;
+            case Quantity::impulse_normal: a.value = c.impulse.dot(c.normal); break;
+            case Quantity::velocity_before: vec = v_before; break;
+            case Quantity::velocity_after: vec = v_after; break;
+            case Quantity::spin_before: vec = w_before; break;
+            case Quantity::spin_after: vec = w_after; break;
+            case Quantity::kinetic_energy_before: a.value = pair_kinetic_energy(scene, c, false); break;
+            case Quantity::kinetic_energy_after: a.value = pair_kinetic_energy(scene, c, true); break;
+            case Quantity::energy_lost:
+                a.value = pair_kinetic_energy(scene, c, false) - pair_kinetic_energy(scene, c, true);
+                break;
+            case Quantity::time: a.value = c.t; break;
+            case Quantity::slip_stop_impulse: {
+                // The event's own problem solved again (the world applied this same impact):
+                // the end of the first slip phase when another phase follows it.
+                if (scene.model != Model::routh)
+                    throw InputError(L.file, {}, where + ".quantity", "'slip_stop_impulse' needs model = \"routh\"");
+                const Solution s = solve(collision_problem(scene, c));
+                const std::vector<RouthPhase>& ph = s.routh.phases;
+                if (ph.size() < 2 || ph[0].kind != RouthPhase::Kind::slip)
+                    throw InputError(L.file, {}, where + ".quantity",
+                                     "the slip does not stop during collision " + std::to_string(k + 1));
+                a.value = ph[0].normal_impulse_to;
+                break;
+            }
+            case Quantity::point_velocity_before:
+            case Quantity::point_velocity_after: {
+                const bool after = quantity == Quantity::point_velocity_after;
+                const Vec3 v = after ? v_after : v_before;
+                const Vec3 w = after ? w_after : w_before;
+                const Vec3& x = is_a ? c.before_a.x : c.before_b.x;
+                vec = v + w.cross(q.at.value_or(c.point) - x);
+                break;
+            }
+            case Quantity::normal_velocity_before:
+            case Quantity::normal_velocity_after: {
+                const bool after = quantity == Quantity::normal_velocity_after;
+                const Vec3 va = after ? c.va_after : c.before_a.v, wa = after ? c.wa_after : c.before_a.w;
+                const Vec3 vb = after ? c.vb_after : c.before_b.v, wb = after ? c.wb_after : c.before_b.w;
+                const Vec3 u = (vb + wb.cross(c.point - c.before_b.x)) - (va + wa.cross(c.point - c.before_a.x));
+                a.value = u.dot(c.normal);
+                break;
+            }
+            case Quantity::momentum_before:
+            case Quantity::momentum_after:
+                vec = pair_momenta(scene, c, quantity == Quantity::momentum_after, Vec3::Zero()).first;
+                break;
+            case Quantity::angular_momentum_before:
+            case Quantity::angular_momentum_after:
+                vec =
+                    pair_momenta(scene, c, quantity == Quantity::angular_momentum_after, q.about.value_or(Vec3::Zero()))
+                        .second;
+                break;
+            case Quantity::spin_angular_momentum_before:
+            case Quantity::spin_angular_momentum_after: {
+                const SolveProblem p = collision_problem(scene, c);
+                const Vec3 w = quantity == Quantity::spin_angular_momentum_after ? w_after : w_before;
+                const SolveBody& sb = is_a ? p.a : p.b;
+                if (scene.bodies[body].is_static()) vec = Vec3::Zero();
+                else if (D == 2) vec = Vec3(0, 0, sb.b2.inertia * w.z());
+                else vec = sb.b3.inertia_world() * w;
+                break;
+            }
+            case Quantity::collisions: a.value = static_cast<double>(events.size()); break;
+            case Quantity::last_collision_time:
+                if (events.empty()) throw InputError(L.file, {}, where + ".quantity", "the run has no collision");
+                a.value = events.back().t;
+                break;
+            case Quantity::final_velocity: vec = lift(final_bodies[body].v); break;
+            case Quantity::final_spin: vec = spin_of(final_bodies[body]); break;
+            case Quantity::final_kinetic_energy: a.value = totals(final_bodies).kinetic_energy; break;
+            case Quantity::penalty_damping_ratio: a.value = study().zeta; break;
+            case Quantity::penalty_damping: a.value = study().damping; break;
+            case Quantity::penalty_contact_time: a.value = study().matched.contact_time; break;
+            case Quantity::penalty_peak_force: a.value = study().matched.peak_force; break;
+            case Quantity::penalty_max_overlap: a.value = study().matched.max_overlap; break;
+            case Quantity::penalty_impulse: a.value = study().matched.impulse; break;
+            case Quantity::penalty_restitution: a.value = study().matched.restitution; break;
         }
         if (info.readout == Readout::vector) {
             if (D == 1) {
@@ -284,7 +286,8 @@ namespace {
 
 // A question's options as a numbered list (indented under its number).
 void write_choices(const LessonQuestion& q, std::ostream& out) {
-    for (std::size_t k = 0; k < q.choices.size(); ++k) out << "   - (" << option_number(k) << ") " << q.choices[k] << "\n";
+    for (std::size_t k = 0; k < q.choices.size(); ++k)
+        out << "   - (" << option_number(k) << ") " << q.choices[k] << "\n";
     out << "\n";
 }
 
@@ -294,8 +297,8 @@ void write_answer(const LessonQuestion& q, const LessonAnswer* a, const char* su
     if (q.has_choices()) {
         out << "Option " << option_number(static_cast<std::size_t>(q.correct - 1)) << ".\n\n";
         for (std::size_t k = 0; k < q.choices.size(); ++k)
-            out << "   - Option " << option_number(k) << (static_cast<int>(k) + 1 == q.correct ? " is right: " : " is wrong: ")
-                << q.reasons[k] << "\n";
+            out << "   - Option " << option_number(k)
+                << (static_cast<int>(k) + 1 == q.correct ? " is right: " : " is wrong: ") << q.reasons[k] << "\n";
         if (!q.explain.empty()) out << "\n   " << q.explain << "\n";
     } else {
         out << (a ? a->text : std::string("?"));
@@ -341,8 +344,8 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
     if (L.figures.empty()) out << "![before, at and after the first collision](figure.png)\n\n";
     for (std::size_t k = 0; k < L.figures.size(); ++k) {
         const LessonFigure& f = L.figures[k];
-        const std::string what = f.caption.empty() ? "before, at and after the collision of " + f.a + " and " + f.b
-                                                   : f.caption;
+        const std::string what =
+            f.caption.empty() ? "before, at and after the collision of " + f.a + " and " + f.b : f.caption;
         out << "![" << what << "](figure" << (k == 0 ? std::string() : "-" + std::to_string(k + 1)) << ".png)\n\n";
         if (!f.caption.empty()) out << "*" << f.caption << "*\n\n";
     }
@@ -367,11 +370,11 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
     if (!L.teacher_notes.empty()) out << "\n## For the teacher\n\n" << L.teacher_notes << "\n";
 }
 
-std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run,
-                                          const PenaltyStudy* penalty) {
+std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run, const PenaltyStudy* penalty) {
     if (lesson.scene.dimension != static_cast<int>(run.index()) + 1)
         throw std::invalid_argument("answer_questions: the recording is of another dimension");
-    return std::visit([&](const auto& r) { return answer<std::decay_t<decltype(r)>::dimension>(lesson, r, run, penalty); }, run);
+    return std::visit(
+        [&](const auto& r) { return answer<std::decay_t<decltype(r)>::dimension>(lesson, r, run, penalty); }, run);
 }
 
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson) {

@@ -15,13 +15,13 @@ namespace collide {
 struct PenaltyStudy;
 
 struct LessonAnswer {
-    double value = 0.0;       // the number (a vector's: its length; see `vector`)
+    double value = 0.0;  // the number (a vector's: its length; see `vector`)
     Vec3 vector = Vec3::Zero();
-    bool is_vector = false;   // 2D and 3D vectors and 3D spins
-    std::string unit;         // "N s", "m/s", ...
-    std::string text;         // "1.2 N s", "(0.9, 0.1) m/s"; without a quantity: "option 2"
-                              // (choices) or the model answer (explain)
-    bool computed = true;     // the engine's number (false: the lesson's written answer)
+    bool is_vector = false;  // 2D and 3D vectors and 3D spins
+    std::string unit;        // "N s", "m/s", ...
+    std::string text;        // "1.2 N s", "(0.9, 0.1) m/s"; without a quantity: "option 2"
+                             // (choices) or the model answer (explain)
+    bool computed = true;    // the engine's number (false: the lesson's written answer)
 };
 // An option's number in a list of choices: 0 -> "1", 1 -> "2", ... (numbers, not letters:
 // "option B" would read as body B). Lists show it as "(1)", answers as "option 1".
@@ -40,9 +40,9 @@ std::size_t question_event(const Lesson& L, const LessonQuestion& q, const std::
                            const std::vector<Event>& events) {
     if (!q.has_pair()) {
         if (static_cast<std::size_t>(q.event) > events.size())
-            throw InputError(L.file, {}, where + ".event",
-                             "asks for collision " + std::to_string(q.event) + " but the run has " +
-                                 std::to_string(events.size()));
+            throw InputError(
+                L.file, {}, where + ".event",
+                "asks for collision " + std::to_string(q.event) + " but the run has " + std::to_string(events.size()));
         return static_cast<std::size_t>(q.event - 1);
     }
     int seen = 0;
@@ -56,11 +56,12 @@ std::size_t question_event(const Lesson& L, const LessonQuestion& q, const std::
         last = e.t;
         if (++seen == q.collision) return k;
     }
-    const std::string times = seen == 0 ? "never collide" : seen == 1 ? "collide only once" :
-                              "collide only " + std::to_string(seen) + " times";
+    const std::string times = seen == 0   ? "never collide"
+                              : seen == 1 ? "collide only once"
+                                          : "collide only " + std::to_string(seen) + " times";
     throw InputError(L.file, {}, where + (q.collision > 1 ? ".collision" : ".pair"),
-                     "asks for collision " + std::to_string(q.collision) + " of '" + q.pair[0] + "' and '" +
-                         q.pair[1] + "', but they " + times + " in the run");
+                     "asks for collision " + std::to_string(q.collision) + " of '" + q.pair[0] + "' and '" + q.pair[1] +
+                         "', but they " + times + " in the run");
 }
 
 // Answers every question (one answer each, in order) from `run`, a recording of the lesson's
@@ -71,14 +72,13 @@ std::size_t question_event(const Lesson& L, const LessonQuestion& q, const std::
 // question asks for a penalty quantity. A question with `what_if` is answered from a run of
 // lesson_with_values (its own scene); one without a quantity gets the lesson's written answer.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecording& run,
-                                          const PenaltyStudy* penalty = nullptr);
+                                           const PenaltyStudy* penalty = nullptr);
 // The same from a run of the lesson's scene sampled at its end only.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
 
 // The lesson as Markdown: title, the page's section, goals, explanation, the predictions
 // ("Before you watch", before the figure), the figure, the predictions checked, the questions
 // with their answers (in <details>, opened on click), and a link to the worked example.
-void write_lesson_markdown(const Lesson& lesson, const std::vector<LessonAnswer>& answers,
-                           std::ostream& out);
+void write_lesson_markdown(const Lesson& lesson, const std::vector<LessonAnswer>& answers, std::ostream& out);
 
 }  // namespace collide

@@ -19,9 +19,7 @@ SolveBody solve_body(const Scene& scene, std::size_t i, const CollisionInstant::
     out.shape = sb.shape;
     // Every dimension's member is filled, as the solve-file parser does: the worked example
     // reads positions and velocities from b3 whatever the dimension.
-    const double mass = scene.dimension == 1   ? sb.body1.mass
-                        : scene.dimension == 2 ? sb.body2.mass
-                                               : sb.body3.mass;
+    const double mass = scene.dimension == 1 ? sb.body1.mass : scene.dimension == 2 ? sb.body2.mass : sb.body3.mass;
     const bool is_static = sb.is_static();
     out.b1 = Body1{mass, is_static, s.x.x(), s.v.x()};
     out.b2.mass = mass;
@@ -41,7 +39,6 @@ SolveBody solve_body(const Scene& scene, std::size_t i, const CollisionInstant::
     out.b3.w = s.w;
     return out;
 }
-
 
 void place(CollisionInstant::Side* side, const Pose2& p) {
     side->x = lift(p.x);

@@ -25,11 +25,11 @@ std::string escape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+            case '&': out += "&amp;"; break;
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '"': out += "&quot;"; break;
+            default: out += c;
         }
     }
     return out;
@@ -122,37 +122,48 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
     char buf[256];
     std::ostringstream o;
     o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
-      << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title) << "\">\n";
+      << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title)
+      << "\">\n";
     o << "<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
     o << "<text x=\"" << left << "\" y=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
     double kx = keys_below ? std::max(8.0, W - right - keys_width) : W - right - keys_width;
     const double ky = keys_below ? 38 : 18;
     for (const Series& key : series) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"3\"/>",
-                      kx, ky - 4, kx + 20, ky - 4, key.colour.c_str());
+        std::snprintf(buf, sizeof buf,
+                      "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"3\"/>", kx,
+                      ky - 4, kx + 20, ky - 4, key.colour.c_str());
         o << buf << "<text x=\"" << kx + 25 << "\" y=\"" << ky << "\">" << math(key.label) << "</text>\n";
         kx += text_width(key.label) + 34;
     }
     // Axes, zero, collisions.
-    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1f V%.1f H%.1f\" fill=\"none\" stroke=\"#999\"/>\n", left, top, H - bottom, W - right);
+    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1f V%.1f H%.1f\" fill=\"none\" stroke=\"#999\"/>\n", left, top,
+                  H - bottom, W - right);
     o << buf;
     if (lo < 0 && hi > 0) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\" stroke-dasharray=\"4 4\"/>\n",
-                      left, Y(0), W - right, Y(0));
+        std::snprintf(
+            buf, sizeof buf,
+            "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ccc\" stroke-dasharray=\"4 4\"/>\n", left,
+            Y(0), W - right, Y(0));
         o << buf;
     }
     for (double c : collisions) {
-        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ce2029\" stroke-opacity=\"0.25\"/>\n",
-                      X(c), top, X(c), H - bottom);
+        std::snprintf(
+            buf, sizeof buf,
+            "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#ce2029\" stroke-opacity=\"0.25\"/>\n",
+            X(c), top, X(c), H - bottom);
         o << buf;
     }
     // The largest and smallest values, at their heights (one label when they are equal).
-    o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_hi) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_hi)) << "</text>\n";
+    o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_hi) + 4 << "\" text-anchor=\"end\" fill=\"#555\">"
+      << escape(n(data_hi)) << "</text>\n";
     if (Y(data_lo) - Y(data_hi) > 14)
-        o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_lo) + 4 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(data_lo)) << "</text>\n";
+        o << "<text x=\"" << left - 6 << "\" y=\"" << Y(data_lo) + 4 << "\" text-anchor=\"end\" fill=\"#555\">"
+          << escape(n(data_lo)) << "</text>\n";
     o << "<text x=\"" << left << "\" y=\"" << H - bottom + 18 << "\" fill=\"#555\">0</text>\n";
-    o << "<text x=\"" << W - right << "\" y=\"" << H - bottom + 18 << "\" text-anchor=\"end\" fill=\"#555\">" << escape(n(T)) << " " << escape(x_unit) << "</text>\n";
-    o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 6 << "\" text-anchor=\"middle\" fill=\"#555\">time (" << escape(x_unit) << ")</text>\n";
+    o << "<text x=\"" << W - right << "\" y=\"" << H - bottom + 18 << "\" text-anchor=\"end\" fill=\"#555\">"
+      << escape(n(T)) << " " << escape(x_unit) << "</text>\n";
+    o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 6
+      << "\" text-anchor=\"middle\" fill=\"#555\">time (" << escape(x_unit) << ")</text>\n";
     for (const Series& s : series) {
         o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
         const std::size_t stride = std::max<std::size_t>(1, t.size() / 600);
@@ -193,8 +204,8 @@ std::string vary_unit(const std::string& key) {
     if (key == "v" || key == "speed") return "m/s";
     if (key == "w") return "rad/s";
     if (key == "angle") return "rad";
-    if (key == "position" || key == "x" || key == "length" || key == "width" || key == "height" ||
-        key == "radius" || key == "size")
+    if (key == "position" || key == "x" || key == "length" || key == "width" || key == "height" || key == "radius" ||
+        key == "size")
         return "m";
     if (key == "inertia") return "kg m^2";
     if (key == "duration" || key == "output_dt") return "s";
@@ -203,7 +214,7 @@ std::string vary_unit(const std::string& key) {
 
 // A slider's label in our notation: "m of A (kg)", "e (the scene)".
 std::string vary_label(const LessonVary& v) {
-    static const char* const symbols[][2] = {{"mass", "m"}, {"v", "v"}, {"w", "ω"}, {"angle", "θ"},
+    static const char* const symbols[][2] = {{"mass", "m"},        {"v", "v"},        {"w", "ω"},       {"angle", "θ"},
                                              {"restitution", "e"}, {"friction", "μ"}, {"position", "x"}};
     std::string symbol = v.key;
     for (const auto& s : symbols)
@@ -225,10 +236,11 @@ std::string number_attr(double x) {
 std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     const int d = L.scene.dimension;
     std::ostringstream o;
-    o << "<section class=\"tryit noprint\" id=\"try-it\" aria-labelledby=\"tryit-heading\" data-fps=\"" << number_attr(fps)
-      << "\" data-dimension=\"" << d << "\">\n<h2 id=\"tryit-heading\">Try it</h2>\n"
+    o << "<section class=\"tryit noprint\" id=\"try-it\" aria-labelledby=\"tryit-heading\" data-fps=\""
+      << number_attr(fps) << "\" data-dimension=\"" << d << "\">\n<h2 id=\"tryit-heading\">Try it</h2>\n"
       << "<p class=\"note\">The same engine as the figures, compiled to WebAssembly and running in this page: "
-      << (L.vary.empty() ? "play the run frame by frame" : "move a slider and it runs the lesson again with your numbers")
+      << (L.vary.empty() ? "play the run frame by frame"
+                         : "move a slider and it runs the lesson again with your numbers")
       << ", and works out the collision " << (L.figures.empty() ? "of the first impact" : "of the figure above")
       << " step by step. Nothing is sent anywhere.</p>\n";
     o << "<p class=\"tryit-status note\" role=\"status\">Loading the engine…</p>\n";
@@ -241,7 +253,8 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
               << "<input type=\"range\" id=\"" << id << "\" data-name=\"" << escape(v.name()) << "\" min=\""
               << number_attr(v.lo) << "\" max=\"" << number_attr(v.hi) << "\" step=\"" << number_attr(v.step)
               << "\" value=\"" << number_attr(v.lesson_value) << "\" data-lesson=\"" << number_attr(v.lesson_value)
-              << "\"><output for=\"" << id << "\">" << escape(notation::num_text(v.lesson_value)) << "</output></div>\n";
+              << "\"><output for=\"" << id << "\">" << escape(notation::num_text(v.lesson_value))
+              << "</output></div>\n";
         }
         o << "<button type=\"button\" class=\"tryit-reset\">The lesson's values</button>\n</div>\n";
     }
@@ -258,14 +271,16 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";
-    o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
+    o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root
+      << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
     o << "</section>\n";
     return o.str();
 }
 
 std::string try_it_data_js(const Lesson& L, const std::string& palette) {
     return "// The Try-it panel's data (teach/html.h try_it_data_js): the lesson's file and the figures' colours.\n"
-           "window.collideTryIt = {\"lesson\": " + nlohmann::json(L.source).dump() + ",\n\"palette\": " + palette + "};\n";
+           "window.collideTryIt = {\"lesson\": " +
+           nlohmann::json(L.source).dump() + ",\n\"palette\": " + palette + "};\n";
 }
 
 }  // namespace collide::html

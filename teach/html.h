@@ -28,8 +28,8 @@ std::string paragraphs(const std::string& text);
 std::string worked_html(const SolveProblem& problem, const Solution& solution, const std::string& world_note);
 
 struct Series {
-    std::string label;   // in our notation (p_x)
-    std::string colour;  // CSS colour
+    std::string label;           // in our notation (p_x)
+    std::string colour;          // CSS colour
     std::vector<double> values;  // one per time
 };
 // A line plot (560 x 230, white): the series against t from 0 to `duration` (in x_unit),

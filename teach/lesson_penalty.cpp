@@ -45,12 +45,13 @@ std::vector<std::string> summary(const PenaltyStudy& s) {
         "The impulse model: P = (1 + e) m v_0 = " + n(s.impulse) + " N s, all at one instant; " + s.a + " leaves at " +
             n(s.va_after) + " m/s, " + s.b + " at " + n(s.vb_after) + " m/s.",
         "The penalty contact: a spring k = " + n(s.stiffness) + " N/m and a damper. For e = " + n(s.restitution) +
-            " without pull, ζ = " + n(s.zeta) + " (solving e = exp(−ζ (π − 2 asin ζ) / √(1 − ζ²))), so c = 2 ζ √(k m) = " +
-            n(s.damping) + " N s/m.",
-        "Integrated (Runge-Kutta, " + std::to_string(r.steps) + " steps): the contact lasts " + n(r.contact_time * 1e3) +
-            " ms (the formula (π − 2 asin ζ) / ω_d: " + n(tc * 1e3) + " ms), pushes with at most " + n(r.peak_force) +
-            " N and goes " + n(r.max_overlap * 1e3) + " mm deep. Its impulse ∫F dt = " + n(r.impulse) + " N s; " + s.a +
-            " leaves at " + n(r.va_after) + " m/s, " + s.b + " at " + n(r.vb_after) + " m/s: e = " + n(r.restitution) + ".",
+            " without pull, ζ = " + n(s.zeta) +
+            " (solving e = exp(−ζ (π − 2 asin ζ) / √(1 − ζ²))), so c = 2 ζ √(k m) = " + n(s.damping) + " N s/m.",
+        "Integrated (Runge-Kutta, " + std::to_string(r.steps) + " steps): the contact lasts " +
+            n(r.contact_time * 1e3) + " ms (the formula (π − 2 asin ζ) / ω_d: " + n(tc * 1e3) +
+            " ms), pushes with at most " + n(r.peak_force) + " N and goes " + n(r.max_overlap * 1e3) +
+            " mm deep. Its impulse ∫F dt = " + n(r.impulse) + " N s; " + s.a + " leaves at " + n(r.va_after) +
+            " m/s, " + s.b + " at " + n(r.vb_after) + " m/s: e = " + n(r.restitution) + ".",
     };
 }
 
@@ -70,7 +71,8 @@ PenaltyStudy penalty_study(const Lesson& L, const AnyRecording& record) {
     const Recording<1>* line = std::get_if<Recording<1>>(&record);
     if (!line) throw std::invalid_argument("penalty_study: the [penalty] contact is 1D, the recording is not");
     if (line->events.empty())
-        throw InputError(L.file, L.penalty->pos, "penalty", "the run has no collision for the penalty contact to replay");
+        throw InputError(L.file, L.penalty->pos, "penalty",
+                         "the run has no collision for the penalty contact to replay");
     const Event1& e = line->events.front();
     PenaltyStudy s;
     s.a = scene.bodies[e.a].name;
@@ -139,7 +141,8 @@ std::string plot_runs(const PenaltyStudy& s, const std::string& title, double Pe
         if (p.empty()) return 0.0;
         if (time >= p.back().t)
             return coast ? std::max(0.0, p.back().*field + p.back().rate * (time - p.back().t)) * scale : 0.0;
-        const auto it = std::upper_bound(p.begin(), p.end(), time, [](double x, const PenaltySample& q) { return x < q.t; });
+        const auto it =
+            std::upper_bound(p.begin(), p.end(), time, [](double x, const PenaltySample& q) { return x < q.t; });
         if (it == p.begin()) return p.front().*field * scale;
         const PenaltySample &hi = *it, &lo = *(it - 1);
         return (lo.*field + (hi.*field - lo.*field) * (time - lo.t) / (hi.t - lo.t)) * scale;
@@ -148,7 +151,8 @@ std::string plot_runs(const PenaltyStudy& s, const std::string& title, double Pe
     for (std::size_t k = 0; k < runs.size(); ++k) {
         const bool matched = k + 1 == runs.size();
         html::Series ser{matched ? "e = " + n(s.restitution) : "ζ = " + n(s.rows[k].zeta),
-                         matched ? "#ce2029" : kColours[k % (sizeof kColours / sizeof *kColours)], {}};
+                         matched ? "#ce2029" : kColours[k % (sizeof kColours / sizeof *kColours)],
+                         {}};
         for (double x : t) ser.values.push_back(value_at(*runs[k], x));
         series.push_back(std::move(ser));
     }
@@ -159,7 +163,9 @@ std::string plot_runs(const PenaltyStudy& s, const std::string& title, double Pe
 
 }  // namespace
 
-std::string penalty_svg(const PenaltyStudy& s) { return plot_runs(s, "Contact force (N)", &PenaltySample::force, 1.0, false); }
+std::string penalty_svg(const PenaltyStudy& s) {
+    return plot_runs(s, "Contact force (N)", &PenaltySample::force, 1.0, false);
+}
 
 std::string penalty_overlap_svg(const PenaltyStudy& s) {
     return plot_runs(s, "Overlap (mm)", &PenaltySample::overlap, 1e3, true);
@@ -194,7 +200,8 @@ void write_penalty_markdown(const PenaltyStudy& s, std::ostream& out) {
             << " | " << n(r.e_pull) << " | " << n(r.pull.restitution) << " | " << n(r.push.contact_time * 1e3) << " | "
             << n(r.push.peak_force) << " |\n";
     out << "\nContact time and peak force: without pull. The samples: [penalty.csv](penalty.csv).\n\n"
-        << stiffness_intro(s) << "\n\n| k (N/m) | c (N s/m) | contact (ms) | peak force (N) | deepest (mm) | "
+        << stiffness_intro(s)
+        << "\n\n| k (N/m) | c (N s/m) | contact (ms) | peak force (N) | deepest (mm) | "
            "e, integrated |\n|---|---|---|---|---|---|\n";
     for (const PenaltyStudy::Stiff& r : s.stiffer)
         out << "| " << n(r.stiffness) << " | " << n(r.damping) << " | " << n(r.run.contact_time * 1e3) << " | "
@@ -219,7 +226,8 @@ std::string penalty_html(const PenaltyStudy& s) {
           << n(r.push.restitution) << "</td><td>" << n(r.e_pull) << "</td><td>" << n(r.pull.restitution) << "</td><td>"
           << n(r.push.contact_time * 1e3) << "</td><td>" << n(r.push.peak_force) << "</td></tr>\n";
     o << "</table>\n<p class=\"note\">Contact time and peak force: without pull.</p>\n";
-    o << "<p>" << html::math(stiffness_intro(s)) << "</p>\n<table>\n<tr><th>k (N/m)</th><th>c (N s/m)</th>"
+    o << "<p>" << html::math(stiffness_intro(s))
+      << "</p>\n<table>\n<tr><th>k (N/m)</th><th>c (N s/m)</th>"
          "<th>contact (ms)</th><th>peak force (N)</th><th>deepest (mm)</th><th>e, integrated</th></tr>\n";
     for (const PenaltyStudy::Stiff& r : s.stiffer)
         o << "<tr><td>" << n(r.stiffness) << "</td><td>" << n(r.damping) << "</td><td>" << n(r.run.contact_time * 1e3)

@@ -16,27 +16,27 @@
 namespace collide {
 
 struct PenaltyStudy {
-    std::string a, b;                 // the two bodies (A on the left)
-    double time = 0.0;                // s, when they first touch
-    double mass = 0.0;                // m = 1 / (1/m_A + 1/m_B), kg
-    double va = 0.0, vb = 0.0;        // just before, m/s
-    double restitution = 0.0;         // the pair's e (the impulse model's)
-    double impulse = 0.0;             // the impulse model's P on B, N s
+    std::string a, b;                       // the two bodies (A on the left)
+    double time = 0.0;                      // s, when they first touch
+    double mass = 0.0;                      // m = 1 / (1/m_A + 1/m_B), kg
+    double va = 0.0, vb = 0.0;              // just before, m/s
+    double restitution = 0.0;               // the pair's e (the impulse model's)
+    double impulse = 0.0;                   // the impulse model's P on B, N s
     double va_after = 0.0, vb_after = 0.0;  // and its velocities after, m/s
-    double stiffness = 0.0;           // k, N/m
-    double zeta = 0.0, damping = 0.0;  // matched to e without pull
-    PenaltyRun matched;               // the penalty contact with them
+    double stiffness = 0.0;                 // k, N/m
+    double zeta = 0.0, damping = 0.0;       // matched to e without pull
+    PenaltyRun matched;                     // the penalty contact with them
     struct Row {
         double zeta = 0.0, damping = 0.0;
         double e_push = 0.0, e_pull = 0.0;  // the closed forms, without and with pull
         PenaltyRun push, pull;              // integrated
     };
-    std::vector<Row> rows;            // the [penalty] damping ratios, in order
+    std::vector<Row> rows;  // the [penalty] damping ratios, in order
     struct Stiff {
         double stiffness = 0.0, damping = 0.0;  // the matched zeta: c = 2 zeta sqrt(k m)
         PenaltyRun run;                         // without pull
     };
-    std::vector<Stiff> stiffer;       // the [penalty] stiffnesses (default k/4, k, 4k)
+    std::vector<Stiff> stiffer;  // the [penalty] stiffnesses (default k/4, k, 4k)
 };
 
 // The penalty contacts of the first collision of `run`, the lesson's recorded run. Throws

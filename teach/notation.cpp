@@ -23,10 +23,10 @@ std::size_t subscript_end(const std::string& text, std::size_t i) {
 
 std::string to_tex(const std::string& text) {
     static const std::vector<std::pair<std::string, std::string>> symbols = {
-        {"ω", "\\omega "}, {"μ", "\\mu "}, {"Δ", "\\Delta "}, {"]×", "]_\\times "},
-        {"×", "\\times "}, {"·", "\\cdot "}, {"⁻¹", "^{-1}"}, {"²", "^{2}"}, {"ᵀ", "^{T}"},
-        {"′", "'"}, {"≥", "\\ge "}, {"≤", "\\le "}, {"→", "\\Rightarrow "}, {"−", "-"},
-        {"≈", "\\approx "}, {"%", "\\%"}, {"‖", "\\|"}, {"✓", "\\checkmark "}};
+        {"ω", "\\omega "}, {"μ", "\\mu "},  {"Δ", "\\Delta "},      {"]×", "]_\\times "}, {"×", "\\times "},
+        {"·", "\\cdot "},  {"⁻¹", "^{-1}"}, {"²", "^{2}"},          {"ᵀ", "^{T}"},        {"′", "'"},
+        {"≥", "\\ge "},    {"≤", "\\le "},  {"→", "\\Rightarrow "}, {"−", "-"},           {"≈", "\\approx "},
+        {"%", "\\%"},      {"‖", "\\|"},    {"✓", "\\checkmark "}};
     std::string out;
     for (std::size_t i = 0; i < text.size();) {
         bool matched = false;
@@ -91,9 +91,13 @@ F words(const std::string& text) {
 F unit(const std::string& u) {
     std::string tex;
     for (std::size_t i = 0; i < u.size();) {  // kg·m²/s -> kg\cdot m^{2}/s
-        if (u.compare(i, 2, "·") == 0) { tex += "\\cdot "; i += 2; }
-        else if (u.compare(i, 2, "²") == 0) { tex += "^{2}"; i += 2; }
-        else tex += u[i++];
+        if (u.compare(i, 2, "·") == 0) {
+            tex += "\\cdot ";
+            i += 2;
+        } else if (u.compare(i, 2, "²") == 0) {
+            tex += "^{2}";
+            i += 2;
+        } else tex += u[i++];
     }
     return {" " + u, "\\,\\mathrm{" + tex + "}"};
 }
@@ -104,9 +108,7 @@ constexpr double kNoise = 1e-10;    // SI: shown as 0 for students
 constexpr double kRelativeNoise = 1e-9;
 
 // A vector's or matrix's entries for students: those below 1e-9 of the largest set to 0.
-double cleaned(double x, double largest) {
-    return student && std::abs(x) < kRelativeNoise * largest ? 0.0 : x;
-}
+double cleaned(double x, double largest) { return student && std::abs(x) < kRelativeNoise * largest ? 0.0 : x; }
 }  // namespace
 
 StudentNumbers::StudentNumbers() : was_(student) { student = true; }

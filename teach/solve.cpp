@@ -94,7 +94,9 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
 template <class Body>
 void set_velocity(Body* body, const Vec3& v, const Vec3& w);
 template <>
-void set_velocity(Body1* body, const Vec3& v, const Vec3&) { body->v = v.x(); }
+void set_velocity(Body1* body, const Vec3& v, const Vec3&) {
+    body->v = v.x();
+}
 template <>
 void set_velocity(Body2* body, const Vec3& v, const Vec3& w) {
     body->v = v.head<2>();
@@ -118,13 +120,11 @@ Solution solve(const SolveProblem& P) {
         compute(a, b, P.normal, P, &s);
         if (P.model == Model::stick && !a.is_static() && !b.is_static()) {
             const Response3 direct = stick(a, b, P.normal), ne = stick_newton_euler(a, b, P.normal);
-            s.newton_euler_difference =
-                std::max({(direct.va - ne.va).norm(), (direct.vb - ne.vb).norm(),
-                          (direct.wa - ne.wa).norm(), (direct.wb - ne.wb).norm()});
+            s.newton_euler_difference = std::max({(direct.va - ne.va).norm(), (direct.vb - ne.vb).norm(),
+                                                  (direct.wa - ne.wa).norm(), (direct.wb - ne.wb).norm()});
         }
     } else if (P.dimension == 2) {
-        const ImpactBody2 a = at_contact(P.a.b2, P.point.head<2>()),
-                          b = at_contact(P.b.b2, P.point.head<2>());
+        const ImpactBody2 a = at_contact(P.a.b2, P.point.head<2>()), b = at_contact(P.b.b2, P.point.head<2>());
         compute(a, b, Vec2(P.normal.head<2>()), P, &s);
     } else {
         const ImpactBody1 a = at_contact(P.a.b1), b = at_contact(P.b.b1);
@@ -179,8 +179,7 @@ Solution solve(const SolveProblem& P) {
             *ke = t.kinetic_energy;
         } else if (P.dimension == 2) {
             const std::vector<Body2> bodies = {a.b2, b.b2};
-            const Totals2 t = totals(bodies, P.about.head<2>()),
-                          tp = totals(bodies, P.point.head<2>());
+            const Totals2 t = totals(bodies, P.about.head<2>()), tp = totals(bodies, P.point.head<2>());
             *p = embed(t.momentum);
             *L = embed(t.angular_momentum);
             *Lp = embed(tp.angular_momentum);

@@ -25,11 +25,11 @@ struct Solution {
     double inv_ma = 0.0, inv_mb = 0.0, rot_a = 0.0, rot_b = 0.0;
     Mat3 inv_Ia = Mat3::Zero(), inv_Ib = Mat3::Zero();  // world; 2D: zz
     Mat3 Ia = Mat3::Zero(), Ib = Mat3::Zero();
-    Mat3 K = Mat3::Zero();                              // collision matrix (2D: 2x2 block)
-    Vec3 P_stick = Vec3::Zero();                        // coulomb: sticking impulse
-    Vec3 slip = Vec3::Zero();                           // coulomb: sliding direction t
-    double slide_denominator = 0.0;                     // n . K (n - mu t)
-    RouthDetail routh;                                  // routh: its phases, impulses and works
+    Mat3 K = Mat3::Zero();           // collision matrix (2D: 2x2 block)
+    Vec3 P_stick = Vec3::Zero();     // coulomb: sticking impulse
+    Vec3 slip = Vec3::Zero();        // coulomb: sliding direction t
+    double slide_denominator = 0.0;  // n . K (n - mu t)
+    RouthDetail routh;               // routh: its phases, impulses and works
     // stick: the combined body (centre relative to the contact point).
     double M = 0.0;
     Vec3 xc = Vec3::Zero(), da = Vec3::Zero(), db = Vec3::Zero();
@@ -45,8 +45,8 @@ struct Solution {
     double un_after = 0.0;
     // Checks: totals of the dynamic bodies, before and after.
     Vec3 p_before = Vec3::Zero(), p_after = Vec3::Zero();
-    Vec3 L_before = Vec3::Zero(), L_after = Vec3::Zero();              // about problem.about
-    Vec3 Lp_before = Vec3::Zero(), Lp_after = Vec3::Zero();            // about the contact point
+    Vec3 L_before = Vec3::Zero(), L_after = Vec3::Zero();    // about problem.about
+    Vec3 Lp_before = Vec3::Zero(), Lp_after = Vec3::Zero();  // about the contact point
     double ke_before = 0.0, ke_after = 0.0;
 };
 

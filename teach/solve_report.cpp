@@ -27,7 +27,8 @@ std::string energy_gain_note(Model model) {
                "no real impact can do. This is Kane's paradox, and integrating the impact does not cure it: "
                "Newton's law asks for a normal velocity after the impact that friction may have made costly. "
                "restitution_law = \"stronge\" (the default) never creates energy.";
-    return "Energy gained: the " + name + " model left the pair with more kinetic energy than it had, which no "
+    return "Energy gained: the " + name +
+           " model left the pair with more kinetic energy than it had, which no "
            "real impact can do. This is Kane's paradox: a friction law applied in one step, with Newton's "
            "restitution, creates energy when the slip stops or reverses during the impact. model = \"routh\" "
            "(the impact integrated over the normal impulse) with Stronge's energetic restitution never does.";
@@ -36,8 +37,8 @@ std::string energy_gain_note(Model model) {
 namespace {
 
 std::string headline(const SolveProblem& P) {
-    std::string h = "Collision response: " + std::to_string(P.dimension) + "D, model " +
-                    model_name(P.model) + ", e = " + num_text(P.restitution);
+    std::string h = "Collision response: " + std::to_string(P.dimension) + "D, model " + model_name(P.model) +
+                    ", e = " + num_text(P.restitution);
     if (P.model == Model::coulomb || P.model == Model::routh) h += ", μ = " + num_text(P.friction);
     if (P.model == Model::routh) h += std::string(", restitution law ") + restitution_law_name(P.restitution_law);
     return h;

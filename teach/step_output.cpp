@@ -32,14 +32,15 @@ std::vector<bool> gains_of(const Scene& s, const std::vector<Event>& events) {
     for (std::size_t first = 0; first < events.size();) {
         std::size_t end = first;
         std::vector<CollisionInstant> instant;
-        while (end < events.size() && events[end].t == events[first].t) instant.push_back(collision_instant(events[end++]));
+        while (end < events.size() && events[end].t == events[first].t)
+            instant.push_back(collision_instant(events[end++]));
         const InstantEnergy e = instant_kinetic_energy(s, instant);
-        if (gains_energy(e.before, e.after)) std::fill(out.begin() + static_cast<long>(first), out.begin() + static_cast<long>(end), true);
+        if (gains_energy(e.before, e.after))
+            std::fill(out.begin() + static_cast<long>(first), out.begin() + static_cast<long>(end), true);
         first = end;
     }
     return out;
 }
-
 
 using nlohmann::ordered_json;
 
@@ -52,9 +53,7 @@ ordered_json arr(const Quat& q) { return ordered_json::array({q.w(), q.x(), q.y(
 
 std::string txt(double x) { return notation::num_text(x); }
 std::string txt(const Vec2& v) { return "(" + txt(v.x()) + ", " + txt(v.y()) + ")"; }
-std::string txt(const Vec3& v) {
-    return "(" + txt(v.x()) + ", " + txt(v.y()) + ", " + txt(v.z()) + ")";
-}
+std::string txt(const Vec3& v) { return "(" + txt(v.x()) + ", " + txt(v.y()) + ", " + txt(v.z()) + ")"; }
 std::string txt(const Quat& q) {
     return "(" + txt(q.w()) + ", " + txt(q.x()) + ", " + txt(q.y()) + ", " + txt(q.z()) + ")";
 }
@@ -66,35 +65,30 @@ ordered_json body_json(const Body2& b) {
     return {{"x", arr(b.position)}, {"v", arr(b.v)}, {"w", b.w}, {"angle", b.angle}};
 }
 ordered_json body_json(const Body3& b) {
-    return {{"x", arr(b.position)}, {"v", arr(b.v)}, {"w", arr(b.w)},
-            {"orientation", arr(b.orientation)}};
+    return {{"x", arr(b.position)}, {"v", arr(b.v)}, {"w", arr(b.w)}, {"orientation", arr(b.orientation)}};
 }
 
-std::string body_text(const Body1& b) {
-    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s";
-}
+std::string body_text(const Body1& b) { return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s"; }
 std::string body_text(const Body2& b) {
-    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s   angle " + txt(b.angle) +
-           " rad   w " + txt(b.w) + " rad/s";
+    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s   angle " + txt(b.angle) + " rad   w " + txt(b.w) +
+           " rad/s";
 }
 std::string body_text(const Body3& b) {
-    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s   orientation " +
-           txt(b.orientation) + "   w " + txt(b.w) + " rad/s";
+    return "x " + txt(b.position) + " m   v " + txt(b.v) + " m/s   orientation " + txt(b.orientation) + "   w " +
+           txt(b.w) + " rad/s";
 }
 
 template <class Body>
 double potential_energy(const Scene& s, const std::vector<Body>& bodies) {
     double potential = 0.0;
-    for (const Body& b : bodies)
-        potential += potential_energy(b, s.gravity);
+    for (const Body& b : bodies) potential += potential_energy(b, s.gravity);
     return potential;
 }
 
 // ---- One state, one event ----
 
 template <class Body>
-std::string state_json_of(const Scene& s, double t, const std::vector<Body>& bodies,
-                          std::size_t only) {
+std::string state_json_of(const Scene& s, double t, const std::vector<Body>& bodies, std::size_t only) {
     ordered_json j;
     j["t"] = t;
     ordered_json named = ordered_json::object();
@@ -110,22 +104,21 @@ std::string state_json_of(const Scene& s, double t, const std::vector<Body>& bod
 }
 
 template <class Body>
-std::string state_text_of(const Scene& s, double t, const std::vector<Body>& bodies,
-                          std::size_t only) {
+std::string state_text_of(const Scene& s, double t, const std::vector<Body>& bodies, std::size_t only) {
     std::size_t width = 0;
     for (const SceneBody& b : s.bodies) width = std::max(width, b.name.size());
     std::ostringstream out;
     out << "t = " << txt(t) << " s\n";
     for (std::size_t i = 0; i < bodies.size(); ++i) {
         if (only != kAllBodies && only != i) continue;
-        out << "  " << std::left << std::setw(static_cast<int>(width)) << s.bodies[i].name
-            << std::right << "  " << (bodies[i].is_static ? "static" : body_text(bodies[i])) << "\n";
+        out << "  " << std::left << std::setw(static_cast<int>(width)) << s.bodies[i].name << std::right << "  "
+            << (bodies[i].is_static ? "static" : body_text(bodies[i])) << "\n";
     }
     if (only == kAllBodies) {
         const auto sums = totals(bodies);
         out << "  kinetic " << txt(sums.kinetic_energy) << " J   total "
-            << txt(sums.kinetic_energy + potential_energy(s, bodies)) << " J   momentum "
-            << txt(sums.momentum) << " N s";
+            << txt(sums.kinetic_energy + potential_energy(s, bodies)) << " J   momentum " << txt(sums.momentum)
+            << " N s";
         if constexpr (!std::is_same_v<Body, Body1>)
             out << "   angular momentum " << txt(sums.angular_momentum) << " kg m^2/s";
         out << "\n";
@@ -161,12 +154,12 @@ std::string event_text_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     const std::string& b = s.bodies[e.b].name;
     const auto change = [](const std::string& name, const typename Event<D>::Velocity& before,
                            const typename Event<D>::Velocity& after) {
-        return name + " v " + txt(before.v) + " -> " + txt(after.v) + " m/s, w " + txt(before.w) +
-               " -> " + txt(after.w) + " rad/s";
+        return name + " v " + txt(before.v) + " -> " + txt(after.v) + " m/s, w " + txt(before.w) + " -> " +
+               txt(after.w) + " rad/s";
     };
-    return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at " + txt(e.point) + " m, normal " +
-           txt(e.normal) + ", impulse on " + b + " " + txt(e.impulse) + " N s; " +
-           change(a, e.before_a, e.after_a) + "; " + change(b, e.before_b, e.after_b) + gain_warning(energy_gain);
+    return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at " + txt(e.point) + " m, normal " + txt(e.normal) +
+           ", impulse on " + b + " " + txt(e.impulse) + " N s; " + change(a, e.before_a, e.after_a) + "; " +
+           change(b, e.before_b, e.after_b) + gain_warning(energy_gain);
 }
 
 // ---- The table ----
@@ -182,16 +175,15 @@ void table_header_1d(const Scene& s, std::ostream& out) {
     for (const SceneBody& b : s.bodies) {
         out << "  " << std::setw(12) << (b.name + ".x") << std::setw(12) << (b.name + ".v");
     }
-    out << std::setw(14) << "kinetic (J)" << std::setw(14) << "total (J)" << std::setw(16)
-        << "momentum (N s)" << "\n";
+    out << std::setw(14) << "kinetic (J)" << std::setw(14) << "total (J)" << std::setw(16) << "momentum (N s)"
+        << "\n";
 }
 
 void table_row_1d(const Scene& s, double t, const std::vector<Body1>& bodies, std::ostream& out) {
     const Totals1 sums = totals(bodies);
     out << fixed(t, 10);
     for (const Body1& b : bodies) out << "  " << fixed(b.position, 12) << fixed(b.v, 12);
-    out << fixed(sums.kinetic_energy, 14)
-        << fixed(sums.kinetic_energy + potential_energy(s, bodies), 14)
+    out << fixed(sums.kinetic_energy, 14) << fixed(sums.kinetic_energy + potential_energy(s, bodies), 14)
         << fixed(sums.momentum, 16) << "\n";
 }
 
@@ -210,8 +202,7 @@ public:
         for (std::size_t c = 0; c < columns_.size(); ++c) {
             for (const auto& r : rows_) {
                 part[c].resize(r[c].size());
-                for (std::size_t k = 0; k < r[c].size(); ++k)
-                    part[c][k] = std::max(part[c][k], r[c][k].size());
+                for (std::size_t k = 0; k < r[c].size(); ++k) part[c][k] = std::max(part[c][k], r[c][k].size());
             }
             width[c] = std::max(content_width(part[c]), columns_[c].header.size());
         }
@@ -258,12 +249,8 @@ Table::Cell cell(const V& v) {
 }
 
 // Per moving body: x, v, (2D) angle, w; static bodies never move and are left out.
-std::vector<Table::Cell> body_cells(const Body2& b) {
-    return {cell(b.position), cell(b.v), cell(b.angle), cell(b.w)};
-}
-std::vector<Table::Cell> body_cells(const Body3& b) {
-    return {cell(b.position), cell(b.v), cell(b.w)};
-}
+std::vector<Table::Cell> body_cells(const Body2& b) { return {cell(b.position), cell(b.v), cell(b.angle), cell(b.w)}; }
+std::vector<Table::Cell> body_cells(const Body3& b) { return {cell(b.position), cell(b.v), cell(b.w)}; }
 
 template <int D>
 Table table_columns(const Scene& s) {
@@ -349,8 +336,7 @@ StepJson json_run(const Scene& s) {
 std::vector<double> output_times(const Scene& s) {
     // K = the duration / output_dt rounded, when that is within 1e-9 of an integer, else rounded up.
     const double steps = s.duration / s.output_dt;
-    const auto K = static_cast<long>(std::abs(steps - std::round(steps)) < 1e-9 ? std::round(steps)
-                                                                               : std::ceil(steps));
+    const auto K = static_cast<long>(std::abs(steps - std::round(steps)) < 1e-9 ? std::round(steps) : std::ceil(steps));
     std::vector<double> t;
     for (long k = 0; k <= K; ++k) t.push_back(std::min(s.duration, k * s.output_dt));
     return t;
@@ -396,10 +382,9 @@ std::string event_json(const Scene& s, const Event3& e, bool gain) { return even
 std::string event_text(const Scene& s, const Event1& e, bool energy_gain) {
     const std::string& a = s.bodies[e.a].name;
     const std::string& b = s.bodies[e.b].name;
-    return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at x = " + txt(e.point) +
-           " m, impulse on " + b + " " + txt(e.impulse) + " N s; " + a + " v " + txt(e.va_before) +
-           " -> " + txt(e.va_after) + " m/s, " + b + " v " + txt(e.vb_before) + " -> " +
-           txt(e.vb_after) + " m/s" + gain_warning(energy_gain);
+    return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at x = " + txt(e.point) + " m, impulse on " + b + " " +
+           txt(e.impulse) + " N s; " + a + " v " + txt(e.va_before) + " -> " + txt(e.va_after) + " m/s, " + b + " v " +
+           txt(e.vb_before) + " -> " + txt(e.vb_after) + " m/s" + gain_warning(energy_gain);
 }
 std::string event_text(const Scene& s, const Event2& e, bool gain) { return event_text_of<2>(s, e, gain); }
 std::string event_text(const Scene& s, const Event3& e, bool gain) { return event_text_of<3>(s, e, gain); }

@@ -37,9 +37,9 @@ public:
     std::vector<WorkedLines> build() {
         given();
         if (d == 1) {
-            step("Relative velocity along the normal", {f("u_n = (v_b − v_a) n"),
-                 f("u_n = (") + num(s.vpb.x()) + f(" − ") + paren(s.vpa.x()) + f(") × ") +
-                     paren(s.n.x()) + f(" = ") + num(s.un) + unit("m/s")});
+            step("Relative velocity along the normal",
+                 {f("u_n = (v_b − v_a) n"), f("u_n = (") + num(s.vpb.x()) + f(" − ") + paren(s.vpa.x()) + f(") × ") +
+                                                paren(s.n.x()) + f(" = ") + num(s.un) + unit("m/s")});
         } else {
             kinematics();
         }
@@ -100,20 +100,16 @@ private:
             const Vec3& x = B.b3.position;
             const Vec3& vi = B.b3.v;
             F line = words(who + ": ");
-            if (B.b3.is_static)
-                line = line + words("static (immovable), ") + f("1/" + sym("m", c) + " = 0");
-            else
-                line = line + f(sym("m", c) + " = ") + num(B.b3.mass) + unit("kg");
+            if (B.b3.is_static) line = line + words("static (immovable), ") + f("1/" + sym("m", c) + " = 0");
+            else line = line + f(sym("m", c) + " = ") + num(B.b3.mass) + unit("kg");
             if (d >= 2 || B.b1.position != 0.0) line = line + f(",  " + sym("x", c) + " = ") + V(x) + unit("m");
             line = line + f(",  " + sym("v", c) + " = ") + V(vi) + unit("m/s");
             if (d >= 2) line = line + f(",  " + sym("ω", c) + " = ") + W(B.b3.w) + unit("rad/s");
             lines.push_back(line);
             if (d >= 2 && !B.b3.is_static) {
                 const Mat3& I = c == 'a' ? s.Ia : s.Ib;
-                if (d == 2)
-                    lines.push_back(f(sym("I", c) + " = ") + num(I(2, 2)) + unit("kg·m²"));
-                else
-                    lines.push_back(f(sym("I", c) + " = R I_body Rᵀ = ") + mat(I, 3) + unit("kg·m²"));
+                if (d == 2) lines.push_back(f(sym("I", c) + " = ") + num(I(2, 2)) + unit("kg·m²"));
+                else lines.push_back(f(sym("I", c) + " = R I_body Rᵀ = ") + mat(I, 3) + unit("kg·m²"));
             }
         }
         if (d >= 2) lines.push_back(f("p = ") + V(P.point) + unit("m") + f(",  n = ") + V(s.n));
@@ -135,14 +131,13 @@ private:
             const Vec3& vp = c == 'a' ? s.vpa : s.vpb;
             lever.push_back(f(sym("r", c) + " = p − " + sym("x", c) + " = ") + V(P.point) + f(" − ") +
                             V(B.b3.position) + f(" = ") + V(r) + unit("m"));
-            vel.push_back(f(sym("v_p", c) + " = " + sym("v", c) + " + " + sym("ω", c) + " × " +
-                            sym("r", c) + " = ") + V(B.b3.v) + f(" + ") + W(B.b3.w) + f(" × ") +
-                          V(r) + f(" = ") + V(vp) + unit("m/s"));  // vectors carry parentheses
+            vel.push_back(f(sym("v_p", c) + " = " + sym("v", c) + " + " + sym("ω", c) + " × " + sym("r", c) + " = ") +
+                          V(B.b3.v) + f(" + ") + W(B.b3.w) + f(" × ") + V(r) + f(" = ") + V(vp) +
+                          unit("m/s"));  // vectors carry parentheses
         }
         step({"Lever arms", "r = p − x"}, lever);
         step({"Contact-point velocities", "v_p = v + ω × r"}, vel,
-             d == 2 ? std::vector<std::string>{"In 2D, ω × r = ω (−r_y, r_x)."}
-                    : std::vector<std::string>{});
+             d == 2 ? std::vector<std::string>{"In 2D, ω × r = ω (−r_y, r_x)."} : std::vector<std::string>{});
         step({"Relative velocity at the contact", "u = v_pb − v_pa,  u_n = u · n"},
              {f("u = ") + V(s.vpb) + f(" − ") + V(s.vpa) + f(" = ") + V(s.u) + unit("m/s"),
               f("u_n = ") + V(s.u) + f(" · ") + V(s.n) + f(" = ") + num(s.un) + unit("m/s") +
@@ -169,26 +164,25 @@ private:
         std::vector<std::string> notes;
         if (d == 2) notes.push_back("2D cross products are scalars: r × n = r_x n_y − r_y n_x.");
         if (d == 1 && P.model != Model::frictionless)
-            notes.push_back(std::string("On a line there is no tangential direction: the ") +
-                            model_name(P.model) + " model is the frictionless formula.");
-        step("Denominator (effective inverse mass along n)", {denominator_formula(), denominator_numbers()},
-             notes);
+            notes.push_back(std::string("On a line there is no tangential direction: the ") + model_name(P.model) +
+                            " model is the frictionless formula.");
+        step("Denominator (effective inverse mass along n)", {denominator_formula(), denominator_numbers()}, notes);
         impulse_along_n(denominator());
     }
 
     void impulse_along_n(double D) {
         const double j = s.P.dot(s.n);
         step({"Impulse", "j = −(1 + e) u_n / D,  P = j n"},
-             {f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") + num(D) +
-                  f(" = ") + num(j) + unit("N·s"),
+             {f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") + num(D) + f(" = ") + num(j) +
+                  unit("N·s"),
               f("P = j n = ") + V(s.P) + unit("N·s")},
              {"P acts on B at the contact point; A receives −P."});
     }
 
     void collision_matrix_step() {
-        const std::string formula =
-            d == 2 ? "K = (1/m_a + 1/m_b) E + perp(r_a) perp(r_a)ᵀ/I_a + perp(r_b) perp(r_b)ᵀ/I_b"
-                   : "K = (1/m_a + 1/m_b) E − [r_a]× I_a⁻¹ [r_a]× − [r_b]× I_b⁻¹ [r_b]×";
+        const std::string formula = d == 2
+                                        ? "K = (1/m_a + 1/m_b) E + perp(r_a) perp(r_a)ᵀ/I_a + perp(r_b) perp(r_b)ᵀ/I_b"
+                                        : "K = (1/m_a + 1/m_b) E − [r_a]× I_a⁻¹ [r_a]× − [r_b]× I_b⁻¹ [r_b]×";
         std::vector<std::string> notes = {
             "An impulse P changes the relative contact velocity by K P. K is symmetric positive "
             "definite, so it can always be inverted (Cholesky: K = L Lᵀ)."};
@@ -202,8 +196,7 @@ private:
         const double Pt = (s.P_stick - Pn * s.n).norm();
         step({"Sticking impulse", "P_s = K⁻¹(−e u_n n − u)"},
              {f("P_s = ") + V(s.P_stick) + unit("N·s"),
-              f("P_n = P_s · n = ") + num(Pn) + unit("N·s") + f(",  |P_t| = |P_s − P_n n| = ") +
-                  num(Pt) + unit("N·s")},
+              f("P_n = P_s · n = ") + num(Pn) + unit("N·s") + f(",  |P_t| = |P_s − P_n n| = ") + num(Pt) + unit("N·s")},
              {"The impulse that stops the tangential slip and reverses the normal approach by e."});
         const bool inside = Pn >= 0 && Pt <= P.friction * Pn;  // the engine's test
         step({"Friction cone", "|P_t| ≤ μ P_n"},
@@ -216,12 +209,10 @@ private:
             return;
         }
         if (!s.sliding) {
-            const std::string why =
-                "n · K(n − μ t) = " + num_text(s.slide_denominator) +
-                " ≤ 0: no sliding impulse can reverse the approach (a Painlevé-like case, beyond "
-                "what a one-step friction model can resolve). ";
-            step("No sliding solution",
-                 {f("P = ") + V(s.P) + unit("N·s")},
+            const std::string why = "n · K(n − μ t) = " + num_text(s.slide_denominator) +
+                                    " ≤ 0: no sliding impulse can reverse the approach (a Painlevé-like case, beyond "
+                                    "what a one-step friction model can resolve). ";
+            step("No sliding solution", {f("P = ") + V(s.P) + unit("N·s")},
                  {why + (s.painleve ? "The sticking impulse would pull, so Collide uses the "
                                       "frictionless impulse."
                                     : "Collide keeps the sticking impulse (it pushes): friction "
@@ -232,8 +223,8 @@ private:
         step({"Sliding impulse", "P = j (n − μ t),  j = −(1 + e) u_n / (n · K(n − μ t))"},
              {f("t = ") + V(s.slip) + words("  (the direction of the initial tangential slip)"),
               f("n · K(n − μ t) = ") + num(s.slide_denominator) + unit("1/kg"),
-              f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") +
-                  num(s.slide_denominator) + f(" = ") + num(j) + unit("N·s"),
+              f("j = −(1 + ") + num(P.restitution) + f(") × ") + paren(s.un) + f(" / ") + num(s.slide_denominator) +
+                  f(" = ") + num(j) + unit("N·s"),
               f("P = ") + V(s.P) + unit("N·s")},
              {"Friction μ j opposes the initial slip; μ = 0 gives the frictionless impulse."});
     }
@@ -257,14 +248,16 @@ private:
                   "slips again (reverse).",
               "Compression ends where u_n = 0; the law below ends restitution."});
         const double e = P.restitution, Pc = r.compression_impulse, Pf = r.final_normal_impulse;
-        std::vector<F> law = {f("P_c = ") + num(Pc) + unit("N·s") + f(",  W_c = ") + num(r.compression_work) + unit("J")};
+        std::vector<F> law = {f("P_c = ") + num(Pc) + unit("N·s") + f(",  W_c = ") + num(r.compression_work) +
+                              unit("J")};
         std::string note;
         switch (P.restitution_law) {
             case RestitutionLaw::newton:
-                law.push_back(f("u_n′ = −e u_n = −") + num(e) + f(" × ") + paren(s.un) + f(" = ") +
-                              num(-e * s.un) + unit("m/s"));
-                note = "Newton's law ends the impact when the normal velocity has been reversed and scaled by e. "
-                       "With friction it can create energy (Kane's paradox).";
+                law.push_back(f("u_n′ = −e u_n = −") + num(e) + f(" × ") + paren(s.un) + f(" = ") + num(-e * s.un) +
+                              unit("m/s"));
+                note =
+                    "Newton's law ends the impact when the normal velocity has been reversed and scaled by e. "
+                    "With friction it can create energy (Kane's paradox).";
                 break;
             case RestitutionLaw::poisson:
                 law.push_back(f("P_n = (1 + e) P_c = (1 + ") + num(e) + f(") × ") + num(Pc) + f(" = ") + num(Pf) +
@@ -274,8 +267,9 @@ private:
             case RestitutionLaw::stronge:
                 law.push_back(f("W_r = −e e W_c = −") + num(e) + f(" × ") + num(e) + f(" × ") +
                               paren(r.compression_work) + f(" = ") + num(r.restitution_work) + unit("J"));
-                note = "Stronge's energetic law: the normal impulse gives back e² of the work it absorbed in "
-                       "compression. It never creates energy.";
+                note =
+                    "Stronge's energetic law: the normal impulse gives back e² of the work it absorbed in "
+                    "compression. It never creates energy.";
                 break;
         }
         law.push_back(f("P_n = ") + num(Pf) + unit("N·s") + f(",  P = ") + V(s.P) + unit("N·s"));
@@ -314,8 +308,7 @@ private:
             const char st = a_or_b_static();
             const std::string k(1, st);
             step("Stick to a static body",
-                 {d == 1 ? f("v′ = v_" + k)
-                         : f("v′ = v_" + k + " + ω_" + k + " × (x − x_" + k + "),  ω′ = ω_" + k)},
+                 {d == 1 ? f("v′ = v_" + k) : f("v′ = v_" + k + " + ω_" + k + " × (x − x_" + k + "),  ω′ = ω_" + k)},
                  {"The moving body welds to the immovable one and takes its motion."});
             final_values();
             return;
@@ -405,9 +398,9 @@ private:
             (d >= 2 ? "; the angular changes are per unit impulse (not times Jmod)." : ".")};
         if (d >= 2) {
             const double correct = denominator();
-            notes.push_back("Its rotational terms are subtracted (n × r, then × r again): scalar = " +
-                            num_text(L.scalar) + " 1/kg where the correct denominator is " +
-                            num_text(correct) + " 1/kg.");
+            notes.push_back(
+                "Its rotational terms are subtracted (n × r, then × r again): scalar = " + num_text(L.scalar) +
+                " 1/kg where the correct denominator is " + num_text(correct) + " 1/kg.");
         }
         notes.push_back("For the correct answer, solve the same collision with the frictionless model.");
         step("The page's listing, as written", lines, notes);
@@ -425,17 +418,16 @@ private:
                                 words("  (static)"));
                 continue;
             }
-            lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + sign + "P/" + sym("m", c) + " = ") +
-                            V(v0) + f(sign) + Vp(s.P) + f(" / ") + num(body(c).b3.mass) +
-                            f(" = ") + V(v) + unit("m/s"));
+            lines.push_back(f(sym("v", c) + "′ = " + sym("v", c) + sign + "P/" + sym("m", c) + " = ") + V(v0) +
+                            f(sign) + Vp(s.P) + f(" / ") + num(body(c).b3.mass) + f(" = ") + V(v) + unit("m/s"));
             if (d >= 2) {
-                const std::string torque = d == 2 ? "(" + sym("r", c) + " × P)/" + sym("I", c)
-                                                  : sym("I", c) + "⁻¹(" + sym("r", c) + " × P)";
+                const std::string torque =
+                    d == 2 ? "(" + sym("r", c) + " × P)/" + sym("I", c) : sym("I", c) + "⁻¹(" + sym("r", c) + " × P)";
                 // The torque term is what the engine's update changed: |w' - w|, signed as shown.
                 const Vec3& w0 = body(c).b3.w;
                 const Vec3 term = c == 'a' ? Vec3(w0 - w) : Vec3(w - w0);
-                lines.push_back(f(sym("ω", c) + "′ = " + sym("ω", c) + sign + torque + " = ") +
-                                W(w0) + f(sign) + Wp(term) + f(" = ") + W(w) + unit("rad/s"));
+                lines.push_back(f(sym("ω", c) + "′ = " + sym("ω", c) + sign + torque + " = ") + W(w0) + f(sign) +
+                                Wp(term) + f(" = ") + W(w) + unit("rad/s"));
             }
         }
         step("Final velocities", lines, {"The impulse −P acts on A and +P on B, at the contact point."});
@@ -451,25 +443,23 @@ private:
                 break;
             case Model::coulomb:
                 lines.push_back(f("−e u_n = ") + num(-P.restitution * s.un) + unit("m/s"));
-                if (d >= 2)
-                    lines.push_back(f("u_t′ = u′ − u_n′ n = ") + V(s.u_after - s.un_after * s.n) + unit("m/s"));
+                if (d >= 2) lines.push_back(f("u_t′ = u′ − u_n′ n = ") + V(s.u_after - s.un_after * s.n) + unit("m/s"));
                 if (!s.sliding) {
                     notes.push_back("Sticking: the tangential slip is stopped.");
                 } else {
                     const double before = (s.u - s.un * s.n).norm();
                     const double after = (s.u_after - s.un_after * s.n).norm();
                     if (after <= before)
-                        notes.push_back("Sliding: the slip speed fell from " + num_text(before) +
-                                        " to " + num_text(after) + " m/s.");
+                        notes.push_back("Sliding: the slip speed fell from " + num_text(before) + " to " +
+                                        num_text(after) + " m/s.");
                     else
-                        notes.push_back(
-                            "Sliding: the slip speed rose from " + num_text(before) + " to " +
-                            num_text(after) +
-                            " m/s. In this one-step model friction keeps the direction of the "
-                            "initial slip t for the whole impact, while the normal impulse itself "
-                            "drives tangential motion through the off-diagonal terms of K. Impact "
-                            "integration (Routh's method) lets the slip direction change during "
-                            "the impact.");
+                        notes.push_back("Sliding: the slip speed rose from " + num_text(before) + " to " +
+                                        num_text(after) +
+                                        " m/s. In this one-step model friction keeps the direction of the "
+                                        "initial slip t for the whole impact, while the normal impulse itself "
+                                        "drives tangential motion through the off-diagonal terms of K. Impact "
+                                        "integration (Routh's method) lets the slip direction change during "
+                                        "the impact.");
                 }
                 break;
             case Model::matrix:
@@ -477,16 +467,16 @@ private:
                 notes.push_back("The matrix method reverses the whole relative velocity, scaled by e.");
                 break;
             case Model::stick:
-                notes.push_back("The bodies move on as one: the contact points share one velocity "
-                                "(u_n′ = 0).");
+                notes.push_back(
+                    "The bodies move on as one: the contact points share one velocity "
+                    "(u_n′ = 0).");
                 break;
             case Model::page_listing:
                 lines.push_back(f("−e u_n = ") + num(-P.restitution * s.un) + unit("m/s") +
                                 words("  (what a correct answer gives)"));
                 break;
             case Model::routh:
-                if (d >= 2)
-                    lines.push_back(f("u_t′ = u′ − u_n′ n = ") + V(s.u_after - s.un_after * s.n) + unit("m/s"));
+                if (d >= 2) lines.push_back(f("u_t′ = u′ − u_n′ n = ") + V(s.u_after - s.un_after * s.n) + unit("m/s"));
                 notes.push_back(std::string(s.sliding ? "Still slipping at the end." : "The slip has stopped.") +
                                 " The normal velocity after follows from the law, not from −e u_n (except "
                                 "with Newton's).");
@@ -498,8 +488,8 @@ private:
     void checks() {
         std::vector<F> lines;
         auto row = [&](const std::string& name, F before, F after, F change, const std::string& u) {
-            lines.push_back(words(name + ": ") + words("before ") + before + f(",  ") +
-                            words("after ") + after + f(",  ") + words("change ") + change + unit(u));
+            lines.push_back(words(name + ": ") + words("before ") + before + f(",  ") + words("after ") + after +
+                            f(",  ") + words("change ") + change + unit(u));
         };
         // A change within round-off of the totals (1e-9 of them) is the 0 it stands for, not
         // "-5.55112e-17 J".
@@ -512,8 +502,7 @@ private:
         const auto after = [&](const Vec3& before, const Vec3& after) {
             return change(before, after).isZero(0.0) ? before : after;
         };
-        row("momentum", V(s.p_before), V(after(s.p_before, s.p_after)), V(change(s.p_before, s.p_after)),
-            "kg·m/s");
+        row("momentum", V(s.p_before), V(after(s.p_before, s.p_after)), V(change(s.p_before, s.p_after)), "kg·m/s");
         if (d >= 2)
             row("angular momentum about o = " + vec(P.about, d).txt, W(s.L_before), W(after(s.L_before, s.L_after)),
                 W(change(s.L_before, s.L_after)), "kg·m²/s");
@@ -530,16 +519,17 @@ private:
                                  "angular momentum is Σ (I ω + m (x − o) × v), all about one fixed point."
                                : "Kinetic energy is Σ 1/2 m v².");
         if (is_static('a') || is_static('b')) {
-            notes.push_back("One body is static (immovable, infinite mass): it is left out of the "
-                            "totals, and the pair's momentum is not conserved (the static body "
-                            "absorbs it).");
+            notes.push_back(
+                "One body is static (immovable, infinite mass): it is left out of the "
+                "totals, and the pair's momentum is not conserved (the static body "
+                "absorbs it).");
             if (d >= 2)
-                lines.push_back(words("angular momentum about the contact point: ") +
-                                words("before ") + W(s.Lp_before) + f(",  ") + words("after ") +
-                                W(s.Lp_after) + unit("kg·m²/s"));
+                lines.push_back(words("angular momentum about the contact point: ") + words("before ") +
+                                W(s.Lp_before) + f(",  ") + words("after ") + W(s.Lp_after) + unit("kg·m²/s"));
             if (d >= 2)
-                notes.push_back("About the contact point the impulse has no lever arm, so that "
-                                "angular momentum is conserved.");
+                notes.push_back(
+                    "About the contact point the impulse has no lever arm, so that "
+                    "angular momentum is conserved.");
         }
         step("Checks", lines, notes);
     }

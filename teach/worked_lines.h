@@ -13,12 +13,12 @@
 namespace collide {
 
 struct WorkedLines {
-    std::string name;                 // "Impulse"
-    std::string formula;              // "j = −(1 + e) u_n / D,  P = j n", or "" (a step without one)
-    std::vector<notation::F> lines;   // the formula, then the numbers substituted
-    std::vector<std::string> notes;   // prose after the lines
-    bool response = false;            // a step of the response model itself
-    std::string title() const;        // name, and the formula after two spaces
+    std::string name;                // "Impulse"
+    std::string formula;             // "j = −(1 + e) u_n / D,  P = j n", or "" (a step without one)
+    std::vector<notation::F> lines;  // the formula, then the numbers substituted
+    std::vector<std::string> notes;  // prose after the lines
+    bool response = false;           // a step of the response model itself
+    std::string title() const;       // name, and the formula after two spaces
 };
 
 std::vector<WorkedLines> worked_lines(const SolveProblem& problem, const Solution& s);

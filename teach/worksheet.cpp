@@ -62,10 +62,10 @@ void answer_sheet(const Lesson& original, StudentSheet& s) {
             for (int k : asked_events(original, s.asked, r.events)) {
                 if (static_cast<std::size_t>(k) > r.events.size())
                     throw InputError(original.file, {}, "vary",
-                                     r.events.empty() ? "the run has no collision"
-                                                      : "the run has " + std::to_string(r.events.size()) +
-                                                            " collisions, a question asks for collision " +
-                                                            std::to_string(k));
+                                     r.events.empty()
+                                         ? "the run has no collision"
+                                         : "the run has " + std::to_string(r.events.size()) +
+                                               " collisions, a question asks for collision " + std::to_string(k));
                 CollisionInstant c = collision_instant(r.events[static_cast<std::size_t>(k - 1)]);
                 for (const LessonFigure& f : s.lesson.figures) c = with_roles(c, f.ia, f.ib);
                 for (std::size_t i : s.asked) {  // a question's pair gives the same roles

@@ -44,13 +44,13 @@ struct WorkedCollision {
 
 // One student's sheet: the values drawn, the lesson with them, the answers.
 struct StudentSheet {
-    int student = 1;                        // from 1
-    std::map<std::string, double> values;   // every [[vary]] name ("A.mass") -> its value
-    Lesson lesson;                          // lesson_with_values(lesson, values)
-    std::vector<std::size_t> asked;         // worksheet_questions(lesson), into the original's questions
-    std::vector<LessonAnswer> answers;      // one for each of `asked`
-    std::vector<WorkedCollision> worked;    // the collisions the answers come from, in order
-    int tries = 1;                          // draws needed (the earlier ones could not answer)
+    int student = 1;                       // from 1
+    std::map<std::string, double> values;  // every [[vary]] name ("A.mass") -> its value
+    Lesson lesson;                         // lesson_with_values(lesson, values)
+    std::vector<std::size_t> asked;        // worksheet_questions(lesson), into the original's questions
+    std::vector<LessonAnswer> answers;     // one for each of `asked`
+    std::vector<WorkedCollision> worked;   // the collisions the answers come from, in order
+    int tries = 1;                         // draws needed (the earlier ones could not answer)
 };
 
 // Draws student `student`'s values (from the lesson's [[vary]] grids, with a generator seeded

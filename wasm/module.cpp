@@ -80,7 +80,6 @@ Answer run_answer(const std::string& text) {
     });
 }
 
-
 // ---- The Try-it panel ----
 
 using nlohmann::ordered_json;
@@ -135,14 +134,16 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
 
     std::string states = "[", events = "[";
     std::optional<CollisionInstant> collision;
-    std::visit([&](const auto& rec) {
-        for (std::size_t k = 0; k < rec.times.size(); ++k)
-            states += (k ? "," : "") + state_json(scene, rec.times[k], rec.states[k]);
-        const std::vector<bool> gains = energy_gains(scene, rec.events);
-        for (std::size_t k = 0; k < rec.events.size(); ++k)
-            events += (k ? "," : "") + event_json(scene, rec.events[k], gains[k]);
-        collision = page_collision(figure_picks(&lesson), rec);
-    }, any);
+    std::visit(
+        [&](const auto& rec) {
+            for (std::size_t k = 0; k < rec.times.size(); ++k)
+                states += (k ? "," : "") + state_json(scene, rec.times[k], rec.states[k]);
+            const std::vector<bool> gains = energy_gains(scene, rec.events);
+            for (std::size_t k = 0; k < rec.events.size(); ++k)
+                events += (k ? "," : "") + event_json(scene, rec.events[k], gains[k]);
+            collision = page_collision(figure_picks(&lesson), rec);
+        },
+        any);
     states += "]";
     events += "]";
 

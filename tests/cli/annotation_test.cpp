@@ -449,8 +449,8 @@ void check_figure(const std::string& file, const ::collide::LessonFigure* pick, 
             const std::string labelled = items[it["of"].get<std::size_t>()]["kind"];
             const std::string text = it["text"];
             const std::string unit = labelled == "velocity" || labelled == "point_velocity" ? " m/s"
-                                     : labelled == "spin"   ? " rad/s"
-                                                            : " N s";
+                                     : labelled == "spin"                                   ? " rad/s"
+                                                                                            : " N s";
             EXPECT_TRUE(text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
                 << "\"" << text << "\" does not end in \"" << unit << "\"";
         }
@@ -472,8 +472,10 @@ void check_figure(const std::string& file, const ::collide::LessonFigure* pick, 
                     const double qx = dx >= 0 ? b[2] : b[0], qy = dy >= 0 ? b[1] : b[3];
                     // Liang-Barsky: does p-q pass through the name's box (shrunk by a pixel)?
                     double t0 = 0, t1 = 1;
-                    const double e[4][2] = {{-(qx - px), px - (nb[0] + 1)}, {qx - px, (nb[2] - 1) - px},
-                                            {-(qy - py), py - (nb[1] + 1)}, {qy - py, (nb[3] - 1) - py}};
+                    const double e[4][2] = {{-(qx - px), px - (nb[0] + 1)},
+                                            {qx - px, (nb[2] - 1) - px},
+                                            {-(qy - py), py - (nb[1] + 1)},
+                                            {qy - py, (nb[3] - 1) - py}};
                     bool outside = false;
                     for (const auto& c : e) {
                         if (c[0] == 0) {

@@ -21,9 +21,7 @@ struct Result {
     std::string out, err;
 };
 
-std::string temp_path(const std::string& name) {
-    return ::testing::TempDir() + "collide_compare_" + name;
-}
+std::string temp_path(const std::string& name) { return ::testing::TempDir() + "collide_compare_" + name; }
 
 std::string slurp(const std::string& path) {
     std::ifstream f(path);
@@ -47,9 +45,7 @@ Result run(const std::string& args) {
     return r;
 }
 
-std::string scene(const std::string& name) {
-    return std::string(COLLIDE_SOURCE_DIR) + "/lessons/scenes/" + name;
-}
+std::string scene(const std::string& name) { return std::string(COLLIDE_SOURCE_DIR) + "/lessons/scenes/" + name; }
 
 std::string write_file(const std::string& name, const std::string& text) {
     const std::string path = temp_path(name);
@@ -111,8 +107,7 @@ TEST(CompareCommand, OptionsReachBox2DAndSamplesAreSideBySide) {
     ASSERT_EQ(j["samples"].size(), 51u);  // 0.5 s every 0.01 s, both ends
     const json& s0 = j["samples"][0];
     for (int k = 0; k < 2; ++k)  // the same start, to float
-        EXPECT_NEAR(s0["collide"]["box"]["x"][k].get<double>(),
-                    s0["box2d"]["box"]["x"][k].get<double>(), 1e-7);
+        EXPECT_NEAR(s0["collide"]["box"]["x"][k].get<double>(), s0["box2d"]["box"]["x"][k].get<double>(), 1e-7);
     EXPECT_NEAR(s0["box2d"]["box"]["angle"].get<double>(), -0.6, 1e-6);
     // The box lands flat at t = 0.3 s in collide (both corners at once).
     ASSERT_GE(j["events"].size(), 1u);
@@ -147,8 +142,9 @@ TEST(CompareCommand, BadInputExitsWithCode2) {
     EXPECT_NE(r3.err.find(three_d + ":"), std::string::npos) << r3.err;
 
     // A nine-sided polygon: Box2D allows 8 vertices; refused at the body's key with its line.
-    std::string nine = "[scene]\ndimension = 2\nduration = 1.0\n\n[[body]]\nname = \"nonagon\"\n"
-                       "shape = \"polygon\"\nmass = 1.0\nvertices = [";
+    std::string nine =
+        "[scene]\ndimension = 2\nduration = 1.0\n\n[[body]]\nname = \"nonagon\"\n"
+        "shape = \"polygon\"\nmass = 1.0\nvertices = [";
     for (int k = 0; k < 9; ++k) {
         const double a = 2.0 * 3.14159265358979 * k / 9;
         nine += (k ? ", [" : "[") + std::to_string(std::cos(a)) + ", " + std::to_string(std::sin(a)) + "]";
@@ -157,8 +153,7 @@ TEST(CompareCommand, BadInputExitsWithCode2) {
     const std::string nine_file = write_file("nonagon.toml", nine);
     const Result r9 = run(nine_file);
     expect_refused(r9, nine_file + ":9:");
-    EXPECT_NE(r9.err.find("body[1].vertices: Box2D polygons have at most 8 vertices"),
-              std::string::npos) << r9.err;
+    EXPECT_NE(r9.err.find("body[1].vertices: Box2D polygons have at most 8 vertices"), std::string::npos) << r9.err;
 
     // A malformed scenario, as `collide step` refuses it.
     const std::string bad = write_file("bad.toml", "[scene]\ndimension = 2\nduration = -1.0\n");
@@ -166,8 +161,7 @@ TEST(CompareCommand, BadInputExitsWithCode2) {
 
     expect_refused(run(temp_path("no-such-file.toml")), "no-such-file.toml");
     expect_refused(run(scene("compare-disc-pair.toml") + " --dt -0.01"), "--dt");
-    expect_refused(run(scene("compare-disc-pair.toml") + " --velocity-iterations 0"),
-                   "--velocity-iterations");
+    expect_refused(run(scene("compare-disc-pair.toml") + " --velocity-iterations 0"), "--velocity-iterations");
     expect_refused(run(scene("compare-disc-pair.toml") + " --dt 1e-12"), "10^8 Box2D steps");
 }
 

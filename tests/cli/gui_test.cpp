@@ -116,17 +116,17 @@ TEST(Gui, ScriptSetsEStepsToTheCollisionAndTheWindowShowsTheOffscreenFrame) {
     EXPECT_GE(shot.width, 960);
     EXPECT_GE(shot.height, 540);
     EXPECT_EQ(matching(window_frame, offscreen, 0), 1.0);  // the saved frame: exactly the render's
-    EXPECT_GE(matching(shot, offscreen, 2), 0.999);         // the window shows it pixel for pixel
-    EXPECT_LT(matching(shot, unchanged, 2), 0.99);          // and e = 1 did change it
+    EXPECT_GE(matching(shot, offscreen, 2), 0.999);        // the window shows it pixel for pixel
+    EXPECT_LT(matching(shot, unchanged, 2), 0.99);         // and e = 1 did change it
 }
 
 TEST(Gui, MistakesAreRefusedBeforeAWindowOpens) {
     render::test::TempDir dir;
     std::ofstream(dir / "bad.txt") << "set e 1\nnext-colision\n";
     // No display needed: the script is read first (exit 2, file and line named).
-    EXPECT_EQ(run("env -u DISPLAY " + kCollide + " gui catch-up --script " + (dir / "bad.txt") + " 2>" +
-                  (dir / "err.txt")),
-              2);
+    EXPECT_EQ(
+        run("env -u DISPLAY " + kCollide + " gui catch-up --script " + (dir / "bad.txt") + " 2>" + (dir / "err.txt")),
+        2);
     EXPECT_NE(read(dir / "err.txt").find("bad.txt:2:1: next-colision: unknown action"), std::string::npos)
         << read(dir / "err.txt");
     EXPECT_EQ(run("env -u DISPLAY " + kCollide + " gui no-such-lesson 2>" + (dir / "err2.txt")), 2);

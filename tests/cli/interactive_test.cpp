@@ -80,7 +80,7 @@ position = [0.0, 1.0, 0.0]
 )";
 
 struct Reply {
-    std::vector<std::string> lines;  // stdout
+    std::vector<std::string> lines;   // stdout
     std::vector<std::string> errors;  // stderr
 };
 
@@ -129,8 +129,7 @@ TEST(Interactive, TextRepliesNameTheTime) {
     std::vector<std::string> times;
     for (const std::string& line : r.lines)
         if (line.rfind("t = ", 0) == 0) times.push_back(line);
-    EXPECT_EQ(times, (std::vector<std::string>{"t = 0.375 s", "t = 0.375 s", "t = 0.125 s",
-                                               "t = 0.125 s"}));
+    EXPECT_EQ(times, (std::vector<std::string>{"t = 0.375 s", "t = 0.375 s", "t = 0.125 s", "t = 0.125 s"}));
     EXPECT_NE(r.lines.back().find("kinetic"), std::string::npos);  // show: the totals last
 }
 
@@ -314,8 +313,7 @@ TEST(Interactive, HelpListsTheCommands) {
     const Reply r = run(kThrow2d, "help\n", false);
     std::string all;
     for (const std::string& line : r.lines) all += line + "\n";
-    for (const char* c : {"step [n]", "next", "back [n]", "show [body]", "set BODY.FIELD", "events",
-                          "help", "quit"})
+    for (const char* c : {"step [n]", "next", "back [n]", "show [body]", "set BODY.FIELD", "events", "help", "quit"})
         EXPECT_NE(all.find(c), std::string::npos) << c;
 }
 

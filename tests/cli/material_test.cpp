@@ -172,7 +172,8 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
                              "section.check { display: none; }", "body.with-answers section.check { display: block; }",
                              ".write-here.tall {", "details { display: none; }", "ol.predictions > li"})
         EXPECT_NE(print.find(rule), std::string::npos) << rule;
-    for (const char* hidden : {"section.predict { display: none", ".choices { display: none", ".letter { display: none"})
+    for (const char* hidden :
+         {"section.predict { display: none", ".choices { display: none", ".letter { display: none"})
         EXPECT_EQ(print.find(hidden), std::string::npos) << hidden;
     // Student pages name no commands and no files of the repository: those go in the
     // teacher's section.
@@ -217,8 +218,8 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
                 EXPECT_LE(digits.size(), 4u) << L.id << ": " << (*k)[0] << " in " << text;
                 if ((*k)[2].matched && std::stoi((*k)[2].str().substr(1)) <= -10) {
                     const double x = std::stod((*k)[0].str());
-                    const bool beside = std::any_of(values.begin(), values.end(),
-                                                    [x](double y) { return y > x && y <= 1e6 * x; });
+                    const bool beside =
+                        std::any_of(values.begin(), values.end(), [x](double y) { return y > x && y <= 1e6 * x; });
                     EXPECT_TRUE(beside) << L.id << ": " << text;
                 }
             }
@@ -252,15 +253,17 @@ TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
     std::string text = read(fs::path(COLLIDE_SOURCE_DIR) / "lessons/01-catch-up.toml");
     const std::string id = "id = \"catch-up\"";
     text.replace(text.find(id), id.size(), "id = \"predict-number\"");
-    text += "\n[[question]]\nkind = \"predict\"\ntext = \"How fast will B move after the collision?\"\n"
-            "quantity = \"velocity_after\"\nbody = \"B\"\ntolerance = 0.05\nexplain = \"B receives +J.\"\n";
+    text +=
+        "\n[[question]]\nkind = \"predict\"\ntext = \"How fast will B move after the collision?\"\n"
+        "quantity = \"velocity_after\"\nbody = \"B\"\ntolerance = 0.05\nexplain = \"B receives +J.\"\n";
     std::ofstream(file) << text;
     std::ostringstream out, err;
     MaterialOptions o = tiny(dir / "site");
     o.lessons = {file};
     ASSERT_EQ(run_material(o, out, err), 0) << err.str();
     const std::string page = read(fs::path(dir / "site") / "predict-number/index.html");
-    const std::size_t asked = page.find("How fast will B move after the collision? <span class=\"tolerance\">(to within 5 %)</span>"),
+    const std::size_t asked = page.find(
+                          "How fast will B move after the collision? <span class=\"tolerance\">(to within 5 %)</span>"),
                       animation = page.find("<section class=\"animation noprint\">"),
                       check = page.find("<section class=\"check\">");
     ASSERT_NE(asked, std::string::npos);

@@ -85,7 +85,7 @@ TEST(RenderCommand, WritesFramesStillsFigureAndData) {
     // wide strips of this scene (two discs on a line) stacked, three of them.
     EXPECT_NEAR(figure.width, kColumnWidth * 120.0 / 720.0, 2.0);
     EXPECT_GT(figure.height, figure.width);
-    EXPECT_EQ(lines(dir / "out/data.csv"), 7u);  // header + 6 frames
+    EXPECT_EQ(lines(dir / "out/data.csv"), 7u);    // header + 6 frames
     EXPECT_EQ(lines(dir / "out/events.csv"), 2u);  // header + the collision
     std::ifstream in(dir / "out/data.json");
     const nlohmann::json j = nlohmann::json::parse(in);
@@ -307,8 +307,8 @@ TEST(RenderCommand, RefusesANonEmptyDirectoryUnlessForced) {
     RenderOptions forced = tiny(scenario, dir / "out");
     forced.force = true;
     EXPECT_EQ(run_render(forced, out, err), 0) << err.str();
-    EXPECT_TRUE(fs::exists(dir / "out/notes.txt"));                  // not ours: kept
-    EXPECT_FALSE(fs::exists(dir / "out/frames/frame_00099.png"));    // an old frame: removed
+    EXPECT_TRUE(fs::exists(dir / "out/notes.txt"));                // not ours: kept
+    EXPECT_FALSE(fs::exists(dir / "out/frames/frame_00099.png"));  // an old frame: removed
     EXPECT_TRUE(fs::exists(dir / "out/frames/frame_00005.png"));
 }
 

@@ -42,8 +42,7 @@ Runs run_both(const Scene& s, double t, const Box2DSettings& settings = {}) {
 
 // |x - y| <= kRel * scale for vectors and numbers.
 void expect_close(const Vec2& x, const Vec2& y, double scale, const char* what) {
-    EXPECT_LE((x - y).norm(), kRel * scale) << what << ": " << x.transpose() << " vs "
-                                            << y.transpose();
+    EXPECT_LE((x - y).norm(), kRel * scale) << what << ": " << x.transpose() << " vs " << y.transpose();
 }
 void expect_close(double x, double y, double scale, const char* what) {
     EXPECT_LE(std::abs(x - y), kRel * scale) << what << ": " << x << " vs " << y;
@@ -238,8 +237,7 @@ TEST(Box2DWorld, TwoPointFaceContactIsSolvedSimultaneously) {
 TEST(Box2DWorld, TwoPointFaceContactSequentialDiffersAndIsExplained) {
     Scene s = sc::empty_scene(2, Policy::sequential, 0.5);
     s.bodies.push_back(sc::half_plane("ground", Vec2(0, 1), 0.0));
-    s.bodies.push_back(sc::rectangle("box", 0.4, 0.2, 1.0, Vec2(0.0, 0.1 - kOverlap), 0.0,
-                                     Vec2(0.0, -2.0), 3.0));
+    s.bodies.push_back(sc::rectangle("box", 0.4, 0.2, 1.0, Vec2(0.0, 0.1 - kOverlap), 0.0, Vec2(0.0, -2.0), 3.0));
     const Runs run = run_both(s, 0.01);
     const auto m = match_events(s, {}, run.ours, run.theirs);
     ASSERT_GE(m.size(), 1u);

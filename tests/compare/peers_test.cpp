@@ -38,9 +38,8 @@ sc::BinSpec bin_spec() {  // the benchmarks' bin of 100
 // left under 2% of the energy the fall has released (E(0) - E(end)). (Not every box is still:
 // in both engines a few boxes on the heap's slopes still topple after 2 s.)
 template <class Body>
-void expect_settled_in_bin(const Scene& s, const std::vector<Body>& start,
-                           const std::vector<Body>& end, double width, double max_overlap,
-                           const std::string& engine) {
+void expect_settled_in_bin(const Scene& s, const std::vector<Body>& start, const std::vector<Body>& end, double width,
+                           double max_overlap, const std::string& engine) {
     double top = 0.0;
     for (const Body& b : start)
         if (!b.is_static) top = std::max(top, b.position.y());
@@ -52,8 +51,7 @@ void expect_settled_in_bin(const Scene& s, const std::vector<Body>& start,
         if constexpr (std::is_same_v<Body, Body3>) in = in && x.z() > 0.0 && x.z() < width;
         if (!in) {
             ++outside;
-            ADD_FAILURE() << engine << ": " << s.bodies[i].name << " ended outside the bin at "
-                          << x.transpose();
+            ADD_FAILURE() << engine << ": " << s.bodies[i].name << " ended outside the bin at " << x.transpose();
         }
     }
     EXPECT_EQ(outside, 0) << engine;
@@ -80,8 +78,7 @@ std::vector<Body> start_of(const Scene& s) {
 // The rectangle's full edge lengths from its vertices (centred on the centre of mass).
 Vec2 rectangle_size(const Shape2& shape) {
     Vec2 half = Vec2::Zero();
-    for (int k = 0; k < shape.polygon.count; ++k)
-        half = half.cwiseMax(shape.polygon.vertices[k].cwiseAbs());
+    for (int k = 0; k < shape.polygon.count; ++k) half = half.cwiseMax(shape.polygon.vertices[k].cwiseAbs());
     return 2.0 * half;
 }
 
@@ -143,13 +140,12 @@ TEST(Peers, BulletBinHasTheScenesMassesInertiaAndMaterials) {
         EXPECT_NEAR(m.mass, mass, kFloat * mass);
         const Vec3 sq = size.cwiseProduct(size);
         const Vec3 inertia = mass / 12.0 * Vec3(sq.y() + sq.z(), sq.z() + sq.x(), sq.x() + sq.y());
-        for (int k = 0; k < 3; ++k)
-            EXPECT_NEAR(m.inertia[k], inertia[k], kFloat * inertia[k]) << s.bodies[i].name;
+        for (int k = 0; k < 3; ++k) EXPECT_NEAR(m.inertia[k], inertia[k], kFloat * inertia[k]) << s.bodies[i].name;
     }
     EXPECT_EQ(boxes, 100);
     // Box on box, box on the floor, box on a wall: the scene's mu = 0.5 and e = 0.2.
-    for (const auto& [i, j] : {std::pair{first_box, first_box + 1}, {floor, first_box},
-                              {first_box + 7, std::size_t{1}}}) {
+    for (const auto& [i, j] :
+         {std::pair{first_box, first_box + 1}, {floor, first_box}, {first_box + 7, std::size_t{1}}}) {
         const BulletMaterial m = world.material_of(i, j);
         EXPECT_NEAR(m.friction, 0.5, kFloat);
         EXPECT_NEAR(m.restitution, 0.2, kFloat);
@@ -161,8 +157,7 @@ TEST(Peers, BulletBinBoxesFallAndSettleInTheBin) {
     const Scene s = sc::bin(3, bin_spec());
     BulletWorld world(s, BulletSettings{});
     world.advance_to(2.0);
-    expect_settled_in_bin(s, start_of<Body3>(s), world.bodies(), sc::bin_width(3, bin_spec()),
-                          0.02, "Bullet");
+    expect_settled_in_bin(s, start_of<Body3>(s), world.bodies(), sc::bin_width(3, bin_spec()), 0.02, "Bullet");
 }
 
 // The ball (the last body) meets the fourth box (box3) after about 0.15 s and knocks it and the

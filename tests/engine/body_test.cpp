@@ -65,8 +65,7 @@ TEST(Body, InverseMassAndStatic) {
     b3.mass = 8.0;
     b3.inertia = Vec3(1, 2, 4).asDiagonal();
     EXPECT_EQ(b3.inv_mass(), 0.125);
-    EXPECT_NEAR_ABS_REL(b3.inv_inertia_world(), Mat3(Vec3(1, 0.5, 0.25).asDiagonal()), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(b3.inv_inertia_world(), Mat3(Vec3(1, 0.5, 0.25).asDiagonal()), kAtol, kRtol);
     b3.is_static = true;
     EXPECT_EQ(b3.inv_mass(), 0.0);
     EXPECT_EQ(b3.inertia_world(), Mat3::Zero());

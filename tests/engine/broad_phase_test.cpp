@@ -17,7 +17,6 @@
 namespace collide {
 namespace {
 
-
 template <int D>
 struct Boxes {
     using Vec = typename Space<D>::Vec;

@@ -54,8 +54,7 @@ double momentum_scale(const std::vector<Body2>& bodies) {
 }
 double angular_scale(const std::vector<Body2>& bodies) {
     double s = 0;
-    for (const Body2& b : bodies)
-        s += std::abs(b.inertia * b.w) + b.mass * (b.position - kAbout2).norm() * b.v.norm();
+    for (const Body2& b : bodies) s += std::abs(b.inertia * b.w) + b.mass * (b.position - kAbout2).norm() * b.v.norm();
     return s;
 }
 
@@ -89,28 +88,24 @@ Outcome run3(Model model, std::uint64_t seed) {
         const std::vector<Body3> after{A, B};
         const Totals3 t0 = totals(before, kAbout3), t1 = totals(after, kAbout3);
 
-        EXPECT_NEAR_SCALED(t1.momentum, t0.momentum, 0.0, kSumRtol,
-                           momentum_scale(before) + momentum_scale(after));
+        EXPECT_NEAR_SCALED(t1.momentum, t0.momentum, 0.0, kSumRtol, momentum_scale(before) + momentum_scale(after));
         EXPECT_NEAR_SCALED(t1.angular_momentum, t0.angular_momentum, 0.0, kSumRtol,
                            angular_scale(before) + angular_scale(after));
 
         ImpactBody3 a1 = a, b1 = b;
         a1.v = r.va, a1.w = r.wa, b1.v = r.vb, b1.w = r.wb;
         const Vec3 u1 = relative_velocity(a1, b1);
-        const double dT = 0.5 * r.P.dot(u + u1) +
-                          0.5 * r.couple.dot((b.w + r.wb) - (a.w + r.wa));
+        const double dT = 0.5 * r.P.dot(u + u1) + 0.5 * r.couple.dot((b.w + r.wb) - (a.w + r.wa));
         const double energy_scale = t0.kinetic_energy + t1.kinetic_energy;
         EXPECT_NEAR_ABS_REL(t1.kinetic_energy - t0.kinetic_energy, dT, 1e-12 * energy_scale, 0.0);
         // Gains beyond rounding (e = 1 keeps the energy to the last bits).
         if (t1.kinetic_energy > t0.kinetic_energy * (1 + 1e-12)) ++out.energy_gained;
 
-        const double uscale = u.norm() + a.v.norm() + b.v.norm() + a.r.norm() * a.w.norm() +
-                              b.r.norm() * b.w.norm();
+        const double uscale = u.norm() + a.v.norm() + b.v.norm() + a.r.norm() * a.w.norm() + b.r.norm() * b.w.norm();
         switch (model) {
             case Model::frictionless:
                 EXPECT_NEAR_ABS_REL(u1.dot(n), -e * un, 1e-12 * uscale, 0.0);
-                EXPECT_NEAR_ABS_REL(dT, 0.5 * r.P.dot(n) * (1 - e) * un, 1e-12 * energy_scale,
-                                    0.0);
+                EXPECT_NEAR_ABS_REL(dT, 0.5 * r.P.dot(n) * (1 - e) * un, 1e-12 * energy_scale, 0.0);
                 EXPECT_LE(t1.kinetic_energy, t0.kinetic_energy * (1 + 1e-12));
                 if (e == 1.0) {
                     EXPECT_NEAR_ABS_REL(t1.kinetic_energy, t0.kinetic_energy, 0.0, 1e-12);
@@ -123,14 +118,11 @@ Outcome run3(Model model, std::uint64_t seed) {
                     EXPECT_NEAR_ABS_REL(t1.kinetic_energy, t0.kinetic_energy, 0.0, 1e-11);
                 }
                 break;
-            case Model::coulomb:
-                EXPECT_NEAR_ABS_REL(u1.dot(n), -e * un, 1e-11 * uscale, 0.0);
-                break;
+            case Model::coulomb: EXPECT_NEAR_ABS_REL(u1.dot(n), -e * un, 1e-11 * uscale, 0.0); break;
             case Model::stick: {
                 EXPECT_EQ(r.wa, r.wb);
                 const Vec3 rigid = r.wa.cross(B.position - A.position);
-                EXPECT_NEAR_SCALED(Vec3(r.vb - r.va), rigid, 0.0, 1e-12,
-                                   r.va.norm() + r.vb.norm() + rigid.norm());
+                EXPECT_NEAR_SCALED(Vec3(r.vb - r.va), rigid, 0.0, 1e-12, r.va.norm() + r.vb.norm() + rigid.norm());
                 EXPECT_LE(t1.kinetic_energy, t0.kinetic_energy * (1 + 1e-12));
                 break;
             }
@@ -171,8 +163,7 @@ Outcome run2(Model model, std::uint64_t seed) {
         const std::vector<Body2> after{A, B};
         const Totals2 t0 = totals(before, kAbout2), t1 = totals(after, kAbout2);
 
-        EXPECT_NEAR_SCALED(t1.momentum, t0.momentum, 0.0, kSumRtol,
-                           momentum_scale(before) + momentum_scale(after));
+        EXPECT_NEAR_SCALED(t1.momentum, t0.momentum, 0.0, kSumRtol, momentum_scale(before) + momentum_scale(after));
         const double lscale = angular_scale(before) + angular_scale(after);
         EXPECT_NEAR_ABS_REL(t1.angular_momentum, t0.angular_momentum, kSumRtol * lscale, 0.0);
 
@@ -185,8 +176,8 @@ Outcome run2(Model model, std::uint64_t seed) {
         // Gains beyond rounding (e = 1 keeps the energy to the last bits).
         if (t1.kinetic_energy > t0.kinetic_energy * (1 + 1e-12)) ++out.energy_gained;
 
-        const double uscale = u.norm() + a.v.norm() + b.v.norm() + a.r.norm() * std::abs(a.w) +
-                              b.r.norm() * std::abs(b.w);
+        const double uscale =
+            u.norm() + a.v.norm() + b.v.norm() + a.r.norm() * std::abs(a.w) + b.r.norm() * std::abs(b.w);
         switch (model) {
             case Model::frictionless:
                 EXPECT_NEAR_ABS_REL(u1.dot(n), -e * un, 1e-12 * uscale, 0.0);
@@ -202,14 +193,11 @@ Outcome run2(Model model, std::uint64_t seed) {
                     EXPECT_NEAR_ABS_REL(t1.kinetic_energy, t0.kinetic_energy, 0.0, 1e-11);
                 }
                 break;
-            case Model::coulomb:
-                EXPECT_NEAR_ABS_REL(u1.dot(n), -e * un, 1e-11 * uscale, 0.0);
-                break;
+            case Model::coulomb: EXPECT_NEAR_ABS_REL(u1.dot(n), -e * un, 1e-11 * uscale, 0.0); break;
             case Model::stick: {
                 EXPECT_EQ(r.wa, r.wb);
                 const Vec2 rigid = cross(r.wa, Vec2(B.position - A.position));
-                EXPECT_NEAR_SCALED(Vec2(r.vb - r.va), rigid, 0.0, 1e-12,
-                                   r.va.norm() + r.vb.norm() + rigid.norm());
+                EXPECT_NEAR_SCALED(Vec2(r.vb - r.va), rigid, 0.0, 1e-12, r.va.norm() + r.vb.norm() + rigid.norm());
                 EXPECT_LE(t1.kinetic_energy, t0.kinetic_energy * (1 + 1e-12));
                 break;
             }
@@ -276,8 +264,7 @@ TEST(ConservationStatic, AngularMomentumAboutContactPoint3D) {
         const ImpactBody3 a = at_contact(ground, p), b = at_contact(B, p);
         if (relative_velocity(a, b).dot(n) > 0) n = -n;
         const double e = rng.uniform(0, 1), mu = rng.uniform(0, 2);
-        for (const Response3& r : {frictionless(a, b, n, e), coulomb(a, b, n, e, mu),
-                                   matrix(a, b, n, e)}) {
+        for (const Response3& r : {frictionless(a, b, n, e), coulomb(a, b, n, e, mu), matrix(a, b, n, e)}) {
             const Vec3 L0 = totals({B}, p).angular_momentum;
             Body3 B1 = B;
             B1.v = r.vb, B1.w = r.wb;
@@ -301,8 +288,7 @@ TEST(ConservationStatic, AngularMomentumAboutContactPoint2D) {
         const ImpactBody2 a = at_contact(ground, p), b = at_contact(B, p);
         if (relative_velocity(a, b).dot(n) > 0) n = -n;
         const double e = rng.uniform(0, 1), mu = rng.uniform(0, 2);
-        for (const Response2& r : {frictionless(a, b, n, e), coulomb(a, b, n, e, mu),
-                                   matrix(a, b, n, e)}) {
+        for (const Response2& r : {frictionless(a, b, n, e), coulomb(a, b, n, e, mu), matrix(a, b, n, e)}) {
             const double L0 = totals({B}, p).angular_momentum;
             Body2 B1 = B;
             B1.v = r.vb, B1.w = r.wb;
@@ -353,8 +339,7 @@ TEST(ConservationKane, OneStepCoulombGainsEnergy) {
     EXPECT_NEAR_ABS_REL(r.P, P, 1e-14, 1e-12);
     Body2 after = rod;
     after.v = r.vb, after.w = r.wb;
-    EXPECT_NEAR_ABS_REL(totals({after}).kinetic_energy - totals({rod}).kinetic_energy, dT, 1e-14,
-                        1e-12);
+    EXPECT_NEAR_ABS_REL(totals({after}).kinetic_energy - totals({rod}).kinetic_energy, dT, 1e-14, 1e-12);
 }
 
 }  // namespace

@@ -39,8 +39,7 @@ std::vector<Named3> solvers3() {
         {"coulomb", [](auto& a, auto& b, auto& n) { return coulomb(a, b, n, 0.6, 0.4); }},
         {"matrix", [](auto& a, auto& b, auto& n) { return matrix(a, b, n, 0.6); }},
         {"stick", [](auto& a, auto& b, auto& n) { return stick(a, b, n); }},
-        {"stick_newton_euler",
-         [](auto& a, auto& b, auto& n) { return stick_newton_euler(a, b, n); }},
+        {"stick_newton_euler", [](auto& a, auto& b, auto& n) { return stick_newton_euler(a, b, n); }},
     };
 }
 std::vector<Named2> solvers2() {
@@ -147,8 +146,7 @@ TEST(ConsistencyDimensions, TwoDEqualsThreeDInThePlane) {
             const ImpactBody2 a = at_contact(A, p), b = at_contact(B, p);
             if (relative_velocity(a, b).dot(n) > 0) n = -n;
             const Response2 r2 = s2[k].solve(a, b, n);
-            const Body3 A3 = embed(A, rng.log_uniform(0.005, 0.5)),
-                        B3 = embed(B, rng.log_uniform(0.005, 0.5));
+            const Body3 A3 = embed(A, rng.log_uniform(0.005, 0.5)), B3 = embed(B, rng.log_uniform(0.005, 0.5));
             const Response3 r3 = s3[k].solve(at_contact(A3, in3(p)), at_contact(B3, in3(p)), in3(n));
             EXPECT_NEAR_ABS_REL(r3.P, in3(r2.P), kAtol, kRtol);
             EXPECT_NEAR_ABS_REL(r3.va, in3(r2.va), kAtol, kRtol);
@@ -235,8 +233,7 @@ TEST(ConsistencyFrames, RotationAndGalileanBoost) {
                 b.w = Q * b.w;
                 return b;
             };
-            const Response3 t =
-                s.solve(at_contact(turn(A), Q * p), at_contact(turn(B), Q * p), Q * n);
+            const Response3 t = s.solve(at_contact(turn(A), Q * p), at_contact(turn(B), Q * p), Q * n);
             Response3 expected = r;
             expected.P = Q * r.P;
             expected.couple = Q * r.couple;

@@ -14,8 +14,8 @@
 namespace collide {
 namespace {
 
-constexpr double kG = 9.81;    // m/s^2
-constexpr double kDt = 1e-3;   // s: the velocity gravity adds over one rest step
+constexpr double kG = 9.81;     // m/s^2
+constexpr double kDt = 1e-3;    // s: the velocity gravity adds over one rest step
 constexpr double kTol = 1e-12;  // relative: the solves below are exact up to round-off
 
 // The bodies as the scenes build them (tests/scenes/world_scenes.h: inertia of uniform shapes).
@@ -90,9 +90,9 @@ TEST(ContactSolver, TwoSupportsShareTheLoadByTheLeverRule) {
     const double m = 5.0, L = 2.0;
     for (double centre : {0.0, 0.15, -0.35}) {
         const double xa = -0.7, xb = 0.3;  // the supports
-        std::vector<Body2> bodies = {ground2(), ground2(),
-                                     scenes::rectangle("plank", L, 0.1, m, Vec2(centre, 0.05), 0.0,
-                                                       Vec2(0.0, -kG * kDt)).body2};
+        std::vector<Body2> bodies = {
+            ground2(), ground2(),
+            scenes::rectangle("plank", L, 0.1, m, Vec2(centre, 0.05), 0.0, Vec2(0.0, -kG * kDt)).body2};
         std::vector<Contact<2>> contacts = {contact<2>(0, 2, Vec2(0.0, 1.0), {Vec2(xa, 0.0)}),
                                             contact<2>(1, 2, Vec2(0.0, 1.0), {Vec2(xb, 0.0)})};
         ContactSolver<2>({false, false, false}).solve(&contacts, goals(contacts, 0.0, 0.0), &bodies);

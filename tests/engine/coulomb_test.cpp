@@ -148,8 +148,7 @@ TEST(Coulomb, DiscSlidesOnGroundClosedForm2D) {
     disc.position = Vec2(0.0, R);
     disc.v = Vec2(vt, -vn);
     const Vec2 p = Vec2::Zero();
-    const Response2 r = coulomb(at_contact(static_ground2(), p), at_contact(disc, p), Vec2(0, 1),
-                                e, mu);
+    const Response2 r = coulomb(at_contact(static_ground2(), p), at_contact(disc, p), Vec2(0, 1), e, mu);
     const double j = (1 + e) * m * vn;
     EXPECT_TRUE(r.sliding);
     EXPECT_NEAR_ABS_REL(r.P, Vec2(-mu * j, j), kAtol, kRtol);
@@ -230,8 +229,7 @@ TEST(Coulomb, LeaningRodFootStickOrSlideClosedForm2D) {
 
     const Response2 stuck = coulomb(a, b, Vec2(0, 1), e, 1.0);
     EXPECT_FALSE(stuck.sliding);
-    EXPECT_NEAR_ABS_REL(stuck.P, Vec2((1 + e) * m * v0 * Vec2(3 * s * c, 1 + 3 * s * s) / 4.0),
-                        kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(stuck.P, Vec2((1 + e) * m * v0 * Vec2(3 * s * c, 1 + 3 * s * s) / 4.0), kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(Vec2(stuck.vb + cross(stuck.wb, b.r)), Vec2(0.0, e * v0), kAtol, kRtol);
 
     const double mu = 0.2;
@@ -241,8 +239,7 @@ TEST(Coulomb, LeaningRodFootStickOrSlideClosedForm2D) {
     EXPECT_TRUE(slid.sliding);
     EXPECT_NEAR_ABS_REL(slid.P, Vec2(mu * j, j), kAtol, kRtol);
     const Vec2 foot = slid.vb + cross(slid.wb, b.r);
-    EXPECT_NEAR_ABS_REL(foot, Vec2((j / m) * (-3 * s * c + mu * (1 + 3 * s * s)), e * v0), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(foot, Vec2((j / m) * (-3 * s * c + mu * (1 + 3 * s * s)), e * v0), kAtol, kRtol);
     EXPECT_LT(foot.x(), 0.0);
 }
 
@@ -264,8 +261,8 @@ TEST(Coulomb, LeaningRodFootStickOrSlideClosedForm3D) {
         const Response3 stuck = coulomb(a, b, Vec3::UnitY(), e, 1.0);
         EXPECT_FALSE(stuck.sliding);
         EXPECT_NEAR_ABS_REL(
-            stuck.P, Vec3(heading * Vec3((1 + e) * m * v0 * 3 * s * c / 4.0,
-                                         (1 + e) * m * v0 * (1 + 3 * s * s) / 4.0, 0.0)),
+            stuck.P,
+            Vec3(heading * Vec3((1 + e) * m * v0 * 3 * s * c / 4.0, (1 + e) * m * v0 * (1 + 3 * s * s) / 4.0, 0.0)),
             kAtol, kRtol);
         const double mu = 0.2, j = (1 + e) * m * v0 / 2.2;
         const Response3 slid = coulomb(a, b, Vec3::UnitY(), e, mu);
@@ -295,8 +292,8 @@ TEST(Coulomb, PropertiesOfEveryResult3D) {
         ImpactBody3 a1 = s.a, b1 = s.b;
         a1.v = r.va, a1.w = r.wa, b1.v = r.vb, b1.w = r.wb;
         const Vec3 u1 = relative_velocity(a1, b1);
-        const double scale = u.norm() + s.a.r.norm() * s.a.w.norm() + s.b.r.norm() * s.b.w.norm() +
-                             s.a.v.norm() + s.b.v.norm();
+        const double scale =
+            u.norm() + s.a.r.norm() * s.a.w.norm() + s.b.r.norm() * s.b.w.norm() + s.a.v.norm() + s.b.v.norm();
         EXPECT_NEAR_ABS_REL(u1.dot(s.n), -e * un, 1e-11 * scale, 0.0);
         const double Pn = r.P.dot(s.n);
         const Vec3 Pt = r.P - Pn * s.n;
@@ -346,8 +343,8 @@ TEST(Coulomb, PropertiesOfEveryResult2D) {
         ImpactBody2 a1 = s.a, b1 = s.b;
         a1.v = r.va, a1.w = r.wa, b1.v = r.vb, b1.w = r.wb;
         const Vec2 u1 = relative_velocity(a1, b1);
-        const double scale = u.norm() + s.a.r.norm() * std::abs(s.a.w) +
-                             s.b.r.norm() * std::abs(s.b.w) + s.a.v.norm() + s.b.v.norm();
+        const double scale =
+            u.norm() + s.a.r.norm() * std::abs(s.a.w) + s.b.r.norm() * std::abs(s.b.w) + s.a.v.norm() + s.b.v.norm();
         EXPECT_NEAR_ABS_REL(u1.dot(s.n), -e * un, 1e-11 * scale, 0.0);
         const double Pn = r.P.dot(s.n);
         const Vec2 Pt = r.P - Pn * s.n;
@@ -387,14 +384,11 @@ TEST(Coulomb, PropertiesOfEveryResult2D) {
 // ut = (3, 0, 4), t = (0.6, 0, 0.8).
 TEST(Coulomb, SlipDirectionHandValues) {
     const Mat3 K = Mat3::Identity();
-    EXPECT_NEAR_ABS_REL(slip_direction(K, Vec3(3, -1, 4), Vec3::UnitY()), Vec3(0.6, 0, 0.8),
-                        kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(slip_direction(K, Vec3(3, -1, 4), Vec3::UnitY()), Vec3(0.6, 0, 0.8), kAtol, kRtol);
     Mat3 K2;
     K2 << 2, 1, 0, 1, 3, 0, 0, 0, 1;  // K n = (1, 3, 0): tangential part (1, 0, 0)
-    EXPECT_NEAR_ABS_REL(slip_direction(K2, Vec3(0, -2, 0), Vec3::UnitY()), Vec3(1, 0, 0), kAtol,
-                        kRtol);
-    EXPECT_NEAR_ABS_REL(slip_direction(Mat2(Mat2::Identity()), Vec2(-5, -1), Vec2(0, 1)),
-                        Vec2(-1, 0), kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(slip_direction(K2, Vec3(0, -2, 0), Vec3::UnitY()), Vec3(1, 0, 0), kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(slip_direction(Mat2(Mat2::Identity()), Vec2(-5, -1), Vec2(0, 1)), Vec2(-1, 0), kAtol, kRtol);
 }
 
 }  // namespace

@@ -76,8 +76,7 @@ TEST(Totals, ThreeDWithProductsOfInertia) {
     EXPECT_NEAR_ABS_REL(t.angular_momentum, Vec3(1, 1, 9), kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(t.kinetic_energy, 11.5, kAtol, kRtol);
     // About o = (0, 0, 2): L_o = L_0 - o x p = (1, 1, 9) - (0,0,2)x(0,6,0) = (1, 1, 9) - (-12, 0, 0).
-    EXPECT_NEAR_ABS_REL(totals(bodies, Vec3(0, 0, 2)).angular_momentum, Vec3(13, 1, 9), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(totals(bodies, Vec3(0, 0, 2)).angular_momentum, Vec3(13, 1, 9), kAtol, kRtol);
 }
 
 }  // namespace

@@ -28,7 +28,6 @@ using scenes::sphere;
 
 constexpr double kH = World2::kIslandStep;  // s
 
-
 // Bodies and their shapes, stepped as engine/stepped.cpp steps them.
 template <int D>
 struct Bench {
@@ -58,8 +57,8 @@ struct Bench {
         for (std::size_t a = 0; a < bodies.size(); ++a)
             for (std::size_t b = a + 1; b < bodies.size(); ++b) {
                 if (bodies[a].is_static && bodies[b].is_static) continue;
-                const double margin = World<D>::kSpeculative +
-                                      (bodies[a].v.norm() + bodies[b].v.norm() + 2.0 * g.norm() * kH) * kH;
+                const double margin =
+                    World<D>::kSpeculative + (bodies[a].v.norm() + bodies[b].v.norm() + 2.0 * g.norm() * kH) * kH;
                 StepContact<D> c;
                 c.m = manifold(a, b, margin);
                 if (c.m.count == 0) continue;
@@ -73,10 +72,8 @@ struct Bench {
     }
     typename Space<D>::Manifold manifold(std::size_t a, std::size_t b, double margin) const {
         if constexpr (D == 2)
-            return collide::collide(shapes[a], pose_of(bodies[a]), shapes[b], pose_of(bodies[b]), margin,
-                                    Apart::axis);
-        else
-            return collide::collide(shapes[a], pose_of(bodies[a]), shapes[b], pose_of(bodies[b]), margin);
+            return collide::collide(shapes[a], pose_of(bodies[a]), shapes[b], pose_of(bodies[b]), margin, Apart::axis);
+        else return collide::collide(shapes[a], pose_of(bodies[a]), shapes[b], pose_of(bodies[b]), margin);
     }
 
     // One step: the solve, then the motion at the new velocities.

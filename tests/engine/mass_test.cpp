@@ -40,8 +40,7 @@ TEST(MassSphere, TwoFifthsMR2) {
 // Box with edges (1, 2, 3) m, m = 12 kg: Ixx = m (b^2 + c^2)/12 = 4 + 9 = 13, Iyy = 1 + 9 = 10,
 // Izz = 1 + 4 = 5 kg m^2, no products of inertia.
 TEST(MassBox, TextbookEdges) {
-    EXPECT_NEAR_ABS_REL(box_inertia(12.0, Vec3(1, 2, 3)), Mat3(Vec3(13, 10, 5).asDiagonal()),
-                        kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(box_inertia(12.0, Vec3(1, 2, 3)), Mat3(Vec3(13, 10, 5).asDiagonal()), kAtol, kRtol);
 }
 
 // A grid of Nx Ny Nz equal point masses at the cell centres of an a x b x c box. Along an edge of
@@ -66,10 +65,8 @@ TEST(MassBox, EqualsPointMassGridSum) {
 // Iyy = Izz = m (3 R^2 + L^2)/12 = 6 (0.75 + 4)/12 = 2.375 kg m^2.
 // Thin rod (R = 0): Ixx = 0, Iyy = Izz = m L^2/12 = 2 kg m^2.
 TEST(MassRod, SolidAndThin) {
-    EXPECT_NEAR_ABS_REL(rod_inertia(6.0, 2.0, 0.5), Mat3(Vec3(0.75, 2.375, 2.375).asDiagonal()),
-                        kAtol, kRtol);
-    EXPECT_NEAR_ABS_REL(rod_inertia(6.0, 2.0), Mat3(Vec3(0.0, 2.0, 2.0).asDiagonal()), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(rod_inertia(6.0, 2.0, 0.5), Mat3(Vec3(0.75, 2.375, 2.375).asDiagonal()), kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(rod_inertia(6.0, 2.0), Mat3(Vec3(0.0, 2.0, 2.0).asDiagonal()), kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(rod_inertia_2d(6.0, 2.0), 2.0, kAtol, kRtol);
 }
 
@@ -80,8 +77,8 @@ TEST(MassRod, ThinRodEqualsPointMassRow) {
     const int n = 9;
     std::vector<Vec3> xs;
     for (double x : grid(n, L)) xs.emplace_back(x, 0.0, 0.0);
-    EXPECT_NEAR_ABS_REL(rod_inertia(m, L * std::sqrt(1.0 - 1.0 / (n * n))),
-                        point_masses_inertia(xs, m / n), kAtol, 1e-12);
+    EXPECT_NEAR_ABS_REL(rod_inertia(m, L * std::sqrt(1.0 - 1.0 / (n * n))), point_masses_inertia(xs, m / n), kAtol,
+                        1e-12);
 }
 
 // Thin disc, m = 4 kg, R = 0.5 m: Izz = m R^2/2 = 0.5, Ixx = Iyy = m R^2/4 = 0.25 kg m^2
@@ -111,9 +108,9 @@ TEST(MassRectangle, EqualsPointMassGridSum) {
     std::vector<Vec3> xs;
     for (double x : grid(nx, w))
         for (double y : grid(ny, h)) xs.emplace_back(x, y, 0.0);
-    EXPECT_NEAR_ABS_REL(rectangle_inertia(m, w * std::sqrt(1.0 - 1.0 / (nx * nx)),
-                                          h * std::sqrt(1.0 - 1.0 / (ny * ny))),
-                        point_masses_inertia(xs, m / (nx * ny)), kAtol, 1e-12);
+    EXPECT_NEAR_ABS_REL(
+        rectangle_inertia(m, w * std::sqrt(1.0 - 1.0 / (nx * nx)), h * std::sqrt(1.0 - 1.0 / (ny * ny))),
+        point_masses_inertia(xs, m / (nx * ny)), kAtol, 1e-12);
 }
 
 // World inertia R I R^T: a solid rod along body x (Ixx = 0.75 axial, 2.375 transverse) turned
@@ -124,11 +121,9 @@ TEST(MassWorldInertia, RodTurnedAboutZLiesAlongY) {
     rod.mass = 6.0;
     rod.inertia = rod_inertia(6.0, 2.0, 0.5);
     rod.orientation = Quat(Eigen::AngleAxisd(kPi / 2, Vec3::UnitZ()));
-    EXPECT_NEAR_ABS_REL(rod.inertia_world(), Mat3(Vec3(2.375, 0.75, 2.375).asDiagonal()), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(rod.inertia_world(), Mat3(Vec3(2.375, 0.75, 2.375).asDiagonal()), kAtol, kRtol);
     rod.orientation = Quat(Eigen::AngleAxisd(kPi / 2, Vec3::UnitY()));
-    EXPECT_NEAR_ABS_REL(rod.inertia_world(), Mat3(Vec3(2.375, 2.375, 0.75).asDiagonal()), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(rod.inertia_world(), Mat3(Vec3(2.375, 2.375, 0.75).asDiagonal()), kAtol, kRtol);
 }
 
 // diag(1, 2, 3) turned 45 degrees about z: with c = s = 1/sqrt2,
@@ -159,8 +154,7 @@ TEST(MassWorldInertia, RandomRotationsKeepPrincipalMoments) {
             const Vec3 axis = R.col(k);
             EXPECT_NEAR_ABS_REL(Vec3(I * axis), Vec3(moments[k] * axis), kAtol, 1e-12);
         }
-        EXPECT_NEAR_ABS_REL(Mat3(b.inv_inertia_world() * I), Mat3(Mat3::Identity()), kAtol,
-                            1e-12);
+        EXPECT_NEAR_ABS_REL(Mat3(b.inv_inertia_world() * I), Mat3(Mat3::Identity()), kAtol, 1e-12);
         const Vec3 w = rng.vec3(-3, 3);
         const Vec3 wb = R.transpose() * w;
         EXPECT_NEAR_ABS_REL(w.dot(I * w), wb.dot(b.inertia * wb), kAtol, 1e-12);
@@ -173,8 +167,7 @@ TEST(MassWorldInertia, RandomRotationsKeepPrincipalMoments) {
 // P I P = P.
 TEST(MassPseudoInverse, ThinRod) {
     const Mat3 I = rod_inertia(6.0, 2.0);
-    EXPECT_NEAR_ABS_REL(inertia_pseudo_inverse(I), Mat3(Vec3(0.0, 0.5, 0.5).asDiagonal()), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(inertia_pseudo_inverse(I), Mat3(Vec3(0.0, 0.5, 0.5).asDiagonal()), kAtol, kRtol);
     Body3 rod;
     rod.mass = 6.0;
     rod.inertia = I;
@@ -193,8 +186,7 @@ TEST(MassPseudoInverse, EqualsInverseWhenInvertible) {
     collide_test::Random rng(102);
     for (int i = 0; i < 100; ++i) {
         const Mat3 I = rng.inertia_body(rng.mass());
-        EXPECT_NEAR_ABS_REL(Mat3(inertia_pseudo_inverse(I) * I), Mat3(Mat3::Identity()), kAtol,
-                            1e-12);
+        EXPECT_NEAR_ABS_REL(Mat3(inertia_pseudo_inverse(I) * I), Mat3(Mat3::Identity()), kAtol, 1e-12);
     }
 }
 

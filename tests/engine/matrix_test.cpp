@@ -65,23 +65,19 @@ TEST(CollisionMatrix, NormalEntryIsTheFrictionlessDenominator) {
         Vec3 n = rng.unit3();
         if (relative_velocity(a, b).dot(n) > 0) n = -n;
         const double nKn = n.dot(collision_matrix(a, b) * n);
-        EXPECT_NEAR_ABS_REL(a.inv_m + b.inv_m + rotational_term(a, n) + rotational_term(b, n), nKn,
-                            0.0, 1e-12);
+        EXPECT_NEAR_ABS_REL(a.inv_m + b.inv_m + rotational_term(a, n) + rotational_term(b, n), nKn, 0.0, 1e-12);
         const double e = rng.uniform(0, 1);
-        EXPECT_NEAR_ABS_REL(frictionless(a, b, n, e).P,
-                            Vec3(-(1 + e) * relative_velocity(a, b).dot(n) / nKn * n), kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(frictionless(a, b, n, e).P, Vec3(-(1 + e) * relative_velocity(a, b).dot(n) / nKn * n),
+                            kAtol, kRtol);
 
         const Vec2 p2 = rng.vec2(-1, 1);
         const ImpactBody2 a2 = at_contact(rng.body2(), p2), b2 = at_contact(rng.body2(), p2);
         Vec2 n2 = rng.unit2();
         if (relative_velocity(a2, b2).dot(n2) > 0) n2 = -n2;
         const double nKn2 = n2.dot(collision_matrix(a2, b2) * n2);
-        EXPECT_NEAR_ABS_REL(a2.inv_m + b2.inv_m + rotational_term(a2, n2) +
-                                rotational_term(b2, n2),
-                            nKn2, 0.0, 1e-12);
+        EXPECT_NEAR_ABS_REL(a2.inv_m + b2.inv_m + rotational_term(a2, n2) + rotational_term(b2, n2), nKn2, 0.0, 1e-12);
         EXPECT_NEAR_ABS_REL(frictionless(a2, b2, n2, e).P,
-                            Vec2(-(1 + e) * relative_velocity(a2, b2).dot(n2) / nKn2 * n2), kAtol,
-                            kRtol);
+                            Vec2(-(1 + e) * relative_velocity(a2, b2).dot(n2) / nKn2 * n2), kAtol, kRtol);
     }
 }
 
@@ -97,16 +93,14 @@ TEST(CollisionMatrix, SphereAndDiscOnGroundHandValues) {
     ball.inv_I = Mat3::Identity() / (0.4 * m * R * R);
     ball.I = Mat3::Identity() * (0.4 * m * R * R);
     ball.r = Vec3(0, -R, 0);
-    EXPECT_NEAR_ABS_REL(collision_matrix(ground, ball),
-                        Mat3(Vec3(3.5 / m, 1 / m, 3.5 / m).asDiagonal()), kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(collision_matrix(ground, ball), Mat3(Vec3(3.5 / m, 1 / m, 3.5 / m).asDiagonal()), kAtol, kRtol);
     ImpactBody2 ground2;
     ImpactBody2 disc;
     disc.inv_m = 1 / m;
     disc.I = 0.5 * m * R * R;
     disc.inv_I = 1 / disc.I;
     disc.r = Vec2(0, -R);
-    EXPECT_NEAR_ABS_REL(collision_matrix(ground2, disc), Mat2(Vec2(3 / m, 1 / m).asDiagonal()),
-                        kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(collision_matrix(ground2, disc), Mat2(Vec2(3 / m, 1 / m).asDiagonal()), kAtol, kRtol);
 }
 
 // K P is the change of u caused by P (+P on B, -P on A): apply_impulse with a random P and
@@ -124,8 +118,7 @@ TEST(CollisionMatrix, KPIsTheChangeOfU) {
         const Vec3 KP = collision_matrix(a, b) * r.P;
         const double scale = relative_velocity(a, b).norm() + KP.norm();
         EXPECT_NEAR_SCALED(du, KP, kAtol, kRtol, scale);
-        EXPECT_NEAR_SCALED(Vec3(page::delta_vp(b, r.P) + page::delta_vp(a, r.P)), KP, kAtol,
-                           kRtol, scale);
+        EXPECT_NEAR_SCALED(Vec3(page::delta_vp(b, r.P) + page::delta_vp(a, r.P)), KP, kAtol, kRtol, scale);
 
         const Vec2 p2 = rng.vec2(-1, 1);
         const ImpactBody2 a2 = at_contact(rng.body2(), p2), b2 = at_contact(rng.body2(), p2);
@@ -151,8 +144,7 @@ TEST(MatrixModel, ReversesTheWholeRelativeVelocity) {
         if (u.dot(n) > 0) n = -n;
         const Response3 r = matrix(a, b, n, e);
         ASSERT_FALSE(r.separating);
-        const double scale = u.norm() + a.v.norm() + b.v.norm() + a.r.norm() * a.w.norm() +
-                             b.r.norm() * b.w.norm();
+        const double scale = u.norm() + a.v.norm() + b.v.norm() + a.r.norm() * a.w.norm() + b.r.norm() * b.w.norm();
         EXPECT_NEAR_SCALED(u_after(a, b, r), Vec3(-e * u), kAtol, 1e-11, scale);
         EXPECT_NEAR_ABS_REL(Vec3(collision_matrix(a, b) * r.P), Vec3(-(1 + e) * u), kAtol, 1e-11);
 
@@ -162,8 +154,8 @@ TEST(MatrixModel, ReversesTheWholeRelativeVelocity) {
         const Vec2 u2 = relative_velocity(a2, b2);
         if (u2.dot(n2) > 0) n2 = -n2;
         const Response2 r2 = matrix(a2, b2, n2, e);
-        const double scale2 = u2.norm() + a2.v.norm() + b2.v.norm() +
-                              a2.r.norm() * std::abs(a2.w) + b2.r.norm() * std::abs(b2.w);
+        const double scale2 =
+            u2.norm() + a2.v.norm() + b2.v.norm() + a2.r.norm() * std::abs(a2.w) + b2.r.norm() * std::abs(b2.w);
         EXPECT_NEAR_SCALED(u_after(a2, b2, r2), Vec2(-e * u2), kAtol, 1e-11, scale2);
     }
 }
@@ -193,8 +185,7 @@ TEST(MatrixModel, SuperballClosedForm) {
     // Energy is kept (e = 1): 1/2 m v^2 + 1/2 I w^2 before and after.
     const double I = 0.4 * m * R * R;
     EXPECT_NEAR_ABS_REL(0.5 * m * r.vb.squaredNorm() + 0.5 * I * r.wb.squaredNorm(),
-                        0.5 * m * ball.v.squaredNorm() + 0.5 * I * ball.w.squaredNorm(), kAtol,
-                        kRtol);
+                        0.5 * m * ball.v.squaredNorm() + 0.5 * I * ball.w.squaredNorm(), kAtol, kRtol);
 }
 
 // The matrix model can pull: reversing the whole relative velocity may need a negative normal

@@ -166,8 +166,8 @@ TEST(NumericalEdges, ThinRodStruckOnAnEdgeSpinsFastAboutItsAxis) {
     w.advance_to(0.5, &events);
     ASSERT_GE(events.size(), 1u);
     const Event<3>& ev = events[0];
-    const Vec3 n = ev.normal;  // from a (the rod) into b (the ball)
-    const Vec3 r = ev.point - rod0.position;   // the rod sat still until then
+    const Vec3 n = ev.normal;                 // from a (the rod) into b (the ball)
+    const Vec3 r = ev.point - rod0.position;  // the rod sat still until then
     const Vec3 rn = r.cross(n);
     const double un = -ev.before_b.v.dot(n);  // the ball's approach along n (the rod at rest)
     const double j = 2 * un / (1 / ms + 1 / mr + rn.dot(rod0.inv_inertia_world() * rn));

@@ -85,8 +85,7 @@ TEST(PageListing, Erratum5RotationalTermsSubtracted) {
     for (int i = 0; i < 1000; ++i) {
         const Pair3 s = random_approaching(rng);
         const page::Listing3 L = page::listing(s.a, s.b, s.n, 0.5);
-        const double expected = s.a.inv_m + s.b.inv_m - rotational_term(s.a, s.n) -
-                                rotational_term(s.b, s.n);
+        const double expected = s.a.inv_m + s.b.inv_m - rotational_term(s.a, s.n) - rotational_term(s.b, s.n);
         EXPECT_NEAR_ABS_REL(L.scalar, expected, 1e-14 * (s.a.inv_m + s.b.inv_m), 1e-12);
     }
 }
@@ -112,8 +111,7 @@ TEST(PageListing, Erratum5DenominatorZeroOrNegative) {
         const page::Listing3 Lst = page::listing(a, b, Vec3::UnitY(), 1.0);
         const double c2 = std::cos(t) * std::cos(t);
         EXPECT_NEAR_ABS_REL(Lst.scalar, (1 - 3 * c2) / m, 1e-14, 1e-12);
-        EXPECT_NEAR_ABS_REL(a.inv_m + b.inv_m + rotational_term(a, Vec3::UnitY()) +
-                                rotational_term(b, Vec3::UnitY()),
+        EXPECT_NEAR_ABS_REL(a.inv_m + b.inv_m + rotational_term(a, Vec3::UnitY()) + rotational_term(b, Vec3::UnitY()),
                             (1 + 3 * c2) / m, 1e-14, 1e-12);
         if (t == 0.0) {
             EXPECT_NEAR_ABS_REL(Lst.scalar, -2.0 / m, kAtol, kRtol);
@@ -139,8 +137,7 @@ TEST(PageListing, Erratum5DenominatorZeroOrNegative) {
     B.orientation = Quat(Eigen::AngleAxisd(-kPi / 2, Vec3::UnitY()));  // body x -> world z
     B.position = Vec3(0, 0, 1);
     ASSERT_NEAR((B.position - B.rotation().col(0)).norm(), 0.0, 1e-14);
-    const page::Listing3 Lr =
-        page::listing(at_contact(A, Vec3::Zero()), at_contact(B, Vec3::Zero()), Vec3::UnitY(), 1);
+    const page::Listing3 Lr = page::listing(at_contact(A, Vec3::Zero()), at_contact(B, Vec3::Zero()), Vec3::UnitY(), 1);
     EXPECT_NEAR_ABS_REL(Lr.scalar, -2.5, kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(Lr.Jmod, -0.8, kAtol, kRtol);
 }
@@ -281,8 +278,7 @@ TEST(PageDerivation, Erratum4DeltaVpAngularPartReversed) {
         apply_impulse(ground, b, &r);
         const Vec3 actual = (r.vb + r.wb.cross(b.r)) - point_velocity(b);
         EXPECT_NEAR_ABS_REL(page::delta_vp(b, J), actual, 1e-13, 1e-12);
-        EXPECT_NEAR_ABS_REL(page::delta_vp(b, J), Vec3(collision_matrix(ground, b) * J), 1e-13,
-                            1e-12);
+        EXPECT_NEAR_ABS_REL(page::delta_vp(b, J), Vec3(collision_matrix(ground, b) * J), 1e-13, 1e-12);
         const Vec3 linear = b.inv_m * J;
         const Vec3 as_written = page::delta_vp_as_written(b, J);
         EXPECT_NEAR_ABS_REL(Vec3(as_written - linear), Vec3(-(actual - linear)), 1e-13, 1e-11);
@@ -304,8 +300,8 @@ TEST(PageDerivation, Erratum3RestitutionMissesMinusSign) {
         const double vai = point_velocity(s.a).dot(s.n), vbi = point_velocity(s.b).dot(s.n);
         const double vaf = point_velocity(a1).dot(s.n), vbf = point_velocity(b1).dot(s.n);
         const double scale = std::abs(vai) + std::abs(vbi);
-        EXPECT_NEAR_ABS_REL(page::restitution_as_written(vai, vbi, vaf, vbf) * (vai - vbi),
-                            -e * (vai - vbi), 1e-12 * scale, 1e-10);
+        EXPECT_NEAR_ABS_REL(page::restitution_as_written(vai, vbi, vaf, vbf) * (vai - vbi), -e * (vai - vbi),
+                            1e-12 * scale, 1e-10);
     }
     // By hand: vai = 2, vbi = -1 approach; after e = 0.5: vaf = -0.25, vbf = 1.25
     // (vbf - vaf = 1.5 = -0.5 (-3)). As written: (-0.25 - 1.25)/(2 + 1) = -0.5.

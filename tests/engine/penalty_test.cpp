@@ -138,7 +138,8 @@ TEST(Penalty, DampingRatioForARestitutionInvertsTheClosedForms) {
         EXPECT_NEAR(penalty_restitution(penalty_damping_ratio_for(e, false), false), e, 1e-12);
     }
     // The textbook value: e = 0.5 with pull needs zeta = ln 2 / sqrt(pi^2 + ln^2 2) = 0.2155.
-    EXPECT_NEAR(penalty_damping_ratio_for(0.5, true), std::log(2.0) / std::sqrt(kPi * kPi + std::log(2.0) * std::log(2.0)), 1e-15);
+    EXPECT_NEAR(penalty_damping_ratio_for(0.5, true),
+                std::log(2.0) / std::sqrt(kPi * kPi + std::log(2.0) * std::log(2.0)), 1e-15);
     // Without pull an under-damped contact cannot go below exp(-2).
     EXPECT_THROW(penalty_damping_ratio_for(0.1, false), std::invalid_argument);
     EXPECT_NEAR(penalty_restitution(0.999999, false), std::exp(-2.0), 1e-2);

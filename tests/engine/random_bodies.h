@@ -25,11 +25,11 @@ namespace collide_test {
 
 using collide::Body2;
 using collide::Body3;
+using collide::kPi;
 using collide::Mat3;
 using collide::Quat;
 using collide::Vec2;
 using collide::Vec3;
-using collide::kPi;
 
 class Random {
 public:
@@ -41,16 +41,12 @@ public:
         return lo + (hi - lo) * unit;
     }
     // log-uniform in [lo, hi).
-    double log_uniform(double lo, double hi) {
-        return std::exp(uniform(std::log(lo), std::log(hi)));
-    }
+    double log_uniform(double lo, double hi) { return std::exp(uniform(std::log(lo), std::log(hi))); }
     // Masses: log-uniform 0.1 .. 10 kg.
     double mass() { return log_uniform(0.1, 10.0); }
 
     Vec2 vec2(double lo, double hi) { return Vec2(uniform(lo, hi), uniform(lo, hi)); }
-    Vec3 vec3(double lo, double hi) {
-        return Vec3(uniform(lo, hi), uniform(lo, hi), uniform(lo, hi));
-    }
+    Vec3 vec3(double lo, double hi) { return Vec3(uniform(lo, hi), uniform(lo, hi), uniform(lo, hi)); }
     Vec2 unit2() {
         const double angle = uniform(0.0, 2.0 * kPi);
         return Vec2(std::cos(angle), std::sin(angle));
@@ -59,8 +55,7 @@ public:
 
     // Uniformly distributed rotation (Shoemake's method).
     Quat rotation() {
-        const double u1 = uniform(0.0, 1.0), u2 = uniform(0.0, 2.0 * kPi),
-                     u3 = uniform(0.0, 2.0 * kPi);
+        const double u1 = uniform(0.0, 1.0), u2 = uniform(0.0, 2.0 * kPi), u3 = uniform(0.0, 2.0 * kPi);
         const double s = std::sqrt(1.0 - u1), t = std::sqrt(u1);
         return Quat(t * std::cos(u3), s * std::sin(u2), s * std::cos(u2), t * std::sin(u3));
     }
@@ -68,8 +63,7 @@ public:
     // Principal moments of a body of mass m whose mean squared extents a, b, c are log-uniform
     // in 0.005 .. 0.5 m^2: I1 = m (b + c), I2 = m (a + c), I3 = m (a + b).
     Vec3 principal_moments(double m) {
-        const double a = log_uniform(0.005, 0.5), b = log_uniform(0.005, 0.5),
-                     c = log_uniform(0.005, 0.5);
+        const double a = log_uniform(0.005, 0.5), b = log_uniform(0.005, 0.5), c = log_uniform(0.005, 0.5);
         return m * Vec3(b + c, a + c, a + b);
     }
     // Body-frame tensor, itself rotated by a random rotation so that it is not diagonal
@@ -109,8 +103,8 @@ private:
 
 // |a - b| <= atol + rtol * max(|a|, |b|) for vectors and matrices (Frobenius norm).
 template <class A, class B>
-::testing::AssertionResult near(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b,
-                                double atol, double rtol) {
+::testing::AssertionResult near(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b, double atol,
+                                double rtol) {
     const double err = (a - b).norm();
     const double bound = atol + rtol * std::max(a.norm(), b.norm());
     if (err <= bound) return ::testing::AssertionSuccess();
@@ -123,16 +117,15 @@ template <class A, class B>
 
 // The same with an explicit scale (e.g. the size of the terms a conserved sum is made of).
 template <class A, class B>
-::testing::AssertionResult near_scaled(const Eigen::MatrixBase<A>& a,
-                                       const Eigen::MatrixBase<B>& b, double atol, double rtol,
-                                       double scale) {
+::testing::AssertionResult near_scaled(const Eigen::MatrixBase<A>& a, const Eigen::MatrixBase<B>& b, double atol,
+                                       double rtol, double scale) {
     const double err = (a - b).norm();
     const double bound = atol + rtol * scale;
     if (err <= bound) return ::testing::AssertionSuccess();
     std::ostringstream os;
     os.precision(17);
-    os << "|a - b| = " << err << " > " << bound << " (atol " << atol << ", rtol " << rtol
-       << ", scale " << scale << ")\n  a = " << a.transpose() << "\n  b = " << b.transpose();
+    os << "|a - b| = " << err << " > " << bound << " (atol " << atol << ", rtol " << rtol << ", scale " << scale
+       << ")\n  a = " << a.transpose() << "\n  b = " << b.transpose();
     return ::testing::AssertionFailure() << os.str();
 }
 
@@ -150,7 +143,6 @@ inline ::testing::AssertionResult near(double a, double b, double atol, double r
 }  // namespace collide_test
 
 // EXPECT_LE(|a - b|, atol + rtol * scale), reported at the caller's line.
-#define EXPECT_NEAR_ABS_REL(a, b, atol, rtol) \
-    EXPECT_TRUE(::collide_test::near((a), (b), (atol), (rtol)))
-#define EXPECT_NEAR_SCALED(a, b, atol, rtol, scale) \
+#define EXPECT_NEAR_ABS_REL(a, b, atol, rtol) EXPECT_TRUE(::collide_test::near((a), (b), (atol), (rtol)))
+#define EXPECT_NEAR_SCALED(a, b, atol, rtol, scale)                                                                    \
     EXPECT_TRUE(::collide_test::near_scaled((a), (b), (atol), (rtol), (scale)))

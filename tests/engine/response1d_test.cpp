@@ -56,12 +56,8 @@ struct Case1D {
     double ma, mb, va, vb, e;
 };
 
-double va_after(const Case1D& c) {
-    return (c.ma * c.va + c.mb * c.vb + c.mb * c.e * (c.vb - c.va)) / (c.ma + c.mb);
-}
-double vb_after(const Case1D& c) {
-    return (c.ma * c.va + c.mb * c.vb + c.ma * c.e * (c.va - c.vb)) / (c.ma + c.mb);
-}
+double va_after(const Case1D& c) { return (c.ma * c.va + c.mb * c.vb + c.mb * c.e * (c.vb - c.va)) / (c.ma + c.mb); }
+double vb_after(const Case1D& c) { return (c.ma * c.va + c.mb * c.vb + c.ma * c.e * (c.va - c.vb)) / (c.ma + c.mb); }
 
 // The general closed form (header comment) for a table of cases. Worked by hand for the first:
 // ma = 2, mb = 3, va = 4, vb = -1, e = 0.5: va' = (8 - 3 + 1.5 (-5))/5 = -0.5,
@@ -71,8 +67,8 @@ TEST(Response1D, GeneralClosedFormAOnTheLeft) {
     EXPECT_NEAR_ABS_REL(hand.va, -0.5, kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(hand.vb, 2.0, kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(hand.P, 9.0, kAtol, kRtol);
-    const Case1D cases[] = {{2, 3, 4, -1, 0.5},    {1, 10, 1, 0, 1.0}, {10, 1, 1, 0, 1.0},
-                            {0.1, 7, 3, 2, 0.3},   {5, 5, 0, -2, 0.0}, {0.3, 0.2, -1, -4, 0.9},
+    const Case1D cases[] = {{2, 3, 4, -1, 0.5},          {1, 10, 1, 0, 1.0}, {10, 1, 1, 0, 1.0},
+                            {0.1, 7, 3, 2, 0.3},         {5, 5, 0, -2, 0.0}, {0.3, 0.2, -1, -4, 0.9},
                             {1.5, 2.5, 2, 2 - 1e-3, 0.7}};
     for (const Case1D& c : cases) {
         const Response1 r = frictionless(body(c.ma, c.va), body(c.mb, c.vb), +1.0, c.e);
@@ -94,8 +90,7 @@ TEST(Response1D, GeneralClosedFormBOnTheLeftNegativeImpulse) {
     EXPECT_NEAR_ABS_REL(hand.P, -9.0, kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(hand.vb, -0.5, kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(hand.va, 2.0, kAtol, kRtol);
-    const Case1D cases[] = {{2, 3, 4, -1, 0.5}, {1, 10, 1, 0, 1.0}, {0.1, 7, 3, 2, 0.3},
-                            {0.3, 0.2, -1, -4, 0.9}};
+    const Case1D cases[] = {{2, 3, 4, -1, 0.5}, {1, 10, 1, 0, 1.0}, {0.1, 7, 3, 2, 0.3}, {0.3, 0.2, -1, -4, 0.9}};
     for (const Case1D& c : cases) {
         // c.ma/c.va is the left body (now B), c.mb/c.vb the right body (now A).
         const Response1 r = frictionless(body(c.mb, c.vb), body(c.ma, c.va), -1.0, c.e);
@@ -131,8 +126,8 @@ TEST(Response1D, MovingWallReversesRelativeVelocity) {
 
 // Separating (un > 0) or resting (un = 0): no impulse, velocities unchanged.
 TEST(Response1D, SeparatingOrRestingGivesNoImpulse) {
-    for (const auto& [va, vb, n] : {std::tuple{-1.0, 2.0, 1.0}, std::tuple{1.0, 1.0, 1.0},
-                                    std::tuple{2.0, -1.0, -1.0}, std::tuple{0.0, 0.0, -1.0}}) {
+    for (const auto& [va, vb, n] : {std::tuple{-1.0, 2.0, 1.0}, std::tuple{1.0, 1.0, 1.0}, std::tuple{2.0, -1.0, -1.0},
+                                    std::tuple{0.0, 0.0, -1.0}}) {
         const Response1 r = frictionless(body(1.0, va), body(2.0, vb), n, 1.0);
         EXPECT_TRUE(r.separating);
         EXPECT_EQ(r.P, 0.0);
@@ -169,20 +164,17 @@ TEST(Response1D, RandomMomentumNewtonAndEnergyLoss) {
         const Response1 r = frictionless(body(ma, va), body(mb, vb), n, e);
         const double scale = ma * std::abs(va) + mb * std::abs(vb);
         EXPECT_NEAR_ABS_REL(ma * r.va + mb * r.vb, ma * va + mb * vb, 1e-13 * scale, 1e-13);
-        EXPECT_NEAR_ABS_REL(r.vb - r.va, -e * (vb - va), 1e-13 * (std::abs(va) + std::abs(vb)),
-                            1e-12);
+        EXPECT_NEAR_ABS_REL(r.vb - r.va, -e * (vb - va), 1e-13 * (std::abs(va) + std::abs(vb)), 1e-12);
         const double ke0 = 0.5 * (ma * va * va + mb * vb * vb);
         const double ke1 = 0.5 * (ma * r.va * r.va + mb * r.vb * r.vb);
         const double reduced = ma * mb / (ma + mb);
-        EXPECT_NEAR_ABS_REL(ke0 - ke1, 0.5 * (1 - e * e) * reduced * (vb - va) * (vb - va),
-                            1e-12 * ke0, 1e-12);
+        EXPECT_NEAR_ABS_REL(ke0 - ke1, 0.5 * (1 - e * e) * reduced * (vb - va) * (vb - va), 1e-12 * ke0, 1e-12);
     }
 }
 
 // Model names round-trip through parse_model; an unknown name is refused.
 TEST(ResponseModels, NamesRoundTrip) {
-    for (Model m : {Model::frictionless, Model::coulomb, Model::matrix, Model::stick,
-                    Model::page_listing}) {
+    for (Model m : {Model::frictionless, Model::coulomb, Model::matrix, Model::stick, Model::page_listing}) {
         Model parsed = Model::frictionless;
         EXPECT_TRUE(parse_model(model_name(m), &parsed));
         EXPECT_EQ(parsed, m);

@@ -52,8 +52,7 @@ TEST(Response2D, RodEndStrikesGround) {
         EXPECT_NEAR_ABS_REL(r.P, Vec2(0.0, j), kAtol, kRtol);
         EXPECT_NEAR_ABS_REL(r.vb, Vec2(0.0, -v0 + j / m), kAtol, kRtol);
         EXPECT_NEAR_ABS_REL(r.wb, -6.0 * j * c / (m * L), kAtol, kRtol);
-        EXPECT_NEAR_ABS_REL(Vec2(r.vb + cross(r.wb, b.r)),
-                            Vec2(-3.0 * j * std::sin(t) * c / m, e * v0), kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(Vec2(r.vb + cross(r.wb, b.r)), Vec2(-3.0 * j * std::sin(t) * c / m, e * v0), kAtol, kRtol);
         // The static ground keeps its (zero) motion.
         EXPECT_EQ(r.va, Vec2::Zero());
         EXPECT_EQ(r.wa, 0.0);
@@ -131,8 +130,8 @@ TEST(Response2D, SpinningAwayIsSeparating) {
     const ImpactBody2 a = at_contact(static_ground(), p), b = at_contact(rod, p);
     EXPECT_NEAR_ABS_REL(relative_velocity(a, b), Vec2(0.0, 1.0), kAtol, kRtol);
     const Vec2 n(0, 1);
-    for (const Response2& r : {frictionless(a, b, n, 1.0), coulomb(a, b, n, 0.5, 1.0),
-                               matrix(a, b, n, 0.5), stick(a, b, n)}) {
+    for (const Response2& r :
+         {frictionless(a, b, n, 1.0), coulomb(a, b, n, 0.5, 1.0), matrix(a, b, n, 0.5), stick(a, b, n)}) {
         EXPECT_TRUE(r.separating);
         EXPECT_EQ(r.P, Vec2::Zero());
         EXPECT_EQ(r.vb, rod.v);

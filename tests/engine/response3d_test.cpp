@@ -42,8 +42,7 @@ TEST(Response3D, RodEndStrikesGroundAtAnyHeading) {
         const double T = m * (3 * radius * radius + L * L) / 12.0;
         for (double psi_deg : {0.0, 35.0, 90.0, 200.0}) {
             for (double deg : {0.0, 20.0, 30.0, 45.0, 60.0, 75.0, 90.0}) {
-                SCOPED_TRACE(::testing::Message() << "radius " << radius << " heading "
-                                                  << psi_deg << " tilt " << deg);
+                SCOPED_TRACE(::testing::Message() << "radius " << radius << " heading " << psi_deg << " tilt " << deg);
                 const double t = deg * kPi / 180.0, psi = psi_deg * kPi / 180.0;
                 const double c = std::cos(t);
                 Body3 rod;
@@ -67,8 +66,7 @@ TEST(Response3D, RodEndStrikesGroundAtAnyHeading) {
                 EXPECT_NEAR_ABS_REL(r.vb, Vec3(0.0, -v0 + j / m, 0.0), kAtol, kRtol);
                 EXPECT_NEAR_ABS_REL(r.wb, Vec3(-0.5 * L * c * j / T * spin_axis), kAtol, kRtol);
                 // The foot leaves the ground at e v0.
-                EXPECT_NEAR_ABS_REL(Vec3(r.vb + r.wb.cross(b.r)).dot(Vec3::UnitY()), e * v0,
-                                    kAtol, kRtol);
+                EXPECT_NEAR_ABS_REL(Vec3(r.vb + r.wb.cross(b.r)).dot(Vec3::UnitY()), e * v0, kAtol, kRtol);
             }
         }
     }
@@ -92,13 +90,11 @@ TEST(Response3D, BarStrikesPost) {
             const Vec3 p = bar.orientation * Vec3(d, -0.5 * h, 0.0);
             Body3 post = static_ground();
             post.position = p - Vec3(0.0, 0.5, 0.0);
-            const Response3 r =
-                frictionless(at_contact(post, p), at_contact(bar, p), Vec3::UnitY(), e);
+            const Response3 r = frictionless(at_contact(post, p), at_contact(bar, p), Vec3::UnitY(), e);
             const double j = (1 + e) * m * v / (1 + m * d * d / Izz);
             EXPECT_NEAR_ABS_REL(r.P, Vec3(0.0, j, 0.0), kAtol, kRtol);
             EXPECT_NEAR_ABS_REL(r.vb, Vec3(0.0, -v + j / m, 0.0), kAtol, kRtol);
-            EXPECT_NEAR_ABS_REL(r.wb, Vec3(d * j / Izz * (bar.orientation * Vec3::UnitZ())),
-                                kAtol, kRtol);
+            EXPECT_NEAR_ABS_REL(r.wb, Vec3(d * j / Izz * (bar.orientation * Vec3::UnitZ())), kAtol, kRtol);
         }
     }
 }
@@ -184,8 +180,8 @@ TEST(Response3D, SpinningAwayIsSeparating) {
     const Vec3 p(-0.5, 0.0, 0.0), n = Vec3::UnitY();
     const ImpactBody3 a = at_contact(static_ground(), p), b = at_contact(rod, p);
     EXPECT_NEAR_ABS_REL(relative_velocity(a, b), Vec3(0.0, 1.0, 0.0), kAtol, kRtol);
-    for (const Response3& r : {frictionless(a, b, n, 1.0), coulomb(a, b, n, 0.5, 1.0),
-                               matrix(a, b, n, 0.5), stick(a, b, n), stick_newton_euler(a, b, n)}) {
+    for (const Response3& r : {frictionless(a, b, n, 1.0), coulomb(a, b, n, 0.5, 1.0), matrix(a, b, n, 0.5),
+                               stick(a, b, n), stick_newton_euler(a, b, n)}) {
         EXPECT_TRUE(r.separating);
         EXPECT_EQ(r.P, Vec3::Zero());
         EXPECT_EQ(r.vb, rod.v);

@@ -62,8 +62,7 @@ TEST(Rotation, InvariantsOverTenThousandSteps) {
     EXPECT_LT(worst_E, 1e-9);
     EXPECT_LT(worst_dir, 1e-8);
     char text[64];
-    std::snprintf(text, sizeof text, "|L| %.2e, energy %.2e, direction of L %.2e", worst_L,
-                  worst_E, worst_dir);
+    std::snprintf(text, sizeof text, "|L| %.2e, energy %.2e, direction of L %.2e", worst_L, worst_E, worst_dir);
     RecordProperty("relative_drift", text);
 }
 

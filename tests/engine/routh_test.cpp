@@ -15,8 +15,7 @@ using namespace collide;
 using collide_test::kPi;
 using Kind = RouthPhase::Kind;
 
-constexpr RestitutionLaw kLaws[] = {RestitutionLaw::newton, RestitutionLaw::poisson,
-                                    RestitutionLaw::stronge};
+constexpr RestitutionLaw kLaws[] = {RestitutionLaw::newton, RestitutionLaw::poisson, RestitutionLaw::stronge};
 // Closed forms and the program evaluate the same few products in a different order: a few
 // ulps of the O(1) values.
 constexpr double kAtol = 1e-13;
@@ -173,8 +172,7 @@ void check_two_phases(double mu, Kind second) {
             EXPECT_NEAR_ABS_REL(d.restitution_work, -e * e * d.compression_work, kAtol, kRtol);
         }
         // Delta E both ways: the integral of u . dP against the kinetic energies.
-        EXPECT_NEAR_ABS_REL(d.energy_change, kinetic(b, r.vb, r.wb) - kinetic(b, b.v, b.w), kAtol,
-                            kRtol);
+        EXPECT_NEAR_ABS_REL(d.energy_change, kinetic(b, r.vb, r.wb) - kinetic(b, b.v, b.w), kAtol, kRtol);
     }
 }
 TEST(Routh, SlideThenStickClosedForm2D) { check_two_phases(0.6, Kind::stick); }
@@ -193,8 +191,7 @@ TEST(Routh, StickFromStartClosedForm2D) {
         const Response2 r = routh(ground2(), b, Vec2(0, 1), e, mu, law, &d);
         ASSERT_EQ(d.phases.size(), 1u);
         EXPECT_EQ(d.phases[0].kind, Kind::stick);
-        EXPECT_NEAR_ABS_REL(r.P, Vec2((1 + e) * rod.m * v0 * Vec2(3 * s * c, 1 + 3 * s * s) / 4),
-                            kAtol, kRtol);
+        EXPECT_NEAR_ABS_REL(r.P, Vec2((1 + e) * rod.m * v0 * Vec2(3 * s * c, 1 + 3 * s * s) / 4), kAtol, kRtol);
         EXPECT_FALSE(r.sliding);
         const Vec2 u1 = point_velocity(ImpactBody2{b.inv_m, b.inv_I, b.I, b.r, r.vb, r.wb});
         EXPECT_NEAR_ABS_REL(u1, Vec2(0, e * v0), kAtol, kRtol);
@@ -273,10 +270,8 @@ TEST(Routh, RandomRough2D) {
             for (const ImpactBody2* body : {&s.a, &s.b}) {
                 const bool is_a = body == &s.a;
                 const double L0 = moment_about_contact(*body, body->v, body->w);
-                const double L1 = moment_about_contact(*body, is_a ? r.va : r.vb,
-                                                       is_a ? r.wa : r.wb);
-                const double scale = body->I * std::abs(body->w) +
-                                     body->r.norm() * body->v.norm() / body->inv_m +
+                const double L1 = moment_about_contact(*body, is_a ? r.va : r.vb, is_a ? r.wa : r.wb);
+                const double scale = body->I * std::abs(body->w) + body->r.norm() * body->v.norm() / body->inv_m +
                                      body->r.norm() * r.P.norm();
                 EXPECT_NEAR(L1, L0, 1e-12 * scale);
             }
@@ -329,8 +324,7 @@ TEST(Routh, MuZeroIsFrictionlessForEveryLaw) {
 TEST(Routh, LawsAgreeWithoutNormalTangentialCoupling) {
     collide_test::Random rng(603);
     for (int i = 0; i < 1000; ++i) {
-        const double m = rng.mass(), R = rng.uniform(0.1, 1.0), e = rng.uniform(0, 1),
-                     mu = rng.uniform(0, 1);
+        const double m = rng.mass(), R = rng.uniform(0.1, 1.0), e = rng.uniform(0, 1), mu = rng.uniform(0, 1);
         ImpactBody2 disc;
         disc.inv_m = 1 / m;
         disc.I = disc_inertia_2d(m, R);
@@ -387,12 +381,11 @@ TEST(Routh, PlanarStrike3DIs2D) {
             EXPECT_FALSE(d3.jammed);
             EXPECT_NEAR_ABS_REL(r3.P, lift(r2.P), 1e-12, 1e-9);
             EXPECT_NEAR_ABS_REL(r3.wb, lift_spin(r2.wb), 1e-12, 1e-9);
-            EXPECT_NEAR(d3.energy_change, d2.energy_change,
-                        1e-9 * (std::abs(d2.energy_change) + d2.final_normal_impulse *
-                                                                 relative_velocity(a2, b2).norm()));
+            EXPECT_NEAR(
+                d3.energy_change, d2.energy_change,
+                1e-9 * (std::abs(d2.energy_change) + d2.final_normal_impulse * relative_velocity(a2, b2).norm()));
             ASSERT_EQ(d3.phases.size(), d2.phases.size());
-            for (std::size_t k = 0; k < d2.phases.size(); ++k)
-                EXPECT_EQ(d3.phases[k].kind, d2.phases[k].kind);
+            for (std::size_t k = 0; k < d2.phases.size(); ++k) EXPECT_EQ(d3.phases[k].kind, d2.phases[k].kind);
         }
     }
     EXPECT_GT(compared, 800);
@@ -422,17 +415,16 @@ TEST(Routh, RandomRough3D) {
             EXPECT_NEAR(d.energy_change, dE, 1e-12 * E0);
             if (law == RestitutionLaw::stronge) {
                 EXPECT_LE(dE, 1e-9 * E0);
-                EXPECT_NEAR(d.restitution_work, -e * e * d.compression_work,
-                            1e-9 * std::abs(d.compression_work));
+                EXPECT_NEAR(d.restitution_work, -e * e * d.compression_work, 1e-9 * std::abs(d.compression_work));
             }
             const double Pn = r.P.dot(n);
             EXPECT_GE(Pn, 0.0);
             EXPECT_LE((r.P - Pn * n).norm(), mu * Pn * (1 + 1e-9) + 1e-12);
             const double pscale = r.P.norm() * 2.0;
-            EXPECT_NEAR_SCALED(moment_about_contact(a, r.va, r.wa), moment_about_contact(a, a.v, a.w),
-                               0.0, 1e-12, (a.I * a.w).norm() + a.v.norm() / a.inv_m * 2 + pscale);
-            EXPECT_NEAR_SCALED(moment_about_contact(b, r.vb, r.wb), moment_about_contact(b, b.v, b.w),
-                               0.0, 1e-12, (b.I * b.w).norm() + b.v.norm() / b.inv_m * 2 + pscale);
+            EXPECT_NEAR_SCALED(moment_about_contact(a, r.va, r.wa), moment_about_contact(a, a.v, a.w), 0.0, 1e-12,
+                               (a.I * a.w).norm() + a.v.norm() / a.inv_m * 2 + pscale);
+            EXPECT_NEAR_SCALED(moment_about_contact(b, r.vb, r.wb), moment_about_contact(b, b.v, b.w), 0.0, 1e-12,
+                               (b.I * b.w).norm() + b.v.norm() / b.inv_m * 2 + pscale);
             ImpactBody3 a1 = a, b1 = b;
             a1.v = r.va, a1.w = r.wa, b1.v = r.vb, b1.w = r.wb;
             const double un1 = relative_velocity(a1, b1).dot(n);
@@ -556,8 +548,7 @@ TEST(Routh, SlipEndInClosedFormMatchesATighterIntegration) {
             ASSERT_EQ(d.phases.size(), ref.phases.size()) << "draw " << i;
             for (std::size_t k = 0; k < d.phases.size(); ++k) {
                 EXPECT_EQ(d.phases[k].kind, ref.phases[k].kind);
-                EXPECT_NEAR(d.phases[k].normal_impulse_to, ref.phases[k].normal_impulse_to,
-                            1e-9 * Pscale);
+                EXPECT_NEAR(d.phases[k].normal_impulse_to, ref.phases[k].normal_impulse_to, 1e-9 * Pscale);
             }
         }
     }

@@ -99,8 +99,7 @@ TEST(Shape2d, SeparatedCornersReportExactDistance) {
 constexpr double kTouchMargin = 1e-10;
 
 Vec2 rotated(const Vec2& v, double angle) {
-    return Vec2(std::cos(angle) * v.x() - std::sin(angle) * v.y(),
-                std::sin(angle) * v.x() + std::cos(angle) * v.y());
+    return Vec2(std::cos(angle) * v.x() - std::sin(angle) * v.y(), std::sin(angle) * v.x() + std::cos(angle) * v.y());
 }
 
 // Lesson 6 (lessons/06-general-2d.toml) at the instant of its hit: A (0.4 x 0.2, 45 degrees)
@@ -149,11 +148,10 @@ TEST(Shape2d, CornerTouchingFaceSweep) {
                         const Vec2 corner = pa.apply(a.polygon.vertices[0]);
                         const Vec2 face_normal = rotated(Vec2(-1, 0), turn);  // B's, outward
                         const Vec2 on_face = rotated(Vec2(0.2, 0.0), turn);
-                        const Manifold2 m = swap ? collide(b, pb, a, pa, kTouchMargin)
-                                                 : collide(a, pa, b, pb, kTouchMargin);
-                        SCOPED_TRACE(testing::Message() << "theta " << theta << " height " << height
-                                                        << " gap " << gap << " turn " << turn
-                                                        << " swap " << swap);
+                        const Manifold2 m =
+                            swap ? collide(b, pb, a, pa, kTouchMargin) : collide(a, pa, b, pb, kTouchMargin);
+                        SCOPED_TRACE(testing::Message() << "theta " << theta << " height " << height << " gap " << gap
+                                                        << " turn " << turn << " swap " << swap);
                         const Vec2 expected = swap ? face_normal : Vec2(-face_normal);
                         ASSERT_LE((m.normal - expected).norm(), 1e-9);
                         ASSERT_NEAR(m.separation, gap, 1e-14);
@@ -219,8 +217,9 @@ TEST(Shape2d, CornerTouchingCornerExactly) {
             const Pose2 pb{c - rotated(b.polygon.vertices[j], tb), tb};
             // The pair is a corner-corner touch only if the two corners' outer cones overlap.
             bool separable = false;
-            for (const Vec2& n : {pa.rotate(a.polygon.normals[i]), pa.rotate(a.polygon.normals[(i + 3) % 4]),
-                                  Vec2(-pb.rotate(b.polygon.normals[j])), Vec2(-pb.rotate(b.polygon.normals[(j + 3) % 4]))}) {
+            for (const Vec2& n :
+                 {pa.rotate(a.polygon.normals[i]), pa.rotate(a.polygon.normals[(i + 3) % 4]),
+                  Vec2(-pb.rotate(b.polygon.normals[j])), Vec2(-pb.rotate(b.polygon.normals[(j + 3) % 4]))}) {
                 bool ok = true;
                 for (int k = 0; k < 4; ++k) {
                     ok = ok && n.dot(pa.apply(a.polygon.vertices[k]) - c) <= 1e-12;

@@ -33,12 +33,8 @@ Shape3 half_space(const Vec3& normal, double offset) {
     return s;
 }
 Shape3 ground() { return half_space(Vec3(0, 1, 0), 0.0); }
-Pose3 at(double x, double y, double z, const Quat& q = Quat::Identity()) {
-    return Pose3{Vec3(x, y, z), q};
-}
-Quat about(const Vec3& axis, double angle) {
-    return Quat(Eigen::AngleAxisd(angle, axis.normalized()));
-}
+Pose3 at(double x, double y, double z, const Quat& q = Quat::Identity()) { return Pose3{Vec3(x, y, z), q}; }
+Quat about(const Vec3& axis, double angle) { return Quat(Eigen::AngleAxisd(angle, axis.normalized())); }
 
 // Exact signed distance of p from the shape's surface (negative inside), from Eigen directly.
 double signed_distance(const Shape3& s, const Pose3& pose, const Vec3& p) {
@@ -103,8 +99,8 @@ TEST(Shape3d, SphereSphere) {
 // point halfway between the face (y = 0.5) and the sphere's bottom (y = 0.45).
 TEST(Shape3d, SphereAboveBoxFace) {
     const Scene sc;
-    const Manifold3 m = collide(box(1, 0.5, 0.75), sc.pose(Vec3::Zero()), sphere(0.2),
-                                sc.pose(Vec3(0.3, 0.65, -0.2)), 0.1);
+    const Manifold3 m =
+        collide(box(1, 0.5, 0.75), sc.pose(Vec3::Zero()), sphere(0.2), sc.pose(Vec3(0.3, 0.65, -0.2)), 0.1);
     EXPECT_NEAR(m.separation, -0.05, kTol);
     EXPECT_LE((m.normal - sc.dir(Vec3(0, 1, 0))).norm(), kTol);
     ASSERT_EQ(m.count, 1);
@@ -116,8 +112,8 @@ TEST(Shape3d, SphereAboveBoxFace) {
 // (0.6, 0.8, 0); nearest box point (1, 0.5, 0.1), sphere point 0.1 back along the normal.
 TEST(Shape3d, SphereNearBoxEdge) {
     const Scene sc;
-    const Manifold3 m = collide(box(1, 0.5, 0.75), sc.pose(Vec3::Zero()), sphere(0.1),
-                                sc.pose(Vec3(1.3, 0.9, 0.1)), 1.0);
+    const Manifold3 m =
+        collide(box(1, 0.5, 0.75), sc.pose(Vec3::Zero()), sphere(0.1), sc.pose(Vec3(1.3, 0.9, 0.1)), 1.0);
     EXPECT_NEAR(m.separation, 0.5 - 0.1, kTol);
     EXPECT_LE((m.normal - sc.dir(Vec3(0.6, 0.8, 0))).norm(), kTol);
     ASSERT_EQ(m.count, 1);
@@ -129,8 +125,7 @@ TEST(Shape3d, SphereNearBoxEdge) {
 // from the box; with the sphere as A the normal points into the box.
 TEST(Shape3d, SphereNearBoxCorner) {
     const Scene sc;
-    const Manifold3 m = collide(sphere(0.1), sc.pose(Vec3(1.2, 0.9, 1.15)), box(1, 0.5, 0.75),
-                                sc.pose(Vec3::Zero()));
+    const Manifold3 m = collide(sphere(0.1), sc.pose(Vec3(1.2, 0.9, 1.15)), box(1, 0.5, 0.75), sc.pose(Vec3::Zero()));
     EXPECT_NEAR(m.separation, 0.6 - 0.1, kTol);
     EXPECT_LE((m.normal - sc.dir(-Vec3(1, 2, 2) / 3)).norm(), kTol);
     EXPECT_EQ(m.count, 0);
@@ -140,8 +135,7 @@ TEST(Shape3d, SphereNearBoxCorner) {
 // away; the nearest is +y (0.15), so the depth is 0.15 + r along +y.
 TEST(Shape3d, SphereCentreInsideBox) {
     const Scene sc;
-    const Manifold3 m = collide(box(1, 0.5, 0.75), sc.pose(Vec3::Zero()), sphere(0.1),
-                                sc.pose(Vec3(0.3, 0.35, -0.2)));
+    const Manifold3 m = collide(box(1, 0.5, 0.75), sc.pose(Vec3::Zero()), sphere(0.1), sc.pose(Vec3(0.3, 0.35, -0.2)));
     EXPECT_NEAR(m.separation, -0.25, kTol);
     EXPECT_LE((m.normal - sc.dir(Vec3(0, 1, 0))).norm(), kTol);
     ASSERT_EQ(m.count, 1);
@@ -187,8 +181,8 @@ TEST(Shape3d, BoxFlatOnGroundHasFourPoints) {
     EXPECT_NEAR(m.separation, -0.001, kTol);
     EXPECT_LE((m.normal - Vec3(0, 1, 0)).norm(), kTol);
     ASSERT_EQ(m.count, 4);
-    const std::vector<Vec3> corners = {Vec3(1.5, -0.0005, -1.3), Vec3(2.5, -0.0005, -1.3),
-                                       Vec3(1.5, -0.0005, -0.7), Vec3(2.5, -0.0005, -0.7)};
+    const std::vector<Vec3> corners = {Vec3(1.5, -0.0005, -1.3), Vec3(2.5, -0.0005, -1.3), Vec3(1.5, -0.0005, -0.7),
+                                       Vec3(2.5, -0.0005, -0.7)};
     for (int i = 0; i < 4; ++i) {
         EXPECT_NEAR(m.depths[i], -0.001, kTol);
         EXPECT_TRUE(near_one_of(m.points[i], corners, kTol)) << m.points[i].transpose();
@@ -218,8 +212,7 @@ TEST(Shape3d, BoxOnEdgeHasTwoPoints) {
 TEST(Shape3d, BoxOnCornerHasOnePoint) {
     const double h = std::sqrt(0.75);
     const Quat q = Quat::FromTwoVectors(Vec3(-1, -1, -1).normalized(), Vec3(0, -1, 0));
-    const Manifold3 m =
-        collide(ground(), at(0.2, 0, 0.3), box(0.5, 0.5, 0.5), at(0.2, h - 1e-3, 0.3, q));
+    const Manifold3 m = collide(ground(), at(0.2, 0, 0.3), box(0.5, 0.5, 0.5), at(0.2, h - 1e-3, 0.3, q));
     EXPECT_NEAR(m.separation, -1e-3, kTol);
     ASSERT_EQ(m.count, 1);
     EXPECT_NEAR(m.depths[0], -1e-3, kTol);
@@ -235,8 +228,8 @@ TEST(Shape3d, StackedBoxesClipToTheOverlap) {
     EXPECT_NEAR(m.separation, -0.01, kTol);
     EXPECT_LE((m.normal - Vec3(0, 1, 0)).norm(), kTol);
     ASSERT_EQ(m.count, 4);
-    const std::vector<Vec3> corners = {Vec3(0.3, 0.495, -1), Vec3(1, 0.495, -1),
-                                       Vec3(1, 0.495, -0.2), Vec3(0.3, 0.495, -0.2)};
+    const std::vector<Vec3> corners = {Vec3(0.3, 0.495, -1), Vec3(1, 0.495, -1), Vec3(1, 0.495, -0.2),
+                                       Vec3(0.3, 0.495, -0.2)};
     const std::vector<Vec3> p = sorted_points(m);
     for (int i = 0; i < 4; ++i) {
         EXPECT_NEAR(m.depths[i], -0.01, kTol);
@@ -262,8 +255,8 @@ TEST(Shape3d, StackedBoxesClipToTheOverlap) {
 // largest inscribed quadrilateral takes every other vertex: a square of area 2 R^2 with
 // R^2 = 1 + (sqrt2 - 1)^2 = 4 - 2 sqrt2.
 TEST(Shape3d, RotatedStackKeepsFourSpanningPoints) {
-    const Manifold3 m = collide(box(1, 0.5, 1), at(0, 0, 0), box(1, 0.25, 1),
-                                at(0, 0.74, 0, about(Vec3::UnitY(), kPi / 4)));
+    const Manifold3 m =
+        collide(box(1, 0.5, 1), at(0, 0, 0), box(1, 0.25, 1), at(0, 0.74, 0, about(Vec3::UnitY(), kPi / 4)));
     EXPECT_NEAR(m.separation, -0.01, kTol);
     EXPECT_LE((m.normal - Vec3(0, 1, 0)).norm(), kTol);
     ASSERT_EQ(m.count, 4);
@@ -280,12 +273,10 @@ TEST(Shape3d, RotatedStackKeepsFourSpanningPoints) {
     }
     // Area of the kept quadrilateral (points ordered by angle about the centre, shoelace in xz).
     std::vector<Vec3> p(m.points.begin(), m.points.end());
-    std::sort(p.begin(), p.end(), [](const Vec3& a, const Vec3& b) {
-        return std::atan2(a.z(), a.x()) < std::atan2(b.z(), b.x());
-    });
+    std::sort(p.begin(), p.end(),
+              [](const Vec3& a, const Vec3& b) { return std::atan2(a.z(), a.x()) < std::atan2(b.z(), b.x()); });
     double area = 0.0;
-    for (int i = 0; i < 4; ++i)
-        area += 0.5 * (p[i].x() * p[(i + 1) % 4].z() - p[(i + 1) % 4].x() * p[i].z());
+    for (int i = 0; i < 4; ++i) area += 0.5 * (p[i].x() * p[(i + 1) % 4].z() - p[(i + 1) % 4].x() * p[i].z());
     EXPECT_NEAR(std::abs(area), 8 - 4 * std::sqrt(2.0), 1e-9);
 }
 
@@ -371,8 +362,7 @@ TEST(Shape3d, RandomPosesAreConsistent) {
         const double u = rng.uniform(0, 1);
         Shape3 s;
         if (u < 0.3) s = sphere(rng.uniform(0.1, 0.8));
-        else if (u < 0.85) s = box(rng.uniform(0.1, 0.8), rng.uniform(0.1, 0.8),
-                                   rng.uniform(0.1, 0.8));
+        else if (u < 0.85) s = box(rng.uniform(0.1, 0.8), rng.uniform(0.1, 0.8), rng.uniform(0.1, 0.8));
         else s = half_space(rng.unit3(), rng.uniform(-0.5, 0.5));
         *pose = Pose3{rng.vec3(-0.8, 0.8), rng.rotation()};
         return s;

@@ -85,8 +85,7 @@ TEST(Stick, OneRigidMotionAfterwards) {
         const Response3 r = stick(at_contact(s.A, s.p), at_contact(s.B, s.p), s.n);
         EXPECT_NEAR_ABS_REL(r.wa, r.wb, 0.0, 0.0);
         const Vec3 rigid = r.wa.cross(s.B.position - s.A.position);
-        EXPECT_NEAR_SCALED(Vec3(r.vb - r.va), rigid, kAtol, kRtol,
-                           r.va.norm() + r.vb.norm() + rigid.norm());
+        EXPECT_NEAR_SCALED(Vec3(r.vb - r.va), rigid, kAtol, kRtol, r.va.norm() + r.vb.norm() + rigid.norm());
     }
 }
 
@@ -132,8 +131,7 @@ TEST(Stick, PointMassesCommonVelocity) {
     EXPECT_NEAR_ABS_REL(r.va, Vec3(0, 1.5, 1), kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(r.vb, Vec3(0, 1.5, 1), kAtol, kRtol);
     EXPECT_LE(r.wa.norm(), 1e-15);
-    EXPECT_NEAR_ABS_REL(stick_newton_euler(a, b, Vec3::UnitX()).va, Vec3(0, 1.5, 1), kAtol,
-                        kRtol);
+    EXPECT_NEAR_ABS_REL(stick_newton_euler(a, b, Vec3::UnitX()).va, Vec3(0, 1.5, 1), kAtol, kRtol);
 }
 
 // Two identical solid spheres (m, R) meet head-on, off-centre by b (impact parameter), at +-v
@@ -157,8 +155,8 @@ TEST(Stick, IdenticalSpheresOffCentreSpin) {
     const Vec3 p = Vec3::Zero(), n = (B.position - A.position) / (2 * R);
     ASSERT_NEAR((B.position - A.position).norm(), 2 * R, 1e-14);
     const Vec3 w(0, 0, 5 * b * v / (14 * R * R));
-    for (const Response3& r : {stick(at_contact(A, p), at_contact(B, p), n),
-                               stick_newton_euler(at_contact(A, p), at_contact(B, p), n)}) {
+    for (const Response3& r :
+         {stick(at_contact(A, p), at_contact(B, p), n), stick_newton_euler(at_contact(A, p), at_contact(B, p), n)}) {
         EXPECT_NEAR_ABS_REL(r.wa, w, kAtol, kRtol);
         EXPECT_NEAR_ABS_REL(r.wb, w, kAtol, kRtol);
         EXPECT_NEAR_ABS_REL(r.va, Vec3(w.cross(A.position)), kAtol, kRtol);
@@ -186,8 +184,7 @@ TEST(CombinedBody, IdenticalSpheresHandValues) {
     EXPECT_LE(c.xc.norm(), 1e-16);
     EXPECT_NEAR_ABS_REL(c.da, xa, kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(c.db, xb, kAtol, kRtol);
-    EXPECT_NEAR_ABS_REL(c.I, Mat3(2.8 * m * R * R * Mat3::Identity() - 2 * m * xa * xa.transpose()),
-                        kAtol, kRtol);
+    EXPECT_NEAR_ABS_REL(c.I, Mat3(2.8 * m * R * R * Mat3::Identity() - 2 * m * xa * xa.transpose()), kAtol, kRtol);
     EXPECT_NEAR_ABS_REL(c.I(2, 2), 2.8 * m * R * R, kAtol, kRtol);
     EXPECT_LE(c.v.norm(), 1e-16);
     EXPECT_NEAR_ABS_REL(c.L, Vec3(0, 0, m * v * b), kAtol, kRtol);
@@ -227,8 +224,7 @@ TEST(CombinedBody, RandomPairsMatchDefinitions) {
         EXPECT_NEAR_ABS_REL(c.v, Vec3(totals({A, B}).momentum / M), kAtol, kRtol);
         EXPECT_NEAR_SCALED(c.L, totals({A, B}, centre).angular_momentum, kAtol, kRtol,
                            (A.inertia_world() * A.w).norm() + (B.inertia_world() * B.w).norm() +
-                               A.mass * c.da.norm() * A.v.norm() +
-                               B.mass * c.db.norm() * B.v.norm());
+                               A.mass * c.da.norm() * A.v.norm() + B.mass * c.db.norm() * B.v.norm());
         EXPECT_NEAR_ABS_REL(c.I, Mat3(c.I.transpose()), 0.0, 1e-14);
         EXPECT_GT(Eigen::SelfAdjointEigenSolver<Mat3>(c.I).eigenvalues().minCoeff(), 0.0);
         EXPECT_NEAR_ABS_REL(Vec3(c.I * c.w), c.L, kAtol, 1e-11);

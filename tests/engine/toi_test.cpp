@@ -20,8 +20,7 @@ Motion2 moving(Vec2 x, Vec2 v, double angle = 0, double w = 0, Vec2 g = Vec2::Ze
 
 // Gap 1 m closing at 3 m/s: t = 1/3 s. The tolerance 1e-10 m is 3.3e-11 s at 3 m/s.
 TEST(Toi2d, HeadOnDiscs) {
-    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {1, 0}), disc(0.5),
-                                          moving({2, 0}, {-2, 0}), 10.0);
+    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {1, 0}), disc(0.5), moving({2, 0}, {-2, 0}), 10.0);
     ASSERT_TRUE(r.hit);
     EXPECT_NEAR(r.t, 1.0 / 3.0, 1e-10);
     EXPECT_LE(r.manifold.separation, 1e-10);
@@ -33,8 +32,7 @@ TEST(Toi2d, HeadOnDiscs) {
 // A at the origin moving +x at 1 m/s, B resting at (3, 0.6), radii 0.5: contact when
 // (3 - t)^2 + 0.36 = 1, t = 2.2 s; the normal then points along (0.8, 0.6).
 TEST(Toi2d, ObliqueApproach) {
-    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {1, 0}), disc(0.5),
-                                          moving({3, 0.6}, {0, 0}), 10.0);
+    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {1, 0}), disc(0.5), moving({3, 0.6}, {0, 0}), 10.0);
     ASSERT_TRUE(r.hit);
     EXPECT_NEAR(r.t, 2.2, 1e-9);
     EXPECT_LE((r.manifold.normal - Vec2(0.8, 0.6)).norm(), 1e-9);
@@ -43,8 +41,8 @@ TEST(Toi2d, ObliqueApproach) {
 // A disc dropped from rest with its lowest point h above the ground: t = sqrt(2 h / g).
 TEST(Toi2d, FallUnderGravity) {
     const double g = 9.81, h = 1.25, R = 0.1;
-    const TimeOfImpact r = time_of_impact(ground(), moving({0, 0}, {0, 0}), disc(R),
-                                          moving({0, h + R}, {0.3, 0}, 0, 0, {0, -g}), 10.0);
+    const TimeOfImpact r =
+        time_of_impact(ground(), moving({0, 0}, {0, 0}), disc(R), moving({0, h + R}, {0.3, 0}, 0, 0, {0, -g}), 10.0);
     ASSERT_TRUE(r.hit);
     EXPECT_NEAR(r.t, std::sqrt(2 * h / g), 1e-9);
     EXPECT_LE((r.manifold.points[0] - Vec2(0.3 * r.t, 0)).norm(), 1e-9);
@@ -68,8 +66,8 @@ TEST(Toi2d, SpinningBoxLands) {
         }
     ASSERT_GT(hi, 0);
     for (int i = 0; i < 200; ++i) (f(0.5 * (lo + hi)) > 0 ? lo : hi) = 0.5 * (lo + hi);
-    const TimeOfImpact r = time_of_impact(ground(), moving({0, 0}, {0, 0}), rect(W, H),
-                                          moving({0, y0}, {0, -s}, 0, w0), 10.0);
+    const TimeOfImpact r =
+        time_of_impact(ground(), moving({0, 0}, {0, 0}), rect(W, H), moving({0, y0}, {0, -s}, 0, w0), 10.0);
     ASSERT_TRUE(r.hit);
     ASSERT_TRUE(r.converged);
     EXPECT_NEAR(r.t, lo, 1e-9);
@@ -77,8 +75,8 @@ TEST(Toi2d, SpinningBoxLands) {
 
 // Closest approach 0.05 m beyond contact: no hit, and the answer comes back.
 TEST(Toi2d, NearMiss) {
-    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {1, 0}), disc(0.5),
-                                          moving({3, 1.05}, {0, 0}), 10.0);
+    const TimeOfImpact r =
+        time_of_impact(disc(0.5), moving({0, 0}, {1, 0}), disc(0.5), moving({3, 1.05}, {0, 0}), 10.0);
     EXPECT_FALSE(r.hit);
     EXPECT_TRUE(r.converged);
 }
@@ -86,8 +84,8 @@ TEST(Toi2d, NearMiss) {
 // 1000 m/s against a 1 mm plate 1 m away: contact at (1 - 0.0005 - 0.01) / 1000 s, before any
 // overlap (a fixed step of 1/60 s would jump 16 m past it).
 TEST(Toi2d, FastDiscDoesNotTunnel) {
-    const TimeOfImpact r = time_of_impact(disc(0.01), moving({0, 0}, {1000, 0}), rect(0.001, 1),
-                                          moving({1, 0}, {0, 0}), 1.0 / 60.0);
+    const TimeOfImpact r =
+        time_of_impact(disc(0.01), moving({0, 0}, {1000, 0}), rect(0.001, 1), moving({1, 0}, {0, 0}), 1.0 / 60.0);
     ASSERT_TRUE(r.hit);
     EXPECT_NEAR(r.t, (1 - 0.0005 - 0.01) / 1000.0, 1e-12);
     EXPECT_GE(r.manifold.separation, -1e-12);
@@ -95,8 +93,7 @@ TEST(Toi2d, FastDiscDoesNotTunnel) {
 
 // Bodies that already overlap at t = 0 are reported at t = 0 with their depth.
 TEST(Toi2d, InitialOverlapIsImmediate) {
-    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {0, 0}), disc(0.5),
-                                          moving({0.9, 0}, {0, 0}), 1.0);
+    const TimeOfImpact r = time_of_impact(disc(0.5), moving({0, 0}, {0, 0}), disc(0.5), moving({0.9, 0}, {0, 0}), 1.0);
     ASSERT_TRUE(r.hit);
     EXPECT_EQ(r.t, 0.0);
     EXPECT_NEAR(r.manifold.separation, -0.1, 1e-12);

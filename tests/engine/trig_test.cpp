@@ -95,7 +95,8 @@ TEST(Trig, ExpMapIsTheAngleAxisRotation) {
         const Vec3 phi = a * Vec3(0.48, -0.6, 0.64);  // a unit axis
         const Quat q = exp_map(phi);
         EXPECT_NEAR(q.w(), std::cos(0.5 * a), 2.3e-16) << a;
-        EXPECT_LE((q.vec() - std::sin(0.5 * a) * Vec3(0.48, -0.6, 0.64)).norm(), 4.5e-16 * std::sin(0.5 * a)) << a;  // 2 ulp
+        EXPECT_LE((q.vec() - std::sin(0.5 * a) * Vec3(0.48, -0.6, 0.64)).norm(), 4.5e-16 * std::sin(0.5 * a))
+            << a;  // 2 ulp
     }
     EXPECT_EQ(exp_map(Vec3::Zero()).coeffs(), Quat::Identity().coeffs());
 }

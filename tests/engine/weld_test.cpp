@@ -120,10 +120,10 @@ TEST(Weld, StuckBoxesIn3DKeepMomentaAndTheirRelativePose) {
     Scene s = stick_scene(3);
     const Quat qa = Quat(Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()));
     const Quat qb = Quat(Eigen::AngleAxisd(-0.7, Vec3(-2, 1, 0.5).normalized()));
-    s.bodies.push_back(box("a", Vec3(0.3, 0.1, 0.2), 2.0, Vec3(-1.2, 0.05, 0.1), qa, Vec3(2.0, 0.1, 0.0),
-                           Vec3(0.5, -1.0, 2.0)));
-    s.bodies.push_back(box("b", Vec3(0.15, 0.25, 0.1), 1.0, Vec3(0.5, -0.1, 0.0), qb, Vec3(-0.5, 0.0, 0.2),
-                           Vec3(0.0, 3.0, -1.0)));
+    s.bodies.push_back(
+        box("a", Vec3(0.3, 0.1, 0.2), 2.0, Vec3(-1.2, 0.05, 0.1), qa, Vec3(2.0, 0.1, 0.0), Vec3(0.5, -1.0, 2.0)));
+    s.bodies.push_back(
+        box("b", Vec3(0.15, 0.25, 0.1), 1.0, Vec3(0.5, -0.1, 0.0), qb, Vec3(-0.5, 0.0, 0.2), Vec3(0.0, 3.0, -1.0)));
     World3 world(s);
     const Totals3 before = totals(world.bodies());
     std::vector<Event3> events;

@@ -10,8 +10,8 @@
 namespace collide {
 namespace {
 
-SceneBody block(const std::string& name, double x, double v, double length = 0.2,
-                double mass = 1.0, bool is_static = false) {
+SceneBody block(const std::string& name, double x, double v, double length = 0.2, double mass = 1.0,
+                bool is_static = false) {
     SceneBody b;
     b.name = name;
     b.shape = "block";
@@ -143,8 +143,7 @@ TEST(World1d, StackRestsAfterAPerfectlyInelasticLanding) {
     for (Policy policy : {Policy::sequential, Policy::simultaneous}) {
         Scene s = line(policy, 0.0);
         s.gravity = Vec3(-g, 0, 0);
-        s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("low", 0.2, 0.0),
-                    block("high", 0.4 + h, 0.0)};
+        s.bodies = {block("floor", 0.0, 0.0, 0.2, 1.0, true), block("low", 0.2, 0.0), block("high", 0.4 + h, 0.0)};
         World1 w(s);
         std::vector<Event1> events;
         w.advance_to(1.0, &events);
@@ -181,8 +180,7 @@ TEST(World1d, ElasticGasKeepsEnergyAndOrder) {
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> V(-3, 3), M(0.5, 2);
     s.bodies.push_back(block("left", -0.1, 0.0, 0.2, 1.0, true));
-    for (int i = 0; i < 8; ++i)
-        s.bodies.push_back(block("b" + std::to_string(i), 0.5 + i, V(rng), 0.3, M(rng)));
+    for (int i = 0; i < 8; ++i) s.bodies.push_back(block("b" + std::to_string(i), 0.5 + i, V(rng), 0.3, M(rng)));
     s.bodies.push_back(block("right", 8.6, 0.0, 0.2, 1.0, true));
     auto energy = [](const World1& w) {
         double e = 0;

@@ -295,8 +295,8 @@ TEST(World2d, ASleeperIsWokenByAnImpactAndSleepsAgain) {
     ASSERT_FALSE(w.asleep(2));
     const double T = std::sqrt(2 * H / kG);
     w.advance_to(T + 0.05, &events);
-    const auto hit = std::find_if(events.begin(), events.end(),
-                                  [](const Event2& ev) { return ev.a == 1 && ev.b == 2; });
+    const auto hit =
+        std::find_if(events.begin(), events.end(), [](const Event2& ev) { return ev.a == 1 && ev.b == 2; });
     ASSERT_NE(hit, events.end());
     EXPECT_NEAR(hit->t, T, 1e-9);
     // The passes of the sequential policy stop once the disc approaches slower than the resting
@@ -323,8 +323,7 @@ TEST(World2d, ASleeperIsWokenByAnImpactAndSleepsAgain) {
 // formula on each corner's current approach, passes repeated until no corner approaches (the
 // world's sequential policy). n = +y, so a corner at r has r x n = rx and approach
 // un = vy + w rx.
-Event2::Velocity sequential_landing(Event2::Velocity s, const std::vector<double>& rx, double m,
-                                    double I, double e) {
+Event2::Velocity sequential_landing(Event2::Velocity s, const std::vector<double>& rx, double m, double I, double e) {
     for (int pass = 0; pass < 64; ++pass) {
         bool any = false;
         for (double x : rx) {
@@ -365,10 +364,8 @@ TEST(World2d, FlatLandingSimultaneousHasNoSpinSequentialSpins) {
             EXPECT_NEAR(ev.after_b.v.y(), e * u, 1e-12 * u);
             EXPECT_NEAR(ev.after_b.w, 0.0, 1e-12 * u / (0.5 * width));
         } else {
-            const Event2::Velocity right =
-                sequential_landing(ev.before_b, {0.5 * width, -0.5 * width}, m, I, e);
-            const Event2::Velocity left =
-                sequential_landing(ev.before_b, {-0.5 * width, 0.5 * width}, m, I, e);
+            const Event2::Velocity right = sequential_landing(ev.before_b, {0.5 * width, -0.5 * width}, m, I, e);
+            const Event2::Velocity left = sequential_landing(ev.before_b, {-0.5 * width, 0.5 * width}, m, I, e);
             const Event2::Velocity& expected = ev.after_b.w < 0 ? right : left;
             EXPECT_GT(std::abs(expected.w), 0.5 * u);  // a real spin: 0.627 rad/s per m/s of u
             EXPECT_NEAR(ev.after_b.v.y(), expected.v.y(), 1e-12 * u);
@@ -380,8 +377,7 @@ TEST(World2d, FlatLandingSimultaneousHasNoSpinSequentialSpins) {
 // ---- 8. Determinism ----------------------------------------------------------------------------
 
 // Bit-identical histories: events (time, pair, impulse, point, velocities) and final states.
-void expect_identical(const World2& x, const World2& y, const std::vector<Event2>& ex,
-                      const std::vector<Event2>& ey) {
+void expect_identical(const World2& x, const World2& y, const std::vector<Event2>& ex, const std::vector<Event2>& ey) {
     ASSERT_EQ(ex.size(), ey.size());
     for (std::size_t k = 0; k < ex.size(); ++k) {
         ASSERT_EQ(ex[k].t, ey[k].t) << k;
@@ -458,8 +454,7 @@ TEST(World2d, ElasticGasKeepsEnergyAndNoOverlap) {
         ASSERT_NEAR(kinetic_energy(b), e0, 1e-9 * e0) << "t = " << w.time();
     }
     // The run is not vacuous: discs hit each other and the walls.
-    const auto pairs = std::count_if(events.begin(), events.end(),
-                                     [&](const Event2& ev) { return ev.a >= first; });
+    const auto pairs = std::count_if(events.begin(), events.end(), [&](const Event2& ev) { return ev.a >= first; });
     EXPECT_GT(pairs, 0);
     EXPECT_GT(static_cast<long>(events.size()) - pairs, 0);
 }
@@ -488,9 +483,7 @@ SlideResult slide_off(double e) {
     s.stepping = StepMode::never;  // the exact world's resting contact, not stepped islands
     World2 w(s);
     std::vector<Event2> events;
-    auto energy = [&] {
-        return kinetic_energy(w.bodies()) + potential_energy(w.bodies(), s.gravity);
-    };
+    auto energy = [&] { return kinetic_energy(w.bodies()) + potential_energy(w.bodies(), s.gravity); };
     SlideResult out;
     out.E0 = energy();
     for (int k = 1; k <= 50; ++k) {
@@ -519,8 +512,7 @@ TEST(World2d, DiscSlidingOffADiscOnTheGroundNeverOverlaps) {
         // 1e-5 m (measured 2.3e-5) are the documented limit, asserted so it cannot grow.
         const double allowed = e == 1.0 ? 1e-9 : 5e-5;
         EXPECT_GE(x.worst_gap, -allowed) << "e = " << e << ": A and B overlap by " << -x.worst_gap
-                                      << " m at t = " << x.worst_gap_t << " s (" << x.events
-                                      << " events in 0.1 s)";
+                                         << " m at t = " << x.worst_gap_t << " s (" << x.events << " events in 0.1 s)";
         EXPECT_GE(x.worst_floor, -1e-9) << "e = " << e;
         EXPECT_LE(x.worst_px, 1e-12) << "e = " << e;
         EXPECT_LE(x.worst_gain, 1e-12 * x.E0) << "e = " << e;
@@ -533,8 +525,7 @@ TEST(World2d, DiscSlidingOffADiscOnTheGroundNeverOverlaps) {
 // in 2D, 4e-8 in 3D), not to round-off: the documented limit of resting contact.
 TEST(World2d, DiscSlidingOffADiscElasticKeepsEnergy) {
     const SlideResult x = slide_off(1.0);
-    EXPECT_LE(x.worst_change, 1e-7 * x.E0) << "largest |E - E0| = " << x.worst_change
-                                           << " J of E0 = " << x.E0 << " J";
+    EXPECT_LE(x.worst_change, 1e-7 * x.E0) << "largest |E - E0| = " << x.worst_change << " J of E0 = " << x.E0 << " J";
 }
 
 // Without gravity the resting speeds are zero: a contact left at u_n = 0 by an e = 0 hit, whose

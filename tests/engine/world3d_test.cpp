@@ -30,9 +30,7 @@ Scene ground_scene(Policy policy, double e, double g = kG) {
 }
 
 // Angle of the rotation q (rad, in [0, pi]).
-double rotation_angle(const Quat& q) {
-    return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w()));
-}
+double rotation_angle(const Quat& q) { return 2.0 * std::atan2(q.vec().norm(), std::abs(q.w())); }
 
 // ---- 1. Projectile ----------------------------------------------------------------------------
 
@@ -95,8 +93,7 @@ TEST(World3d, TorqueFreePrecessionOfASymmetricTop) {
         const Body3& b = w.bodies()[0];
         const Totals3 tk = totals(w.bodies());
         ASSERT_NEAR(tk.kinetic_energy, t0.kinetic_energy, 1e-9 * t0.kinetic_energy) << t;
-        ASSERT_LE((tk.angular_momentum - t0.angular_momentum).norm(),
-                  1e-9 * t0.angular_momentum.norm()) << t;
+        ASSERT_LE((tk.angular_momentum - t0.angular_momentum).norm(), 1e-9 * t0.angular_momentum.norm()) << t;
         const Vec3 wb = b.orientation.conjugate() * b.w;
         ASSERT_NEAR(wb.z(), wb0.z(), 1e-9 * wb0.z()) << t;
         ASSERT_NEAR(wb.head<2>().norm(), 1.5, 1e-9 * 1.5) << t;
@@ -349,19 +346,19 @@ TEST(World3d, BoxDroppedOnARestingBoxComesToRest) {
     const Vec3 top_half(0.10286534234034667, 0.099909500661200273, 0.16799920928437051);
     s.bodies.push_back(box("low", low_half, 1.0, Vec3(0, low_half.y(), 0)));
     const Quat q(0.9629914976703956, 0.0017442372954047688, -0.26952415510249933, 0.0010309544460101977);
-    s.bodies.push_back(box("top", top_half, 1.0,
-                           Vec3(-0.11254337080316176, 0.5056893118121174, -0.017966157056603982), q));
+    s.bodies.push_back(
+        box("top", top_half, 1.0, Vec3(-0.11254337080316176, 0.5056893118121174, -0.017966157056603982), q));
     World3 w(s);
     std::vector<Event3> events;
     double worst_overlap = 0.0, worst_floor = 0.0;
     for (int k = 1; k <= 150; ++k) {
         ASSERT_NO_THROW(w.advance_to(0.01 * k, &events)) << "t = " << 0.01 * k;
         const auto& b = w.bodies();
-        const Manifold3 m = collide(s.bodies[1].shape3, Pose3{b[1].position, b[1].orientation},
-                                    s.bodies[2].shape3, Pose3{b[2].position, b[2].orientation});
+        const Manifold3 m = collide(s.bodies[1].shape3, Pose3{b[1].position, b[1].orientation}, s.bodies[2].shape3,
+                                    Pose3{b[2].position, b[2].orientation});
         worst_overlap = std::min(worst_overlap, m.separation);
-        const Manifold3 g = collide(s.bodies[0].shape3, Pose3{}, s.bodies[1].shape3,
-                                    Pose3{b[1].position, b[1].orientation});
+        const Manifold3 g =
+            collide(s.bodies[0].shape3, Pose3{}, s.bodies[1].shape3, Pose3{b[1].position, b[1].orientation});
         worst_floor = std::min(worst_floor, g.separation);
     }
     EXPECT_GT(events.size(), 10u);  // it did land and tumble
@@ -388,8 +385,8 @@ TEST(World3d, BoxDroppedOnARestingBoxComesToRest) {
 // body = world axes) lands on the ground, resolved one corner at a time in the given order with
 // the frictionless formula on that corner's current approach, passes repeated until no corner
 // approaches. n = +y: a corner at r has r x n = (-rz, 0, rx), approach un = vy + (w x r)_y.
-Event3::Velocity sequential_landing(Event3::Velocity s, const std::vector<Vec3>& corners,
-                                    double m, const Vec3& I, double e) {
+Event3::Velocity sequential_landing(Event3::Velocity s, const std::vector<Vec3>& corners, double m, const Vec3& I,
+                                    double e) {
     const Vec3 n(0, 1, 0);
     for (int pass = 0; pass < 64; ++pass) {
         bool any = false;
@@ -432,10 +429,8 @@ TEST(World3d, FlatLandingSimultaneousHasNoSpinSequentialSpins) {
             EXPECT_LE(ev.after_b.w.norm(), 1e-12 * u / half.x());
             continue;
         }
-        std::array<Vec3, 4> corners = {Vec3(half.x(), -half.y(), half.z()),
-                                       Vec3(half.x(), -half.y(), -half.z()),
-                                       Vec3(-half.x(), -half.y(), half.z()),
-                                       Vec3(-half.x(), -half.y(), -half.z())};
+        std::array<Vec3, 4> corners = {Vec3(half.x(), -half.y(), half.z()), Vec3(half.x(), -half.y(), -half.z()),
+                                       Vec3(-half.x(), -half.y(), half.z()), Vec3(-half.x(), -half.y(), -half.z())};
         std::array<int, 4> order = {0, 1, 2, 3};
         double best = 1e300;
         Event3::Velocity closest{};
@@ -459,8 +454,7 @@ TEST(World3d, FlatLandingSimultaneousHasNoSpinSequentialSpins) {
 
 // ---- 8. Determinism ----------------------------------------------------------------------------
 
-void expect_identical(const World3& x, const World3& y, const std::vector<Event3>& ex,
-                      const std::vector<Event3>& ey) {
+void expect_identical(const World3& x, const World3& y, const std::vector<Event3>& ex, const std::vector<Event3>& ey) {
     ASSERT_EQ(ex.size(), ey.size());
     for (std::size_t k = 0; k < ex.size(); ++k) {
         ASSERT_EQ(ex[k].t, ey[k].t) << k;
@@ -535,8 +529,7 @@ TEST(World3d, ElasticGasKeepsEnergyAndNoOverlap) {
         }
         ASSERT_NEAR(kinetic_energy(b), e0, 1e-9 * e0) << "t = " << w.time();
     }
-    const auto pairs = std::count_if(events.begin(), events.end(),
-                                     [&](const Event3& ev) { return ev.a >= first; });
+    const auto pairs = std::count_if(events.begin(), events.end(), [&](const Event3& ev) { return ev.a >= first; });
     EXPECT_GT(pairs, 0);
     EXPECT_GT(static_cast<long>(events.size()) - pairs, 0);
 }
@@ -565,9 +558,7 @@ SlideResult slide_off(double e) {
     s.stepping = StepMode::never;  // the exact world's resting contact, not stepped islands
     World3 w(s);
     std::vector<Event3> events;
-    auto energy = [&] {
-        return kinetic_energy(w.bodies()) + potential_energy(w.bodies(), s.gravity);
-    };
+    auto energy = [&] { return kinetic_energy(w.bodies()) + potential_energy(w.bodies(), s.gravity); };
     SlideResult out;
     out.E0 = energy();
     for (int k = 1; k <= 50; ++k) {
@@ -596,8 +587,7 @@ TEST(World3d, SphereSlidingOffASphereOnTheGroundNeverOverlaps) {
         // 1e-5 m (measured 2.3e-5) are the documented limit, asserted so it cannot grow.
         const double allowed = e == 1.0 ? 1e-9 : 5e-5;
         EXPECT_GE(x.worst_gap, -allowed) << "e = " << e << ": A and B overlap by " << -x.worst_gap
-                                      << " m at t = " << x.worst_gap_t << " s (" << x.events
-                                      << " events in 0.1 s)";
+                                         << " m at t = " << x.worst_gap_t << " s (" << x.events << " events in 0.1 s)";
         EXPECT_GE(x.worst_floor, -1e-9) << "e = " << e;
         EXPECT_LE(x.worst_px, 1e-12) << "e = " << e;
         EXPECT_LE(x.worst_gain, 1e-12 * x.E0) << "e = " << e;
@@ -610,8 +600,7 @@ TEST(World3d, SphereSlidingOffASphereOnTheGroundNeverOverlaps) {
 // in 2D, 4e-8 in 3D), not to round-off: the documented limit of resting contact.
 TEST(World3d, SphereSlidingOffASphereElasticKeepsEnergy) {
     const SlideResult x = slide_off(1.0);
-    EXPECT_LE(x.worst_change, 1e-7 * x.E0) << "largest |E - E0| = " << x.worst_change
-                                           << " J of E0 = " << x.E0 << " J";
+    EXPECT_LE(x.worst_change, 1e-7 * x.E0) << "largest |E - E0| = " << x.worst_change << " J of E0 = " << x.E0 << " J";
 }
 
 // The page's listing as written (model page-listing, the errata lesson): one answer per pair,
@@ -638,7 +627,7 @@ TEST(World3d, PageListingAnswersAPairOnceThenLetsItThrough) {
     flat.model = Model::page_listing;
     EXPECT_THROW(World2{flat}, std::invalid_argument);  // the listing is 3D code
     s.policy = Policy::simultaneous;
-    EXPECT_THROW(World3{s}, std::invalid_argument);     // it answers one point at a time
+    EXPECT_THROW(World3{s}, std::invalid_argument);  // it answers one point at a time
 }
 
 }  // namespace

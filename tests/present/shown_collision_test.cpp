@@ -58,9 +58,9 @@ TEST(ShownCollision, AFigurePicksItsPairInItsRoles) {
     EXPECT_NEAR(c->t, 0.15, 1e-9);
     EXPECT_EQ(c->a, 2u);
     EXPECT_EQ(c->b, 1u);
-    EXPECT_NEAR(c->normal.x(), -1.0, 1e-12);   // from third (right) into second (left)
-    EXPECT_NEAR(c->impulse.x(), -2.0, 1e-9);   // on second: it stops
-    EXPECT_NEAR(c->va_after.x(), 2.0, 1e-9);   // third leaves at 2 m/s
+    EXPECT_NEAR(c->normal.x(), -1.0, 1e-12);  // from third (right) into second (left)
+    EXPECT_NEAR(c->impulse.x(), -2.0, 1e-9);  // on second: it stops
+    EXPECT_NEAR(c->va_after.x(), 2.0, 1e-9);  // third leaves at 2 m/s
     EXPECT_NEAR(c->vb_after.x(), 0.0, 1e-9);
     // A collision the run does not have: none shown (render refuses such a figure by name).
     EXPECT_FALSE(page_collision({CollisionPick{0, 1, 5}}, rec));

@@ -33,7 +33,8 @@ using json = nlohmann::json;
 const std::string kLessons = std::string(COLLIDE_SOURCE_DIR) + "/lessons/";
 
 fs::path scratch(const std::string& name) {
-    const fs::path p = fs::temp_directory_path() / ("collide-worksheet-test-" + std::to_string(::getpid()) + "-" + name);
+    const fs::path p =
+        fs::temp_directory_path() / ("collide-worksheet-test-" + std::to_string(::getpid()) + "-" + name);
     fs::remove_all(p);
     return p;
 }
@@ -211,8 +212,8 @@ TEST(Worksheet, ARangeThatCannotCollideIsRefusedAndNothingIsWritten) {
     std::string err;
     EXPECT_EQ(worksheet(file.string() + " -o " + out.string() + " --students 3", &err), 2);
     EXPECT_NE(err.find("collide: error: " + file.string()), std::string::npos) << err;
-    EXPECT_NE(err.find("vary: no draw of A.mass, A.v, B.mass, B.v, scene.restitution in 50 tries"),
-              std::string::npos) << err;
+    EXPECT_NE(err.find("vary: no draw of A.mass, A.v, B.mass, B.v, scene.restitution in 50 tries"), std::string::npos)
+        << err;
     EXPECT_NE(err.find("A.v = -"), std::string::npos) << err;
     EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
     EXPECT_FALSE(fs::exists(out));

@@ -14,8 +14,8 @@ namespace {
 ImVec4 projected_box(const Camera& camera, const Vec3& lo, const Vec3& hi) {
     ImVec4 r(1e9f, 1e9f, -1e9f, -1e9f);
     for (int k = 0; k < 8; ++k) {
-        const ImVec2 s = camera.project(Vec3((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(),
-                                             (k & 4) ? hi.z() : lo.z()));
+        const ImVec2 s =
+            camera.project(Vec3((k & 1) ? hi.x() : lo.x(), (k & 2) ? hi.y() : lo.y(), (k & 4) ? hi.z() : lo.z()));
         r = ImVec4(std::min(r.x, s.x), std::min(r.y, s.y), std::max(r.z, s.x), std::max(r.w, s.y));
     }
     return r;

@@ -91,8 +91,7 @@ TEST_F(RenderTest, ADiscIsDrawnWhereTheStateSays) {
     const ImVec2 other = r.to_screen(Vec3(-1.0, 0.0, 0.0));
     ASSERT_TRUE(c.x > 0 && c.x < 320 && c.y > 0 && c.y < 240);
     EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(c.x), static_cast<int>(c.y)), fill, 4));
-    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(far.x), static_cast<int>(far.y)),
-                                  palette.background, 4));
+    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(far.x), static_cast<int>(far.y)), palette.background, 4));
     // x to the right, y up.
     EXPECT_GT(c.x, other.x);
     EXPECT_LT(c.y, other.y);
@@ -112,7 +111,9 @@ TEST_F(RenderTest, ADiscIsDrawnWhereTheStateSays) {
             for (int k = 0; k < 3; ++k) {
                 const int paper = static_cast<int>((palette.background >> (8 * k)) & 0xFF);
                 const int want = static_cast<int>((fill >> (8 * k)) & 0xFF);
-                if (paper != want) coverage = std::max(coverage, std::min(1.0, std::abs(p[k] - paper) / std::abs(double(want - paper))));
+                if (paper != want)
+                    coverage =
+                        std::max(coverage, std::min(1.0, std::abs(p[k] - paper) / std::abs(double(want - paper))));
             }
             n += coverage;
             sx += coverage * (x + 0.5);
@@ -147,8 +148,10 @@ TEST_F(RenderTest, AVelocityArrowCoversThePixelsFromTheCentreToItsTip) {
     // Beside the arrow and beyond its tip: background.
     const ImVec2 beside = r.to_screen(centre + 0.6 * (tip - centre) + Vec3(0, 0.2, 0));
     const ImVec2 beyond = r.to_screen(tip + Vec3(0.15, 0, 0));
-    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(beside.x), static_cast<int>(beside.y)), palette.background, 4));
-    EXPECT_TRUE(test::near_colour(im.pixel(static_cast<int>(beyond.x), static_cast<int>(beyond.y)), palette.background, 4));
+    EXPECT_TRUE(
+        test::near_colour(im.pixel(static_cast<int>(beside.x), static_cast<int>(beside.y)), palette.background, 4));
+    EXPECT_TRUE(
+        test::near_colour(im.pixel(static_cast<int>(beyond.x), static_cast<int>(beyond.y)), palette.background, 4));
 }
 
 TEST_F(RenderTest, DrawArrowCoversTheSegmentAndNothingBeside) {
@@ -176,7 +179,8 @@ TEST_F(RenderTest, DrawArrowCoversTheSegmentAndNothingBeside) {
     const float len = std::hypot(q.x - p.x, q.y - p.y);
     const float nx = -(q.y - p.y) / len, ny = (q.x - p.x) / len;
     for (float side : {-10.0f, 10.0f}) {
-        const int x = static_cast<int>(0.5f * (p.x + q.x) + side * nx), y = static_cast<int>(0.5f * (p.y + q.y) + side * ny);
+        const int x = static_cast<int>(0.5f * (p.x + q.x) + side * nx),
+                  y = static_cast<int>(0.5f * (p.y + q.y) + side * ny);
         EXPECT_TRUE(test::near_colour(im.pixel(x, y), rgb(255, 255, 255), 2));
     }
     EXPECT_TRUE(test::near_colour(im.pixel(215, 127), rgb(255, 255, 255), 2));
@@ -216,8 +220,9 @@ TEST_F(RenderTest, EglGivesTheSameFrameWhereItIsAvailable) {
 TEST_F(RenderTest, TheLabelFontHasGreekSubscriptsAndSuperscripts) {
     const Scene scene = parse_scene_text(kTwoDiscs, "two-discs.toml");
     Renderer r(*context_, scene, small(160, 120));
-    EXPECT_TRUE(r.has_glyphs("\u03C9 \u2090 \u1D66 \u207B\u00B9 \u00BD \u2264 \u221A \u2211 \u2212 \u00D7"));  // ω ₐ ᵦ ⁻¹ ½ ≤ √ ∑ − ×
-    EXPECT_FALSE(r.has_glyphs("\u4E2D"));  // not every glyph exists
+    EXPECT_TRUE(r.has_glyphs(
+        "\u03C9 \u2090 \u1D66 \u207B\u00B9 \u00BD \u2264 \u221A \u2211 \u2212 \u00D7"));  // ω ₐ ᵦ ⁻¹ ½ ≤ √ ∑ − ×
+    EXPECT_FALSE(r.has_glyphs("\u4E2D"));                                                 // not every glyph exists
 }
 
 TEST_F(RenderTest, FigurePlacesPanelsSideBySide) {
@@ -232,8 +237,8 @@ TEST_F(RenderTest, FigurePlacesPanelsSideBySide) {
             panels[k].rgba[i + 3] = 255;
         }
     }
-    const Image fig = compose_figure(*context_, panels, {"before", "at collision", "after"},
-                                     {"t = 1 s", "t = 2 s", "t = 3 s"}, 360);
+    const Image fig =
+        compose_figure(*context_, panels, {"before", "at collision", "after"}, {"t = 1 s", "t = 2 s", "t = 3 s"}, 360);
     EXPECT_GT(fig.width, 300);
     EXPECT_GT(fig.height, 80);
     // Each panel's centre, left to right.
@@ -557,20 +562,25 @@ TEST_F(RenderTest, TheOverlaysListWhatTheyDraw) {
     for (const Annotation& a : r.annotations()) {
         if (a.kind == Mark::table_cell) {
             ++cells;
-            EXPECT_GT(ink_in(a.box, a.body >= 0 ? palette.ink : a.value.empty() ? palette.muted : palette.ink), 5)
+            EXPECT_GT(ink_in(a.box, a.body >= 0       ? palette.ink
+                                    : a.value.empty() ? palette.muted
+                                                      : palette.ink),
+                      5)
                 << a.text;
             if (a.value.empty()) continue;
             // What the cell stands for, by row and column: name, m, v, ω, p, E_k.
             std::vector<double> want;
             const int i = a.body;
             switch (a.of) {
-            case 1: want = {i >= 0 ? m[i] : m[0] + m[1]}; break;
-            case 2: want = {v[i].x(), v[i].y()}; break;
-            case 3: want = {w[i]}; break;
-            case 4: want = i >= 0 ? std::vector<double>{m[i] * v[i].x(), m[i] * v[i].y()}
-                                  : std::vector<double>{p_total.x(), p_total.y()}; break;
-            case 5: want = {i >= 0 ? E[i] : E[0] + E[1]}; break;
-            default: ADD_FAILURE() << "column " << a.of;
+                case 1: want = {i >= 0 ? m[i] : m[0] + m[1]}; break;
+                case 2: want = {v[i].x(), v[i].y()}; break;
+                case 3: want = {w[i]}; break;
+                case 4:
+                    want = i >= 0 ? std::vector<double>{m[i] * v[i].x(), m[i] * v[i].y()}
+                                  : std::vector<double>{p_total.x(), p_total.y()};
+                    break;
+                case 5: want = {i >= 0 ? E[i] : E[0] + E[1]}; break;
+                default: ADD_FAILURE() << "column " << a.of;
             }
             ASSERT_EQ(a.value.size(), want.size()) << a.text;
             const std::vector<double> shown = cell_numbers(a.text);
@@ -662,7 +672,8 @@ TEST_F(RenderTest, TheTimeLineMarksTheTimeInProportionAndTheFormulaEndsInTheImpu
             red += p[0] > p[1] + 60 && p[0] > p[2] + 60;
         }
     EXPECT_GT(red, 15);
-    if (const char* dump = std::getenv("COLLIDE_TEST_DUMP")) write_png_atomic(dump, im.width, im.height, im.rgba.data());
+    if (const char* dump = std::getenv("COLLIDE_TEST_DUMP"))
+        write_png_atomic(dump, im.width, im.height, im.rgba.data());
 }
 
 TEST_F(RenderTest, TheScenariosCameraIsHonoured) {
@@ -702,7 +713,8 @@ shape = "box"
 size = [1.2, 0.5, 0.3]
 mass = 1.0
 position = [0.0, 1.0, 0.0]
-)", "box.toml");
+)",
+                                         "box.toml");
     const double D = 6.0, W = 320, H = 240;
     const Vec3 target(0.0, 1.0, 0.0);
     RenderSettings s = small(static_cast<int>(W), static_cast<int>(H));
@@ -739,7 +751,8 @@ position = [0.0, 1.0, 0.0]
         const Vec2 centre = project(target);
         int missed = 0;
         for (int k = 0; k < 8; ++k) {
-            const Vec3 c((k & 1) ? half.x() : -half.x(), (k & 2) ? half.y() : -half.y(), (k & 4) ? half.z() : -half.z());
+            const Vec3 c((k & 1) ? half.x() : -half.x(), (k & 2) ? half.y() : -half.y(),
+                         (k & 4) ? half.z() : -half.z());
             corners.push_back(project(target + R * c));
             missed += !is_box(project(target + R * (0.85 * c)));  // inside the box: on it
         }
@@ -782,7 +795,7 @@ TEST_F(RenderTest, MultisamplingOnlyWhereTheBodiesAreGivesTheWholeFramesMultisam
         return n;
     };
     EXPECT_LE(differing(region, whole, 2), 320 * 240 / 1000);  // at most 0.1% of the pixels
-    EXPECT_GE(differing(whole, none, 8), 200);                   // the edges MSAA smooths
+    EXPECT_GE(differing(whole, none, 8), 200);                 // the edges MSAA smooths
     EXPECT_GE(differing(region, none, 8), 200);
 }
 
@@ -808,7 +821,8 @@ shape = "block"
 length = 0.5
 mass = 1.0
 position = 0.0
-)", "line.toml");
+)",
+                                        "line.toml");
     const FrameState f1 = frame_state(line, 0.0, std::vector<Body1>{line.bodies[0].body1});
     for (bool on : {false, true}) {
         RenderSettings s = small(400, 300);
@@ -818,8 +832,8 @@ position = 0.0
         const Image im = r.render(f1, bare());
         const ImVec2 top = r.to_screen(Vec3(0.0, 2.0 * block_height(line, 0) / 2.0, 0.0));
         double mean = 0;
-        const int n = grey(im, static_cast<int>(top.x) - 60, static_cast<int>(top.y) - 50,
-                           static_cast<int>(top.x) + 60, static_cast<int>(top.y) - 2, &mean);
+        const int n = grey(im, static_cast<int>(top.x) - 60, static_cast<int>(top.y) - 50, static_cast<int>(top.x) + 60,
+                           static_cast<int>(top.y) - 2, &mean);
         if (!on) {
             EXPECT_EQ(n, 0);
         } else {

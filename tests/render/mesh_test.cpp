@@ -240,8 +240,12 @@ TEST(MeshTest, ArrowHeadIsAClosedConeWithItsTipAtYOne) {
 }
 
 TEST(MeshTest, RotationFromYTakesYToTheDirection) {
-    const Vec3f directions[] = {Vec3f(0, 1, 0), Vec3f(0, -1, 0), Vec3f(1, 0, 0), Vec3f(0, 0, -1),
-                                Vec3f(0.3f, -0.8f, 0.52f).normalized(), Vec3f(0.2f, -1, 0.1f).normalized()};
+    const Vec3f directions[] = {Vec3f(0, 1, 0),
+                                Vec3f(0, -1, 0),
+                                Vec3f(1, 0, 0),
+                                Vec3f(0, 0, -1),
+                                Vec3f(0.3f, -0.8f, 0.52f).normalized(),
+                                Vec3f(0.2f, -1, 0.1f).normalized()};
     for (const Vec3f& d : directions) {
         const Mat3f R = rotation_from_y(d);
         EXPECT_LT((R * Vec3f(0, 1, 0) - d).norm(), 1e-5f) << d.transpose();

@@ -55,12 +55,10 @@ double delta_e(const Rgb& a, const Rgb& b) {
 
 TEST(Palette, ArrowColoursStayApartForRedGreenColourBlindness) {
     const Matrix identity = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-    const Matrix deuteranopia = {{{0.367322, 0.860646, -0.227968},
-                                  {0.280085, 0.672501, 0.047413},
-                                  {-0.011820, 0.042940, 0.968881}}};
-    const Matrix protanopia = {{{0.152286, 1.052583, -0.204868},
-                                {0.114503, 0.786281, 0.099216},
-                                {-0.003882, -0.048116, 1.051998}}};
+    const Matrix deuteranopia = {
+        {{0.367322, 0.860646, -0.227968}, {0.280085, 0.672501, 0.047413}, {-0.011820, 0.042940, 0.968881}}};
+    const Matrix protanopia = {
+        {{0.152286, 1.052583, -0.204868}, {0.114503, 0.786281, 0.099216}, {-0.003882, -0.048116, 1.051998}}};
     const Palette p;
     const std::vector<std::pair<std::string, Colour>> arrows = {
         {"velocity", p.velocity}, {"spin", p.spin}, {"impulse", p.impulse}, {"normal", p.normal}, {"lever", p.lever}};
@@ -69,7 +67,8 @@ TEST(Palette, ArrowColoursStayApartForRedGreenColourBlindness) {
                                     {"protanopia", protanopia}})
         for (std::size_t i = 0; i < arrows.size(); ++i)
             for (std::size_t j = i + 1; j < arrows.size(); ++j) {
-                const double d = delta_e(lab(simulate(m, linear(arrows[i].second))), lab(simulate(m, linear(arrows[j].second))));
+                const double d =
+                    delta_e(lab(simulate(m, linear(arrows[i].second))), lab(simulate(m, linear(arrows[j].second))));
                 EXPECT_GE(d, 15.0) << arrows[i].first << " and " << arrows[j].first << " in " << vision;
             }
 }
@@ -77,9 +76,8 @@ TEST(Palette, ArrowColoursStayApartForRedGreenColourBlindness) {
 // The simulation itself: pure red and pure green, far apart in normal vision, come close for
 // a deuteranope; a grey is unchanged (each matrix's rows sum to 1).
 TEST(Palette, TheSimulationMergesRedAndGreenAndKeepsGrey) {
-    const Matrix deuteranopia = {{{0.367322, 0.860646, -0.227968},
-                                  {0.280085, 0.672501, 0.047413},
-                                  {-0.011820, 0.042940, 0.968881}}};
+    const Matrix deuteranopia = {
+        {{0.367322, 0.860646, -0.227968}, {0.280085, 0.672501, 0.047413}, {-0.011820, 0.042940, 0.968881}}};
     const Rgb red = linear(rgb(200, 60, 40)), green = linear(rgb(90, 140, 40));
     EXPECT_GT(delta_e(lab(red), lab(green)), 60.0);
     EXPECT_LT(delta_e(lab(simulate(deuteranopia, red)), lab(simulate(deuteranopia, green))), 20.0);

@@ -28,8 +28,7 @@ Image noise(int w, int h, bool opaque, unsigned seed) {
 std::vector<std::string> leftovers(const std::string& dir) {
     std::vector<std::string> out;
     for (const auto& e : fs::directory_iterator(dir))
-        if (e.path().filename().string().find(".tmp-") != std::string::npos)
-            out.push_back(e.path().string());
+        if (e.path().filename().string().find(".tmp-") != std::string::npos) out.push_back(e.path().string());
     return out;
 }
 

@@ -18,7 +18,8 @@ ImpactMark mark(double t, std::size_t a, std::size_t b, double impulse, double x
 }
 
 TEST(ShownImpacts, AFewOfSimilarSizeAreAllDetailedInTimeOrder) {
-    const std::vector<ImpactMark> in = {mark(0.1, 0, 1, 1.0, 0.0), mark(0.2, 1, 2, 0.5, 1.0), mark(0.3, 2, 3, 2.0, 2.0)};
+    const std::vector<ImpactMark> in = {mark(0.1, 0, 1, 1.0, 0.0), mark(0.2, 1, 2, 0.5, 1.0),
+                                        mark(0.3, 2, 3, 2.0, 2.0)};
     const std::vector<ImpactMark> out = shown_impacts(in);
     ASSERT_EQ(out.size(), 3u);
     for (std::size_t k = 0; k < 3; ++k) {
@@ -52,7 +53,8 @@ TEST(ShownImpacts, BelowATenthOfTheLargestIsNotDrawn) {
 
 TEST(ShownImpacts, OnePairAtOnePointIsDetailedOnce) {
     // A ball's last bounces: the same pair, the same point, halving impulses.
-    const std::vector<ImpactMark> out = shown_impacts({mark(0.1, 0, 1, 1.0), mark(0.2, 0, 1, 0.5), mark(0.3, 0, 1, 0.25)});
+    const std::vector<ImpactMark> out =
+        shown_impacts({mark(0.1, 0, 1, 1.0), mark(0.2, 0, 1, 0.5), mark(0.3, 0, 1, 0.25)});
     ASSERT_EQ(out.size(), 3u);
     EXPECT_TRUE(out[0].detailed);
     EXPECT_DOUBLE_EQ(out[0].impulse.y(), 1.0);

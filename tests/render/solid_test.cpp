@@ -115,8 +115,8 @@ TEST(SolidTest, HalfSpacesArePlanesNotSolids) {
 TEST(SolidTest, TwoDimensionalBodiesAreExtrudedToACommonDepth) {
     Scene scene;
     scene.dimension = 2;
-    for (const Shape2& shape : {Shape2::disc(0.25), Shape2::rectangle(1.0, 0.5), Shape2::disc(0.5),
-                                Shape2::half_plane(Vec2(0, 1), 0.0)}) {
+    for (const Shape2& shape :
+         {Shape2::disc(0.25), Shape2::rectangle(1.0, 0.5), Shape2::disc(0.5), Shape2::half_plane(Vec2(0, 1), 0.0)}) {
         SceneBody b;
         b.shape2 = shape;
         scene.bodies.push_back(b);

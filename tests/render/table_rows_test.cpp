@@ -56,8 +56,8 @@ TEST(TableRows, BeyondEightTheMostEnergeticSevenAndALineForTheOthers) {
     kinetic[3] = 100.0;
     const TableRows r = table_rows(range(1, 13), kinetic, frame_of(speed, spin));
     EXPECT_EQ(r.shown, (std::vector<std::size_t>{3, 7, 8, 9, 10, 11, 12}));
-    ASSERT_EQ(r.others, 5u);                  // bodies 1, 2, 4, 5, 6
-    EXPECT_DOUBLE_EQ(r.others_speed, 0.6);    // body 6, the fastest without a row
+    ASSERT_EQ(r.others, 5u);                // bodies 1, 2, 4, 5, 6
+    EXPECT_DOUBLE_EQ(r.others_speed, 0.6);  // body 6, the fastest without a row
     EXPECT_DOUBLE_EQ(r.others_spin, 0.06);
 }
 

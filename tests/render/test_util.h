@@ -20,8 +20,7 @@ public:
     TempDir() {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
         path_ = std::filesystem::temp_directory_path() /
-                ("collide-render-" + std::string(info ? info->name() : "test") + "-" +
-                 std::to_string(::getpid()));
+                ("collide-render-" + std::string(info ? info->name() : "test") + "-" + std::to_string(::getpid()));
         std::filesystem::remove_all(path_);
         std::filesystem::create_directories(path_);
     }

@@ -33,12 +33,15 @@ mass = 1.0
 v = 0.3
 )";
 
-Lesson parse(const std::string& questions) { return parse_lesson_text(kLesson + questions, "kinds.toml", "kinds.toml"); }
+Lesson parse(const std::string& questions) {
+    return parse_lesson_text(kLesson + questions, "kinds.toml", "kinds.toml");
+}
 
 TEST(LessonQuestions, ANumericQuestionIsTheDefaultWithATwoPercentTolerance) {
-    const Lesson L = parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\n"
-                           "[[question]]\nkind = \"numeric\"\ntext = \"v?\"\nquantity = \"velocity_after\"\nbody = \"A\"\n"
-                           "tolerance = 0.05\n");
+    const Lesson L = parse(
+        "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\n"
+        "[[question]]\nkind = \"numeric\"\ntext = \"v?\"\nquantity = \"velocity_after\"\nbody = \"A\"\n"
+        "tolerance = 0.05\n");
     ASSERT_EQ(L.questions.size(), 2u);
     EXPECT_EQ(L.questions[0].kind, QuestionKind::numeric);
     EXPECT_DOUBLE_EQ(L.questions[0].tolerance, 0.02);
@@ -50,9 +53,10 @@ TEST(LessonQuestions, ANumericQuestionIsTheDefaultWithATwoPercentTolerance) {
 }
 
 TEST(LessonQuestions, APairNamesACollisionByItsBodiesInItsRoles) {
-    const Lesson L = parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\npair = [\"B\", \"A\"]\n"
-                           "[[question]]\ntext = \"v?\"\nquantity = \"velocity_after\"\nbody = \"A\"\n"
-                           "pair = [\"A\", \"B\"]\ncollision = 3\n");
+    const Lesson L = parse(
+        "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\npair = [\"B\", \"A\"]\n"
+        "[[question]]\ntext = \"v?\"\nquantity = \"velocity_after\"\nbody = \"A\"\n"
+        "pair = [\"A\", \"B\"]\ncollision = 3\n");
     ASSERT_EQ(L.questions.size(), 2u);
     const LessonQuestion &q = L.questions[0], &r = L.questions[1];
     EXPECT_TRUE(q.has_pair());
@@ -71,9 +75,10 @@ TEST(LessonQuestions, APairNamesACollisionByItsBodiesInItsRoles) {
 }
 
 TEST(LessonQuestions, AChoiceQuestionKeepsItsOptionsTheRightOneAndEveryReason) {
-    const Lesson L = parse("[[question]]\nkind = \"choice\"\ntext = \"Which way?\"\n"
-                           "choices = [\"forward\", \"backward\", \"stops\"]\ncorrect = 2\n"
-                           "reasons = [\"r1\", \"r2\", \"r3\"]\n");
+    const Lesson L = parse(
+        "[[question]]\nkind = \"choice\"\ntext = \"Which way?\"\n"
+        "choices = [\"forward\", \"backward\", \"stops\"]\ncorrect = 2\n"
+        "reasons = [\"r1\", \"r2\", \"r3\"]\n");
     const LessonQuestion& q = L.questions.at(0);
     EXPECT_EQ(q.kind, QuestionKind::choice);
     EXPECT_EQ(q.choices, (std::vector<std::string>{"forward", "backward", "stops"}));
@@ -83,10 +88,11 @@ TEST(LessonQuestions, AChoiceQuestionKeepsItsOptionsTheRightOneAndEveryReason) {
 }
 
 TEST(LessonQuestions, APredictQuestionHasChoicesOrAQuantityAndAlwaysWhy) {
-    const Lesson L = parse("[[question]]\nkind = \"predict\"\ntext = \"Which way?\"\nchoices = [\"f\", \"b\"]\n"
-                           "correct = 1\nreasons = [\"r1\", \"r2\"]\nexplain = \"why\"\n"
-                           "[[question]]\nkind = \"predict\"\ntext = \"How fast?\"\nquantity = \"velocity_after\"\n"
-                           "body = \"B\"\ntolerance = 0.1\nexplain = \"why\"\n");
+    const Lesson L = parse(
+        "[[question]]\nkind = \"predict\"\ntext = \"Which way?\"\nchoices = [\"f\", \"b\"]\n"
+        "correct = 1\nreasons = [\"r1\", \"r2\"]\nexplain = \"why\"\n"
+        "[[question]]\nkind = \"predict\"\ntext = \"How fast?\"\nquantity = \"velocity_after\"\n"
+        "body = \"B\"\ntolerance = 0.1\nexplain = \"why\"\n");
     ASSERT_EQ(L.questions.size(), 2u);
     EXPECT_EQ(L.questions[0].kind, QuestionKind::predict);
     EXPECT_TRUE(L.questions[0].has_choices());
@@ -105,8 +111,9 @@ TEST(LessonQuestions, AnExplainQuestionKeepsItsModelAnswer) {
 }
 
 TEST(LessonQuestions, AWhatIfQuestionKeepsItsValues) {
-    const Lesson L = parse("[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\n"
-                           "what_if = { \"A.mass\" = 1.0, \"scene.restitution\" = 1.0 }\n");
+    const Lesson L = parse(
+        "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\n"
+        "what_if = { \"A.mass\" = 1.0, \"scene.restitution\" = 1.0 }\n");
     const std::map<std::string, double> expected = {{"A.mass", 1.0}, {"scene.restitution", 1.0}};
     EXPECT_EQ(L.questions.at(0).what_if, expected);
 }
@@ -150,7 +157,8 @@ TEST(LessonQuestions, LessonWithValuesRefusesWhatTheFileWouldRefuse) {
 // Each what-if reads the lesson again: their number is bounded, so a file's cost stays linear.
 TEST(LessonQuestions, ALessonHasAtMostTwentyWhatIfQuestions) {
     std::string twenty, one_more;
-    for (int i = 0; i < 20; ++i) twenty += "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\nwhat_if = { \"A.mass\" = 3.0 }\n";
+    for (int i = 0; i < 20; ++i)
+        twenty += "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\nwhat_if = { \"A.mass\" = 3.0 }\n";
     EXPECT_EQ(parse(twenty).questions.size(), 20u);
     try {
         parse(twenty + "[[question]]\ntext = \"J?\"\nquantity = \"impulse\"\nwhat_if = { \"A.mass\" = 3.0 }\n");

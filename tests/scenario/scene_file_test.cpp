@@ -90,7 +90,8 @@ shape = "block"
 length = 0.2
 static = true
 position = 1.0
-)", "one.toml");
+)",
+                                      "one.toml");
     EXPECT_EQ(s1.bodies[0].body1.v, 2.0);
     EXPECT_TRUE(s1.bodies[1].body1.is_static);
     const Scene s3 = parse_scene_text(R"(
@@ -103,7 +104,8 @@ shape = "box"
 size = [1.0, 2.0, 3.0]
 density = 10.0
 orientation = [2.0, 0.0, 0.0, 0.0]
-)", "three.toml");
+)",
+                                      "three.toml");
     EXPECT_NEAR(s3.bodies[0].body3.mass, 60.0, 1e-12);
     EXPECT_NEAR(s3.bodies[0].body3.inertia(0, 0), 60.0 * (4.0 + 9.0) / 12.0, 1e-12);
     EXPECT_NEAR(s3.bodies[0].body3.orientation.norm(), 1.0, 1e-15);
@@ -143,8 +145,7 @@ INSTANTIATE_TEST_SUITE_P(
             "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n"
             "[[body]]\nname = \"b\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\nposition = [1.0, 0.0]\n",
             "body[2].name", 10, "already used by body[1]"},
-        Bad{"name with a line break",
-            "[[body]]\nname = \"heavy\\ncart\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n",
+        Bad{"name with a line break", "[[body]]\nname = \"heavy\\ncart\"\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\n",
             "body[1].name", 5, "must be one line, without line breaks or tabs, got 'heavy\\ncart'"},
         Bad{"overlap at the start",
             "[[body]]\nname = \"a\"\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n"
@@ -160,36 +161,30 @@ INSTANTIATE_TEST_SUITE_P(
             "[[body]]\nname = \"w\"\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nstatic = true\n"
             "v = [1.0, 0.0]\n",
             "body[1].v", 9, "a static body stays where it is"},
-        Bad{"mass and density",
-            "[[body]]\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\ndensity = 2.0\n",
-            "body[1].mass", 7, "exactly one of mass, density"},
+        Bad{"mass and density", "[[body]]\nshape = \"disc\"\nradius = 0.1\nmass = 1.0\ndensity = 2.0\n", "body[1].mass",
+            7, "exactly one of mass, density"},
         Bad{"clockwise polygon",
             "[[body]]\nshape = \"polygon\"\nvertices = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]]\nmass = 1.0\n",
             "body[1].vertices", 6, "counter-clockwise"},
-        Bad{"radius on a rectangle",
-            "[[body]]\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nradius = 0.5\nmass = 1.0\n",
+        Bad{"radius on a rectangle", "[[body]]\nshape = \"rectangle\"\nsize = [1.0, 1.0]\nradius = 0.5\nmass = 1.0\n",
             "body[1].radius", 7, "a rectangle has no 'radius'"},
-        Bad{"3D shape in 2D",
-            "[[body]]\nshape = \"sphere\"\nradius = 0.5\nmass = 1.0\n",
-            "body[1].shape", 5, "unknown 2D shape 'sphere'; expected disc, rectangle, polygon or plane"},
-        Bad{"unknown key with a hint",
-            "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\nvelocity = [1.0, 0.0]\n",
+        Bad{"3D shape in 2D", "[[body]]\nshape = \"sphere\"\nradius = 0.5\nmass = 1.0\n", "body[1].shape", 5,
+            "unknown 2D shape 'sphere'; expected disc, rectangle, polygon or plane"},
+        Bad{"unknown key with a hint", "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\nvelocity = [1.0, 0.0]\n",
             "body[1].velocity", 8, "did you mean 'v'?"},
-        Bad{"plane that moves",
-            "[[body]]\nshape = \"plane\"\nnormal = [0.0, 1.0]\nv = [1.0, 0.0]\n",
-            "body[1].v", 7, "a plane is placed by normal and offset"},
+        Bad{"plane that moves", "[[body]]\nshape = \"plane\"\nnormal = [0.0, 1.0]\nv = [1.0, 0.0]\n", "body[1].v", 7,
+            "a plane is placed by normal and offset"},
         Bad{"no bodies", "", "", 0, "expected one or more [[body]] tables"},
         Bad{"camera looking straight down",
             "[view]\ncamera_elevation = 95.0\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
             "view.camera_elevation", 5, "between -89 and 89"},
         Bad{"unknown view key with a hint",
-            "[view]\ndirection = true\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
-            "view.direction", 5, "did you mean 'directions'?"},
+            "[view]\ndirection = true\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n", "view.direction", 5,
+            "did you mean 'directions'?"},
         Bad{"camera target of another dimension",
             "[view]\ncamera_target = [0.0, 0.0, 1.0]\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
             "view.camera_target", 5, "2"},
-        Bad{"unknown policy",
-            "policy = \"together\"\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
+        Bad{"unknown policy", "policy = \"together\"\n[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
             "scene.policy", 4, "expected sequential or simultaneous"}));
 
 TEST(SceneFile, ViewTableIsReadAndOptional) {
@@ -206,8 +201,8 @@ TEST(SceneFile, ViewTableIsReadAndOptional) {
     EXPECT_EQ(view.camera_distance, 3.0);
     EXPECT_TRUE(view.directions);
     SceneView none;
-    parse_scene_text(std::string(kHead) + "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n",
-                     "plain.toml", &none);
+    parse_scene_text(std::string(kHead) + "[[body]]\nshape = \"disc\"\nradius = 0.5\nmass = 1.0\n", "plain.toml",
+                     &none);
     EXPECT_FALSE(none.camera_azimuth || none.camera_elevation || none.camera_target || none.camera_distance);
     EXPECT_FALSE(none.directions);
 }

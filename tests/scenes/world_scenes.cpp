@@ -134,8 +134,7 @@ void add_walls3(Scene* s, double L) {
 }
 
 double gas_box_size(int dimension, const GasSpec& g) {
-    const double body = dimension == 2 ? kPi * g.radius * g.radius
-                                       : 4.0 / 3.0 * kPi * g.radius * g.radius * g.radius;
+    const double body = dimension == 2 ? kPi * g.radius * g.radius : 4.0 / 3.0 * kPi * g.radius * g.radius * g.radius;
     return std::pow(g.n * body / g.fraction, 1.0 / dimension);
 }
 
@@ -196,8 +195,7 @@ Scene pyramid(const PyramidSpec& p) {
     for (int k = 0; k < p.rows; ++k)
         for (int j = 0; j < p.rows - k; ++j) {
             const Vec2 x((k * 0.5 + j) * p.spacing, (k + 0.5) * p.size);
-            s.bodies.push_back(rectangle("r" + std::to_string(k) + "b" + std::to_string(j), p.size,
-                                         p.size, p.mass, x));
+            s.bodies.push_back(rectangle("r" + std::to_string(k) + "b" + std::to_string(j), p.size, p.size, p.mass, x));
         }
     return s;
 }
@@ -208,14 +206,11 @@ double bin_pitch(int dimension, const BinSpec& b) {
 
 int bin_columns(int dimension, const BinSpec& b) {
     if (b.columns > 0) return b.columns;
-    const double c = dimension == 2 ? 2.0 * std::sqrt(static_cast<double>(b.n))
-                                    : std::cbrt(static_cast<double>(b.n));
+    const double c = dimension == 2 ? 2.0 * std::sqrt(static_cast<double>(b.n)) : std::cbrt(static_cast<double>(b.n));
     return std::max(1, static_cast<int>(std::ceil(c - 1e-9)));
 }
 
-double bin_width(int dimension, const BinSpec& b) {
-    return bin_columns(dimension, b) * bin_pitch(dimension, b);
-}
+double bin_width(int dimension, const BinSpec& b) { return bin_columns(dimension, b) * bin_pitch(dimension, b); }
 
 Scene bin(int dimension, const BinSpec& b) {
     Scene s = empty_scene(dimension, Policy::simultaneous, b.e, Vec3(0.0, -b.g, 0.0));
@@ -247,13 +242,10 @@ Scene bin(int dimension, const BinSpec& b) {
             Vec3 size;
             for (int k = 0; k < 3; ++k) size[k] = rng.uniform(b.min_side, b.max_side);
             // Uniform over rotations (Shoemake's subgroup algorithm: three uniform draws).
-            const double u1 = rng.uniform(0.0, 1.0), u2 = rng.uniform(0.0, 2.0 * kPi),
-                         u3 = rng.uniform(0.0, 2.0 * kPi);
+            const double u1 = rng.uniform(0.0, 1.0), u2 = rng.uniform(0.0, 2.0 * kPi), u3 = rng.uniform(0.0, 2.0 * kPi);
             const double r1 = std::sqrt(1.0 - u1), r2 = std::sqrt(u1);
-            const Quat q(r2 * std::cos(u3), r1 * std::sin(u2), r1 * std::cos(u2),
-                         r2 * std::sin(u3));
-            const Vec3 x((i % c + 0.5) * pitch, (i / (c * c) + 0.5) * pitch,
-                         ((i / c) % c + 0.5) * pitch);
+            const Quat q(r2 * std::cos(u3), r1 * std::sin(u2), r1 * std::cos(u2), r2 * std::sin(u3));
+            const Vec3 x((i % c + 0.5) * pitch, (i / (c * c) + 0.5) * pitch, ((i / c) % c + 0.5) * pitch);
             s.bodies.push_back(box(name, 0.5 * size, b.density3 * size.prod(), x, q.normalized()));
         }
     }
@@ -266,8 +258,8 @@ Scene tower3d(const TowerSpec& t) {
     s.friction = t.mu;
     s.bodies.push_back(half_space("ground", Vec3(0, 1, 0), 0.0));
     for (int i = 0; i < t.levels; ++i)
-        s.bodies.push_back(box("box" + std::to_string(i), 0.5 * t.size, t.mass,
-                               Vec3(0.0, (i + 0.5) * t.size.y(), 0.0)));
+        s.bodies.push_back(
+            box("box" + std::to_string(i), 0.5 * t.size, t.mass, Vec3(0.0, (i + 0.5) * t.size.y(), 0.0)));
     s.bodies.push_back(sphere("ball", t.ball_radius, t.ball_mass, t.ball_x, t.ball_v));
     return s;
 }

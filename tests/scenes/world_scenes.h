@@ -28,24 +28,22 @@ namespace collide::scenes {
 Scene empty_scene(int dimension, Policy policy = Policy::sequential, double e = 1.0,
                   const Vec3& gravity = Vec3::Zero());
 
-SceneBody disc(const std::string& name, double radius, double mass, const Vec2& x,
-               const Vec2& v = Vec2::Zero(), double w = 0.0, double angle = 0.0);
+SceneBody disc(const std::string& name, double radius, double mass, const Vec2& x, const Vec2& v = Vec2::Zero(),
+               double w = 0.0, double angle = 0.0);
 
 // A rectangle width x height (full edge lengths), centred on x, turned by angle.
-SceneBody rectangle(const std::string& name, double width, double height, double mass,
-                    const Vec2& x, double angle = 0.0, const Vec2& v = Vec2::Zero(),
-                    double w = 0.0);
+SceneBody rectangle(const std::string& name, double width, double height, double mass, const Vec2& x,
+                    double angle = 0.0, const Vec2& v = Vec2::Zero(), double w = 0.0);
 
 // Static half-plane: the solid side is {p : n . p <= offset} (n the outward unit normal).
 SceneBody half_plane(const std::string& name, const Vec2& n, double offset);
 
-SceneBody sphere(const std::string& name, double radius, double mass, const Vec3& x,
-                 const Vec3& v = Vec3::Zero(), const Vec3& w = Vec3::Zero());
+SceneBody sphere(const std::string& name, double radius, double mass, const Vec3& x, const Vec3& v = Vec3::Zero(),
+                 const Vec3& w = Vec3::Zero());
 
 // A box with half extents `half` along its body axes.
-SceneBody box(const std::string& name, const Vec3& half, double mass, const Vec3& x,
-              const Quat& q = Quat::Identity(), const Vec3& v = Vec3::Zero(),
-              const Vec3& w = Vec3::Zero());
+SceneBody box(const std::string& name, const Vec3& half, double mass, const Vec3& x, const Quat& q = Quat::Identity(),
+              const Vec3& v = Vec3::Zero(), const Vec3& w = Vec3::Zero());
 
 // Static half-space: the solid side is {p : n . p <= offset}.
 SceneBody half_space(const std::string& name, const Vec3& n, double offset);
@@ -90,7 +88,7 @@ struct PileSpec {
     double gap = 0.01;      // m
     double spacing = 0.15;  // m, centre to centre (3 radii)
     double e = 0.5;
-    double g = 9.81;        // m/s^2
+    double g = 9.81;  // m/s^2
 };
 
 Scene pile(int dimension, const PileSpec& p);
@@ -110,7 +108,7 @@ struct PyramidSpec {
     double mass = 1.0;       // kg
     double mu = 0.6;
     double e = 0.0;
-    double g = 9.81;         // m/s^2
+    double g = 9.81;  // m/s^2
 };
 
 Scene pyramid(const PyramidSpec& p);
@@ -134,14 +132,14 @@ Scene pyramid(const PyramidSpec& p);
 struct BinSpec {
     int n = 100;
     std::uint64_t seed = 1;
-    double min_side = 0.2;    // m
-    double max_side = 0.3;    // m
-    double density2 = 16.0;   // kg/m^2 (2D)
-    double density3 = 64.0;   // kg/m^3 (3D)
+    double min_side = 0.2;   // m
+    double max_side = 0.3;   // m
+    double density2 = 16.0;  // kg/m^2 (2D)
+    double density3 = 64.0;  // kg/m^3 (3D)
     double mu = 0.5;
     double e = 0.2;
-    double g = 9.81;          // m/s^2
-    int columns = 0;          // cells across the bin (each way in 3D); 0: as above
+    double g = 9.81;  // m/s^2
+    int columns = 0;  // cells across the bin (each way in 3D); 0: as above
 };
 
 // m: grid cell size, the largest box's diagonal plus 1 cm.
@@ -162,15 +160,15 @@ Scene bin(int dimension, const BinSpec& b);
 // ball.
 struct TowerSpec {
     int levels = 6;
-    double mass = 1.0;                       // kg, each box
-    Vec3 size = Vec3(0.2, 0.1, 0.2);         // m, full edge lengths
-    double ball_mass = 2.0;                  // kg
-    double ball_radius = 0.08;               // m
-    Vec3 ball_x = Vec3(-0.8, 0.45, 0.0);     // m
-    Vec3 ball_v = Vec3(4.0, 0.0, 0.0);       // m/s
+    double mass = 1.0;                    // kg, each box
+    Vec3 size = Vec3(0.2, 0.1, 0.2);      // m, full edge lengths
+    double ball_mass = 2.0;               // kg
+    double ball_radius = 0.08;            // m
+    Vec3 ball_x = Vec3(-0.8, 0.45, 0.0);  // m
+    Vec3 ball_v = Vec3(4.0, 0.0, 0.0);    // m/s
     double mu = 0.5;
     double e = 0.3;
-    double g = 9.81;                         // m/s^2
+    double g = 9.81;  // m/s^2
 };
 
 Scene tower3d(const TowerSpec& t);

@@ -32,7 +32,8 @@ dimension = 3
 duration = 1.0
 model = "coulomb"
 restitution = 0.6
-friction = )" + std::to_string(mu) + R"(
+friction = )" +
+           std::to_string(mu) + R"(
 [[body]]
 name = "ball"
 shape = "sphere"
@@ -63,8 +64,11 @@ bool check_one_step_coulomb(const CollisionInstant& c, const Solution& s, double
     const double ma = 0.3, mb = 1.5;
     const Mat3 Ia = Mat3::Identity() * (0.4 * ma * 0.1 * 0.1);
     const Mat3 R = c.before_b.q.toRotationMatrix();
-    const Mat3 Ib = R * Vec3(mb * (0.4 * 0.4 + 0.5 * 0.5) / 12, mb * (0.3 * 0.3 + 0.5 * 0.5) / 12,
-                             mb * (0.3 * 0.3 + 0.4 * 0.4) / 12).asDiagonal() * R.transpose();
+    const Mat3 Ib =
+        R *
+        Vec3(mb * (0.4 * 0.4 + 0.5 * 0.5) / 12, mb * (0.3 * 0.3 + 0.5 * 0.5) / 12, mb * (0.3 * 0.3 + 0.4 * 0.4) / 12)
+            .asDiagonal() *
+        R.transpose();
     EXPECT_EQ(c.a, 0u);  // the ball is a
     const Vec3 P = s.P;
     const Vec3 va = c.before_a.v - P / ma, vb = c.before_b.v + P / mb;
@@ -110,7 +114,8 @@ length = 0.2
 mass = 1.0
 position = 0.5
 v = -1.0
-)", "1d.toml");
+)",
+                                         "1d.toml");
     Event1 e;
     const CollisionInstant c = first_instant<World1>(scene, &e);
     const SolveProblem p = collision_problem(scene, c);
@@ -158,7 +163,8 @@ size = [0.1, 0.6]
 mass = 2.0
 position = [0.0, 0.0]
 angle = 0.2
-)", "2d.toml");
+)",
+                                         "2d.toml");
     Event2 e;
     const CollisionInstant c = first_instant<World<2>>(scene, &e);
     const Solution s = solve(collision_problem(scene, c));
@@ -257,7 +263,8 @@ angle = 0.8726646259971648
 position = [0.32139342182104813, 0.38302254295429383]
 v = [-0.2, -1.0]
 w = 6.0
-)", "kane.toml");
+)",
+                                         "kane.toml");
     Event2 e;
     const CollisionInstant c = first_instant<World<2>>(scene, &e);
     const SolveProblem p = collision_problem(scene, c);

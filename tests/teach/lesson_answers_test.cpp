@@ -71,7 +71,8 @@ const LessonAnswer& ans(const Lesson& L, const std::vector<LessonAnswer>& a, con
 // choice and explain questions, not the what-if runs).
 std::size_t engine_answers(const Lesson& L, const std::vector<LessonAnswer>& a) {
     std::size_t k = 0;
-    for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i) k += a[i].computed && L.questions[i].what_if.empty();
+    for (std::size_t i = 0; i < L.questions.size() && i < a.size(); ++i)
+        k += a[i].computed && L.questions[i].what_if.empty();
     return k;
 }
 
@@ -104,8 +105,7 @@ const LessonAnswer& ans_pair(const Lesson& L, const std::vector<LessonAnswer>& a
 // Half extents of a 2D rectangle, in its own axes (its polygon is centred on the body).
 Vec2 half_size(const SceneBody& b) {
     Vec2 h = Vec2::Zero();
-    for (int i = 0; i < b.shape2.polygon.count; ++i)
-        h = h.cwiseMax(b.shape2.polygon.vertices[i].cwiseAbs());
+    for (int i = 0; i < b.shape2.polygon.count; ++i) h = h.cwiseMax(b.shape2.polygon.vertices[i].cwiseAbs());
     return h;
 }
 
@@ -137,8 +137,8 @@ struct Hit2 {
     Vec2 P, va, vb;
     double wa, wb;
 };
-Hit2 frictionless2(double e, double ima, double iIa, const Vec2& ra, const Vec2& va, double wa, double imb,
-                   double iIb, const Vec2& rb, const Vec2& vb, double wb, const Vec2& n) {
+Hit2 frictionless2(double e, double ima, double iIa, const Vec2& ra, const Vec2& va, double wa, double imb, double iIb,
+                   const Vec2& rb, const Vec2& vb, double wb, const Vec2& n) {
     const double un = ((vb + spin_x(wb, rb)) - (va + spin_x(wa, ra))).dot(n);
     const double den = ima + imb + std::pow(cross2(ra, n), 2) * iIa + std::pow(cross2(rb, n), 2) * iIb;
     Hit2 h;
@@ -168,7 +168,8 @@ TEST(LessonAnswers, Reversed) {
     EXPECT_LT(J_page, 0.0);
     EXPECT_NEAR(ans(L, a, "impulse").value, -j, 1e-12);
     EXPECT_NEAR(ans(L, a, "impulse").value, J_page, 1e-12);
-    EXPECT_NEAR(ans(L, a, "velocity_after", "A").value, va - J_page / ma, 1e-12);  // the page's formulas with its negative J
+    EXPECT_NEAR(ans(L, a, "velocity_after", "A").value, va - J_page / ma,
+                1e-12);  // the page's formulas with its negative J
     EXPECT_NEAR(ans(L, a, "velocity_after", "B").value, vb + J_page / mb, 1e-12);
     EXPECT_NEAR(ans(L, a, "normal_velocity_after").value, -e * (va - vb), 1e-12);
     EXPECT_NEAR(ans(L, a, "energy_lost").value, (1 - e * e) * ma * mb * (vb - va) * (vb - va) / (2 * (ma + mb)), 1e-12);
@@ -194,7 +195,7 @@ TEST(LessonAnswers, RotationDirections) {
     const Hit2 h = frictionless2(L.scene.restitution, 1 / A.body2.mass, 1 / Ia, ra, A.body2.v, A.body2.w,
                                  1 / B.body2.mass, 1 / Ib, rb, B.body2.v, B.body2.w, Vec2(0, -1));
     ASSERT_EQ(engine_answers(L, a), 5u);
-    EXPECT_GT(h.wb, 0.0);  // anticlockwise
+    EXPECT_GT(h.wb, 0.0);       // anticlockwise
     EXPECT_LT(A.body2.w, 0.0);  // from a clockwise A
     EXPECT_NEAR(ans(L, a, "spin_after", "B").value, h.wb, 1e-7);
     EXPECT_NEAR(ans(L, a, "spin_after", "A").value, h.wa, 1e-7);
@@ -218,8 +219,8 @@ TEST(LessonAnswers, ContactPointVelocity) {
     EXPECT_NEAR(B.body2.position.y() + B.shape2.radius, p.y(), 1e-15);  // the ball touches there
     const Vec2 ra = p - xa, rb = p - B.body2.position, n(0, -1);
     const Vec2 vpa = A.body2.v + spin_x(A.body2.w, ra);
-    const Hit2 h = frictionless2(L.scene.restitution, 1 / A.body2.mass, 1 / A.body2.inertia, ra, A.body2.v,
-                                 A.body2.w, 1 / B.body2.mass, 1 / B.body2.inertia, rb, B.body2.v, 0.0, n);
+    const Hit2 h = frictionless2(L.scene.restitution, 1 / A.body2.mass, 1 / A.body2.inertia, ra, A.body2.v, A.body2.w,
+                                 1 / B.body2.mass, 1 / B.body2.inertia, rb, B.body2.v, 0.0, n);
     ASSERT_EQ(engine_answers(L, a), 5u);
     EXPECT_LT(A.body2.v.dot(n), 0.0);  // the centre moves away from the ball ...
     EXPECT_GT(vpa.dot(n), 0.0);        // ... its touching point towards it
@@ -247,7 +248,7 @@ TEST(LessonAnswers, Restitution) {
     EXPECT_EQ(e[0], 0.1);
     EXPECT_EQ(e[1], 0.5);
     EXPECT_EQ(e[2], 1.0);
-    const SceneBody &A0 = L.scene.bodies[0];
+    const SceneBody& A0 = L.scene.bodies[0];
     EXPECT_NEAR(ans(L, a, "normal_velocity_before").value, -A0.body2.v.x(), 1e-12);
     for (std::size_t k = 0; k < 3; ++k)
         EXPECT_NEAR(a[1 + k].value, e[k] * L.scene.bodies[2 * k].body2.v.x(), 1e-12) << "row " << k;
@@ -256,8 +257,8 @@ TEST(LessonAnswers, Restitution) {
     const Vec2 hb = half_size(B2);
     const Vec2 rb(-hb.x(), A2.body2.position.y() - B2.body2.position.y());
     const Vec2 ra(A2.shape2.radius, 0.0);
-    const Hit2 h = frictionless2(e[2], 1 / A2.body2.mass, 1 / A2.body2.inertia, ra, A2.body2.v, 0.0,
-                                 1 / B2.body2.mass, 1 / B2.body2.inertia, rb, B2.body2.v, 0.0, Vec2(1, 0));
+    const Hit2 h = frictionless2(e[2], 1 / A2.body2.mass, 1 / A2.body2.inertia, ra, A2.body2.v, 0.0, 1 / B2.body2.mass,
+                                 1 / B2.body2.inertia, rb, B2.body2.v, 0.0, Vec2(1, 0));
     expect_vec2(ans(L, a, "velocity_after", "B (e=1)", 3), h.vb, 1e-12);
 }
 
@@ -312,11 +313,11 @@ TEST(LessonAnswers, FrameOfA) {
     const Vec2 rb(-hb.x(), A.body2.position.y() + ra.y() - B.body2.position.y());
     const Hit2 h = frictionless2(L.scene.restitution, 1 / A.body2.mass, 1 / A.body2.inertia, ra, A.body2.v, 0.0,
                                  1 / B.body2.mass, 1 / B.body2.inertia, rb, B.body2.v, 0.0, Vec2(1, 0));
-    const Hit2 h6 = frictionless2(L6.scene.restitution, 1 / A6.body2.mass, 1 / A6.body2.inertia, ra,
-                                  A6.body2.v, 0.0, 1 / B6.body2.mass, 1 / B6.body2.inertia, rb, B6.body2.v, 0.0,
-                                  Vec2(1, 0));
+    const Hit2 h6 = frictionless2(L6.scene.restitution, 1 / A6.body2.mass, 1 / A6.body2.inertia, ra, A6.body2.v, 0.0,
+                                  1 / B6.body2.mass, 1 / B6.body2.inertia, rb, B6.body2.v, 0.0, Vec2(1, 0));
     const auto ke = [&](const Hit2& x, const SceneBody& a0, const SceneBody& b0) {
-        const double before = 0.5 * a0.body2.mass * a0.body2.v.squaredNorm() + 0.5 * b0.body2.mass * b0.body2.v.squaredNorm();
+        const double before =
+            0.5 * a0.body2.mass * a0.body2.v.squaredNorm() + 0.5 * b0.body2.mass * b0.body2.v.squaredNorm();
         const double after = 0.5 * a0.body2.mass * x.va.squaredNorm() + 0.5 * a0.body2.inertia * x.wa * x.wa +
                              0.5 * b0.body2.mass * x.vb.squaredNorm() + 0.5 * b0.body2.inertia * x.wb * x.wb;
         return before - after;
@@ -360,8 +361,8 @@ TEST(LessonAnswers, General3d) {
     const Vec3 va = A.body3.v - P / ma, vb = B.body3.v + P / mb;
     const Vec3 wa = -Ia.inverse() * ra.cross(P), wb = Ib.inverse() * rb.cross(P);
     const double ke0 = 0.5 * ma * A.body3.v.squaredNorm();
-    const double ke1 = 0.5 * ma * va.squaredNorm() + 0.5 * wa.dot(Ia * wa) + 0.5 * mb * vb.squaredNorm() +
-                       0.5 * wb.dot(Ib * wb);
+    const double ke1 =
+        0.5 * ma * va.squaredNorm() + 0.5 * wa.dot(Ia * wa) + 0.5 * mb * vb.squaredNorm() + 0.5 * wb.dot(Ib * wb);
     ASSERT_EQ(engine_answers(L, a), 5u);
     expect_vec3(ans(L, a, "impulse"), P, 1e-12);
     expect_vec3(ans(L, a, "velocity_after", "A"), va, 1e-12);
@@ -433,11 +434,11 @@ TEST(LessonAnswers, KanesParadox) {
     const Vec2 d1(-mu, 1.0);
     const double P1 = -u0.x() / (K * d1).x();
     const Vec2 u1 = u0 + P1 * (K * d1);
-    ASSERT_LT(u1.y(), 0.0);                           // still compressing when the slip stops
-    ASSERT_GT(std::abs(K(0, 1) / K(0, 0)), mu);       // sticking cannot hold: it slides back
+    ASSERT_LT(u1.y(), 0.0);                      // still compressing when the slip stops
+    ASSERT_GT(std::abs(K(0, 1) / K(0, 0)), mu);  // sticking cannot hold: it slides back
     const Vec2 d2(mu * (K(0, 1) > 0 ? -1.0 : 1.0), 1.0);
     const double a1 = (K * d1).y(), a2 = (K * d2).y();
-    const double hc = -u1.y() / a2;                   // to the end of compression
+    const double hc = -u1.y() / a2;  // to the end of compression
     const double Wc = u0.y() * P1 + 0.5 * a1 * P1 * P1 + u1.y() * hc + 0.5 * a2 * hc * hc;
     const double hr = std::sqrt(2.0 * e * e * -Wc / a2);  // 1/2 a2 hr^2 = -e^2 Wc
     const Vec2 P = P1 * d1 + (hc + hr) * d2;
@@ -475,7 +476,8 @@ TEST(LessonAnswers, MatrixMethod) {
     expect_vec2(ans(L, a, "velocity_after", "rod"), v, 1e-12);
     EXPECT_NEAR(ans(L, a, "spin_after", "rod").value, w, 1e-11);
     expect_vec2(ans(L, a, "point_velocity_after", "rod"), -e * u, 1e-12);
-    EXPECT_NEAR(ans(L, a, "energy_lost").value, 0.5 * m * u.squaredNorm() - 0.5 * m * v.squaredNorm() - 0.5 * I * w * w, 1e-12);
+    EXPECT_NEAR(ans(L, a, "energy_lost").value, 0.5 * m * u.squaredNorm() - 0.5 * m * v.squaredNorm() - 0.5 * I * w * w,
+                1e-12);
 }
 
 TEST(LessonAnswers, Stick) {
@@ -496,8 +498,8 @@ TEST(LessonAnswers, Stick) {
     const Vec2 vc = m * clay.body2.v / (m + M);
     const Vec2 d_clay = x_clay - xc, d_rod = x_rod - xc;
     const double Lc = m * cross2(d_clay, clay.body2.v);
-    const double Ic = rectangle_inertia(M, half_size(rod)) + M * d_rod.squaredNorm() +
-                      0.5 * m * R * R + m * d_clay.squaredNorm();
+    const double Ic =
+        rectangle_inertia(M, half_size(rod)) + M * d_rod.squaredNorm() + 0.5 * m * R * R + m * d_clay.squaredNorm();
     const double w = Lc / Ic;
     expect_vec2(ans(L, a, "velocity_after", "clay"), vc + spin_x(w, d_clay), 1e-12);
     EXPECT_NEAR(ans(L, a, "spin_after", "rod").value, w, 1e-12);
@@ -543,8 +545,8 @@ TEST(LessonAnswers, ErrataListingAsWritten) {
     expect_vec3(ans(L, a, "spin_after", "bar"), wbf, 1e-12);
     expect_vec3(ans(L, a, "momentum_after"), ma * vaf + mb * vbf, 1e-12);
     EXPECT_LT(ans(L, a, "momentum_after").vector.y(), 0.0);  // momentum reversed: not conserved
-    const double energy = 0.5 * ma * vaf.squaredNorm() + 0.5 * mb * vbf.squaredNorm() +
-                          0.5 * wbf.dot(bar.body3.inertia * wbf);
+    const double energy =
+        0.5 * ma * vaf.squaredNorm() + 0.5 * mb * vbf.squaredNorm() + 0.5 * wbf.dot(bar.body3.inertia * wbf);
     EXPECT_NEAR(ans(L, a, "kinetic_energy_after").value, energy, 1e-12);
     EXPECT_GT(ans(L, a, "kinetic_energy_after").value, 0.5 * ma * ball.body3.v.squaredNorm());  // energy out of nothing
     const double un = (vbf + wbf.cross(rb) - vaf).dot(n);
@@ -646,9 +648,8 @@ TEST(LessonAnswers, CentreOfPercussion) {
         const Vec2 h = half_size(B);
         const double e = L.scene.pair_restitution(index_of(L, ball), index_of(L, bat));
         const Vec2 rb(b.body2.position.x() - B.body2.position.x(), -h.y()), n(0, 1);
-        const Hit2 H = frictionless2(e, 1 / b.body2.mass, 1 / b.body2.inertia, Vec2(0, b.shape2.radius),
-                                     b.body2.v, 0.0, 1 / B.body2.mass, 1 / B.body2.inertia, rb, B.body2.v,
-                                     0.0, n);
+        const Hit2 H = frictionless2(e, 1 / b.body2.mass, 1 / b.body2.inertia, Vec2(0, b.shape2.radius), b.body2.v, 0.0,
+                                     1 / B.body2.mass, 1 / B.body2.inertia, rb, B.body2.v, 0.0, n);
         *j = H.j;
         *handle = H.vb + spin_x(H.wb, Vec2(-h.x(), 0));
         *tip = H.vb + spin_x(H.wb, Vec2(h.x(), 0));
@@ -819,7 +820,8 @@ TEST(LessonAnswers, Tower) {
         ++at_impact;
         received[e.b] += e.impulse;
         received[e.a] -= e.impulse;
-        for (const auto& [i, before, after] : {std::tuple{e.a, e.before_a, e.after_a}, std::tuple{e.b, e.before_b, e.after_b}})
+        for (const auto& [i, before, after] :
+             {std::tuple{e.a, e.before_a, e.after_a}, std::tuple{e.b, e.before_b, e.after_b}})
             if (!L.scene.bodies[i].is_static()) dp[i] = L.scene.bodies[i].body3.mass * (after.v - before.v);
     }
     EXPECT_EQ(at_impact, 7u);  // ball-box 4, box 4 with 3 and 5, 5-6, 3-2, 2-1, 1-ground
@@ -836,8 +838,8 @@ TEST(LessonAnswers, Tower) {
         if (e.a == index_of(L, "box 5") && e.b == index_of(L, "box 6")) j56 = e.impulse.dot(e.normal);
     }
     const double j45 = ans_pair(L, a, "impulse_normal", "", "box 4", "box 5").value;
-    EXPECT_NEAR(ans_pair(L, a, "velocity_after", "box 6", "box 5", "box 6").vector.y(), j56 / body(L, "box 6").body3.mass,
-                1e-9);
+    EXPECT_NEAR(ans_pair(L, a, "velocity_after", "box 6", "box 5", "box 6").vector.y(),
+                j56 / body(L, "box 6").body3.mass, 1e-9);
     EXPECT_NEAR(j45, 2 * j56, 1e-4 * j45);
     // Down the tower: box 3 passes on almost all it receives, with friction at the cone's edge.
     const double j34 = ans_pair(L, a, "impulse_normal", "", "box 3", "box 4").value;
@@ -924,7 +926,8 @@ TEST(LessonAnswers, Dominoes) {
     const auto& rec = std::get<Recording<2>>(run);
     std::vector<double> strike;  // strike[k]: domino k + 1 strikes domino k + 2
     for (int k = 1; k < 15; ++k) {
-        const std::size_t i = index_of(L, "domino " + std::to_string(k)), j = index_of(L, "domino " + std::to_string(k + 1));
+        const std::size_t i = index_of(L, "domino " + std::to_string(k)),
+                          j = index_of(L, "domino " + std::to_string(k + 1));
         double first = -1;
         for (const Event<2>& e : rec.events)
             if ((e.a == i && e.b == j) || (e.a == j && e.b == i)) {

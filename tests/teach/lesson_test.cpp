@@ -87,8 +87,8 @@ TEST(Lessons, BouncingBallWhatIfIsAnsweredForItsOwnRestitution) {
     const double e = L.questions[k].what_if.at("scene.restitution");
     EXPECT_NE(e, L.scene.restitution);
     const double g = -L.scene.gravity.y();
-    const double H = L.scene.bodies[1].body2.position.y() - L.scene.bodies[1].shape2.radius -
-                     L.scene.bodies[0].shape2.offset;
+    const double H =
+        L.scene.bodies[1].body2.position.y() - L.scene.bodies[1].shape2.radius - L.scene.bodies[0].shape2.offset;
     const std::vector<LessonAnswer> a = answer_questions(L);
     EXPECT_NEAR(a[k].value, std::sqrt(2 * H / g) * (1 + e) / (1 - e), 1e-6);
 }
@@ -109,8 +109,8 @@ TEST(Lessons, MarkdownAsksPredictionsBeforeTheFigureAndChecksThemAfter) {
     EXPECT_LT(figure, check);
     EXPECT_LT(check, questions);
     const std::string& predict = L.questions[4].text;
-    EXPECT_LT(s.find(predict), figure);                   // asked before
-    EXPECT_NE(s.find(predict, figure), std::string::npos);  // and checked after
+    EXPECT_LT(s.find(predict), figure);                                          // asked before
+    EXPECT_NE(s.find(predict, figure), std::string::npos);                       // and checked after
     EXPECT_EQ(s.find("Option 1 is right"), s.find("Option 1 is right", check));  // only after
     EXPECT_NE(s.find("   - (4) " + L.questions[4].choices[3]), std::string::npos);
     for (std::size_t k = 0; k < L.questions[4].reasons.size(); ++k)
@@ -160,7 +160,7 @@ TEST(Lessons, AnIdIsFoundBesideABrokenLesson) {
     fs::copy_file(find(load_lessons(kDir), "reversed").file, dir / "renamed.toml");
     std::ofstream(dir / "03-broken.toml") << "[lesson]\nid = \"broken\"\nthis is not toml\n";
     EXPECT_EQ(resolve_lesson("catch-up", dir.string()), (dir / "01-catch-up.toml").string());
-    EXPECT_THROW(load_lessons(dir.string()), InputError);           // listing them all still fails
+    EXPECT_THROW(load_lessons(dir.string()), InputError);                // listing them all still fails
     EXPECT_THROW(resolve_lesson("reversed", dir.string()), InputError);  // found only by scanning all
     fs::remove(dir / "03-broken.toml");
     EXPECT_EQ(resolve_lesson("reversed", dir.string()), (dir / "renamed.toml").string());
@@ -200,7 +200,8 @@ TEST_P(LessonBad, IsRefusedWithItsKey) {
     const BadLesson& b = GetParam();
     // One file per case: ctest runs the cases in parallel processes.
     std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
-    for (char& ch : name) if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '-';
+    for (char& ch : name)
+        if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '-';
     const std::string path = ::testing::TempDir() + "/lesson-" + name + ".toml";
     {
         std::ofstream out(path);
@@ -240,20 +241,18 @@ INSTANTIATE_TEST_SUITE_P(
         BadLesson{"variant with e > 1",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[variant]]\nlabel = \"e = 2\"\nrestitution = 2.0\n",
                   "variant[1].restitution", "in [0, 1]"},
-        BadLesson{"variant without a label",
-                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[variant]]\nrestitution = 0.5\n",
+        BadLesson{"variant without a label", "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[variant]]\nrestitution = 0.5\n",
                   "variant[1].label", "missing key 'label'"},
         BadLesson{"penalty stiffness not positive",
-                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstiffness = -2.0e4\n",
-                  "penalty.stiffness", "expected a stiffness > 0 N/m"},
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstiffness = -2.0e4\n", "penalty.stiffness",
+                  "expected a stiffness > 0 N/m"},
         BadLesson{"penalty damping ratio over-damped",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstiffness = 2.0e4\ndamping_ratios = [0.2, 1.5]\n",
                   "penalty.damping_ratios", "in [0, 1)"},
         BadLesson{"penalty stiffnesses with a zero",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstiffness = 2.0e4\nstiffnesses = [1.0e4, 0.0]\n",
                   "penalty.stiffnesses", "expected stiffnesses > 0 N/m"},
-        BadLesson{"penalty key misspelt",
-                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstifness = 2.0e4\n",
+        BadLesson{"penalty key misspelt", "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstifness = 2.0e4\n",
                   "penalty.stifness", "did you mean 'stiffness'?"},
         BadLesson{"penalty time step of a nanosecond",
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[penalty]\nstiffness = 2.0e4\ntime_step = 1e-9\n"
@@ -325,9 +324,8 @@ INSTANTIATE_TEST_SUITE_P(
                   "[lesson]\nid = \"x\"\ntitle = \"t\"\n[[question]]\ntext = \"?\"\nquantity = \"impulse\"\n"
                   "what_if = { \"A.v\" = -1.0 }\n",
                   "question[1].what_if", "with A.v = -1: asks for collision 1 but the run has 0"},
-        BadLesson{"unknown lesson key",
-                  "[lesson]\nid = \"x\"\ntitle = \"t\"\ngoal = [\"g\"]\n",
-                  "lesson.goal", "did you mean 'goals'?"}));
+        BadLesson{"unknown lesson key", "[lesson]\nid = \"x\"\ntitle = \"t\"\ngoal = [\"g\"]\n", "lesson.goal",
+                  "did you mean 'goals'?"}));
 
 }  // namespace
 }  // namespace collide

@@ -13,9 +13,7 @@
 namespace collide {
 namespace {
 
-std::string example(const std::string& name) {
-    return std::string(COLLIDE_SOURCE_DIR) + "/lessons/solve/" + name;
-}
+std::string example(const std::string& name) { return std::string(COLLIDE_SOURCE_DIR) + "/lessons/solve/" + name; }
 
 constexpr double kTol = 1e-12;
 
@@ -171,8 +169,8 @@ TEST(SolveJson, SchemaFor3D) {
     write_json(P, solve(P), out);
     const auto j = nlohmann::ordered_json::parse(out.str());
     const std::vector<std::string> keys = {
-        "dimension", "model", "restitution", "friction", "normal", "point", "impulse",
-        "normal_impulse", "sliding", "separating", "energy_gain", "a", "b", "relative_normal_velocity",
+        "dimension",      "model",    "restitution",     "friction",    "normal", "point", "impulse",
+        "normal_impulse", "sliding",  "separating",      "energy_gain", "a",      "b",     "relative_normal_velocity",
         "kinetic_energy", "momentum", "angular_momentum"};
     std::size_t i = 0;
     for (auto it = j.begin(); it != j.end() && i < keys.size(); ++it)
@@ -211,7 +209,8 @@ w = 6.0
 [b]
 name = "ground"
 static = true
-)", "rod.toml");
+)",
+                                                "rod.toml");
         const Solution s = solve(P);
         const double after = 0.5 * s.va.head<2>().squaredNorm() + 0.5 * (1.0 / 12.0) * s.wa.z() * s.wa.z();
         const bool gains = std::string(model) == "coulomb";

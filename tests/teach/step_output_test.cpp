@@ -105,8 +105,7 @@ TEST(Step, SameFileSameBytes) {
 // sqrt(2H/g)(1+e)/(1-e) = 1.3546 s and the ball then rests on the floor (x = 0.2 m); before the
 // first landing the total energy m g x stays m g 1.2 m.
 TEST(Step, BouncingBallLessonComesToRest) {
-    const Scene s = parse_scene_file(std::string(COLLIDE_SOURCE_DIR) +
-                                     "/lessons/scenes/bouncing-ball-1d.toml");
+    const Scene s = parse_scene_file(std::string(COLLIDE_SOURCE_DIR) + "/lessons/scenes/bouncing-ball-1d.toml");
     const auto events = lines(s, {true, true});
     ASSERT_FALSE(events.empty());
     EXPECT_LT(events.size(), 100u);
@@ -116,8 +115,8 @@ TEST(Step, BouncingBallLessonComesToRest) {
         const double t = st["t"].get<double>();
         const auto& ball = st["bodies"]["ball"];
         if (t < std::sqrt(2.0 / 9.81)) {
-            EXPECT_NEAR(st["kinetic_energy"].get<double>() + st["potential_energy"].get<double>(),
-                        0.1 * 9.81 * 1.2, 1e-12);
+            EXPECT_NEAR(st["kinetic_energy"].get<double>() + st["potential_energy"].get<double>(), 0.1 * 9.81 * 1.2,
+                        1e-12);
         }
         if (t > 1.36) {
             EXPECT_EQ(ball["v"].get<double>(), 0.0);
@@ -155,7 +154,8 @@ std::string head_on(double e) {
 dimension = 2
 duration = 0.5
 output_dt = 0.1
-restitution = )" + std::to_string(e) + R"(
+restitution = )" +
+           std::to_string(e) + R"(
 
 [[body]]
 name = "left"
@@ -223,8 +223,7 @@ TEST(Step, FreeFlight2dFollowsTheClosedForm) {
         EXPECT_NEAR(st["potential_energy"].get<double>(), 2.0 * 9.81 * x[1], 1e-12);
         EXPECT_NEAR(vec(st["momentum"])[1], 2.0 * v[1], 1e-12);
         // About the origin: I w + m (x vy - y vx).
-        EXPECT_NEAR(st["angular_momentum"].get<double>(),
-                    0.01 * -2.0 + 2.0 * (x[0] * v[1] - x[1] * v[0]), 1e-12);
+        EXPECT_NEAR(st["angular_momentum"].get<double>(), 0.01 * -2.0 + 2.0 * (x[0] * v[1] - x[1] * v[0]), 1e-12);
     }
 }
 
@@ -265,9 +264,9 @@ TEST(Step, EventText2dNamesBodiesAndVectors) {
     std::ostringstream out;
     write_steps(parse_scene_text(head_on(1.0), "head-on.toml"), {false, true}, out);
     const std::string text = out.str();
-    for (const char* part : {"t = 0.266667 s: left hits right at (0.633333, ", "normal (1, 0)",
-                             "impulse on right (4, 0) N s", "left v (2, 0) -> (-2, 0) m/s, w 0 -> 0",
-                             "right v (-1, 0) -> (1, 0) m/s"})
+    for (const char* part :
+         {"t = 0.266667 s: left hits right at (0.633333, ", "normal (1, 0)", "impulse on right (4, 0) N s",
+          "left v (2, 0) -> (-2, 0) m/s, w 0 -> 0", "right v (-1, 0) -> (1, 0) m/s"})
         EXPECT_NE(text.find(part), std::string::npos) << part << " in " << text;
 }
 
@@ -314,14 +313,16 @@ TEST(Step, RouthImpactsInTheWorldGiveTheReferenceEnergies) {
     const std::pair<const char*, double> laws[] = {{"newton", 0.2754}, {"poisson", -1.0606}, {"stronge", -0.7527}};
     for (const auto& [law, dE] : laws) {
         SCOPED_TRACE(law);
-        const Scene s = parse_scene_text(
-            std::string("[scene]\ndimension = 2\nduration = 0.1\noutput_dt = 0.1\nmodel = \"routh\"\n"
-                        "restitution_law = \"") + law + "\"\nrestitution = 0.9\nfriction = 0.5\n"
-                "[[body]]\nname = \"ground\"\nshape = \"plane\"\nnormal = [0.0, 1.0]\noffset = 0.0\n"
-                "[[body]]\nname = \"rod\"\nshape = \"rectangle\"\nsize = [1.0, 1e-6]\nmass = 1.0\n"
-                "angle = 0.8726646259971648\nposition = [0.32139342182104813, 0.38302254295429383]\n"
-                "v = [-0.2, -1.0]\nw = 6.0\n",
-            "rod.toml");
+        const Scene s =
+            parse_scene_text(std::string("[scene]\ndimension = 2\nduration = 0.1\noutput_dt = 0.1\nmodel = \"routh\"\n"
+                                         "restitution_law = \"") +
+                                 law +
+                                 "\"\nrestitution = 0.9\nfriction = 0.5\n"
+                                 "[[body]]\nname = \"ground\"\nshape = \"plane\"\nnormal = [0.0, 1.0]\noffset = 0.0\n"
+                                 "[[body]]\nname = \"rod\"\nshape = \"rectangle\"\nsize = [1.0, 1e-6]\nmass = 1.0\n"
+                                 "angle = 0.8726646259971648\nposition = [0.32139342182104813, 0.38302254295429383]\n"
+                                 "v = [-0.2, -1.0]\nw = 6.0\n",
+                             "rod.toml");
         const auto events = lines(s, {true, true});
         ASSERT_EQ(events.size(), 1u);
         const auto& ev = events[0];

@@ -291,7 +291,8 @@ Reading check_report(const std::string& report, int dimension, bool latex, int d
                 bool same = v->x.size() == result->x.size();
                 for (std::size_t c = 0; same && c < v->x.size(); ++c)
                     same = std::abs(v->x[c] - result->x[c]) <= tolerance;
-                if (!same) out.wrong.push_back("\"" + trim(parts[k]) + "\" is not \"" + trim(parts.back()) + "\" in: " + line);
+                if (!same)
+                    out.wrong.push_back("\"" + trim(parts[k]) + "\" is not \"" + trim(parts.back()) + "\" in: " + line);
             }
             // A name given or worked out ("A (box): m_a = 2 kg", "r_a = ... = (0.1, 0.3) m").
             std::string name = trim(parts.front());
