@@ -1,5 +1,5 @@
 // `collide gui [LESSON|SCENARIO]`: a window with the frame `collide render` would draw at the
-// playback time, and Dear ImGui panels to change the scene and play it (cli/gui_model.h holds
+// playback time, and Dear ImGui panels to change the scene and play it (present/gui_model.h holds
 // what it shows and changes; the window is render/window.h).
 #pragma once
 

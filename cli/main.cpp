@@ -107,9 +107,9 @@ int main(int argc, char** argv) {
     render->add_option("--size", render_options.size, "WxH, or 480p, 720p, 1080p, 1440p")->capture_default_str();
     render->add_option("--fps", render_options.fps, "frames per simulated second")->capture_default_str();
     // CLI11's IsMember checks below list the values in --help and refuse others in CLI11's own
-    // words; they are handed the lists of collide::render_choices(), the names that
-    // collide::parse_render_request (cli/render_request.h) reads. That parse is the one place the
-    // options are turned into what the render does: run_render calls it.
+    // words; they are handed the lists of collide::render_choices(), the names that the readers
+    // of present/frame_spec.h read. parse_render_request (cli/render_options.h) is the one place
+    // the options are turned into what the render does: run_render calls it.
     const collide::RenderChoices& choices = collide::render_choices();
     render
         ->add_option("--quality", render_options.quality,

@@ -4,7 +4,7 @@
 // script that drives it in tests and demonstrations (`collide gui --script FILE`).
 //
 // Every change re-runs the edited scene from its start: the run is deterministic, so the same
-// settings give the same frames. The re-run happens on a worker thread (cli/background_run.h):
+// settings give the same frames. The re-run happens on a worker thread (present/background_run.h):
 // in the window (Rerun::background) an edit returns at once, the frames stay those of the last
 // complete run while the new one runs, and a newer edit cancels an older run; elsewhere
 // (Rerun::wait, the default: tests, scripts) an edit returns once its run has finished.

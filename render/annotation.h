@@ -1,7 +1,7 @@
 // What a view draws, as a list, made before anything is drawn: the bodies at their poses, every
 // arrow with the quantity it stands for, the contact points, and the labels with the text and
 // the screen box each was given. The view then draws the list and nothing else, so that tests
-// can read a picture's meaning from it (tests/render/annotation_test.cpp) and check with a few
+// can read a picture's meaning from it (tests/cli/annotation_test.cpp) and check with a few
 // pixels that the list is what was drawn. `collide render` writes the lists of its figure's
 // three panels as annotations.json (docs/commands/render.md).
 #pragma once

@@ -81,7 +81,7 @@ TEST(RenderCommand, WritesFramesStillsFigureAndData) {
     for (const char* still : {"before.png", "at.png", "after.png"})
         EXPECT_EQ(render::read_png(dir / (std::string("out/") + still)).width, 160) << still;
     const render::Image figure = render::read_png(dir / "out/figure.png");
-    // Laid out for the site's text column (cli/figures.h), scaled to the 120-pixel size: the
+    // Laid out for the site's text column (present/figures.h), scaled to the 120-pixel size: the
     // wide strips of this scene (two discs on a line) stacked, three of them.
     EXPECT_NEAR(figure.width, kColumnWidth * 120.0 / 720.0, 2.0);
     EXPECT_GT(figure.height, figure.width);

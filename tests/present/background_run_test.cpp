@@ -1,4 +1,4 @@
-// One job at a time on a worker thread (cli/background_run.h), as collide gui re-runs a scene:
+// One job at a time on a worker thread (present/background_run.h), as collide gui re-runs a scene:
 // a newer start cancels the older job and its result never comes, progress rises to 1, an
 // exception in the job is reported, and destroying the runner while a job runs joins cleanly.
 // No timing: the test and the jobs hand each other the turn through condition variables

@@ -1,4 +1,4 @@
-// What `collide gui` shows and changes, without a window (cli/gui_model.h): the run sampled as
+// What `collide gui` shows and changes, without a window (present/gui_model.h): the run sampled as
 // `collide render` samples it, playback, edits that re-run the scene (checked against the
 // closed form of the 1D collision), and the script's grammar and its located errors.
 #include "present/gui_model.h"
