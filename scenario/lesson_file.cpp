@@ -74,93 +74,74 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     L.label = lt->string("label", "the scene's label beside its variants").value_or("");
 
     // [[variant]]: the scene again with other scene-wide settings.
-    if (const toml::node* list = root.node("variant")) {
-        const toml::array* vs = list->as_array();
-        if (!vs) root.fail("variant", "expected [[variant]] tables");
-        for (std::size_t i = 0; i < vs->size(); ++i) {
-            const toml::table* t = vs->get(i)->as_table();
-            const std::string key = "variant[" + std::to_string(i + 1) + "]";
-            if (!t) root.fail("variant", key + " is not a table; write [[variant]]");
-            const TableReader v(*t, name, key);
-            v.allow_only({"label", "restitution", "friction", "model", "restitution_law", "policy"});
-            LessonVariant V{v.string("label", "the variant's label").value_or(""), L.scene};
-            if (V.label.empty()) v.fail("label", "missing key 'label' (shown under its panels)");
-            if (v.has("restitution")) {
-                const double e = *v.number("restitution", "a coefficient of restitution");
-                if (e < 0 || e > 1)
-                    v.fail("restitution", "expected a coefficient of restitution in [0, 1], got " + show(e));
-                V.scene.restitution = e;
-                for (SceneBody& b : V.scene.bodies) b.restitution.reset();  // the variant's e for every pair
-            }
-            if (v.has("friction")) {
-                const double mu = *v.number("friction", "a friction coefficient");
-                if (mu < 0) v.fail("friction", "expected a friction coefficient >= 0, got " + show(mu));
-                V.scene.friction = mu;
-                for (SceneBody& b : V.scene.bodies) b.friction.reset();
-            }
-            if (v.has("model"))
-                parse_model(
-                    read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"},
-                                "model", ""),
-                    &V.scene.model);
-            if (v.has("restitution_law")) {
-                if (V.scene.model != Model::routh)
-                    v.fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
-                parse_restitution_law(
-                    read_choice(v, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law", ""),
-                    &V.scene.restitution_law);
-            }
-            if (v.has("policy"))
-                V.scene.policy = read_choice(v, "policy", {"sequential", "simultaneous"}, "policy", "") == "sequential"
-                                     ? Policy::sequential
-                                     : Policy::simultaneous;
-            if (V.scene.model == Model::page_listing &&
-                (V.scene.dimension != 3 || V.scene.policy != Policy::sequential))
-                v.fail(v.has("model") ? "model" : "policy",
-                       "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs only "
-                       "in 3D scenes with policy = \"sequential\"");
-            L.variants.push_back(std::move(V));
+    for (const TableReader& v : root.tables("variant")) {
+        v.allow_only({"label", "restitution", "friction", "model", "restitution_law", "policy"});
+        LessonVariant V{v.string("label", "the variant's label").value_or(""), L.scene};
+        if (V.label.empty()) v.fail("label", "missing key 'label' (shown under its panels)");
+        if (v.has("restitution")) {
+            const double e = *v.number("restitution", "a coefficient of restitution");
+            if (e < 0 || e > 1)
+                v.fail("restitution", "expected a coefficient of restitution in [0, 1], got " + show(e));
+            V.scene.restitution = e;
+            for (SceneBody& b : V.scene.bodies) b.restitution.reset();  // the variant's e for every pair
         }
+        if (v.has("friction")) {
+            const double mu = *v.number("friction", "a friction coefficient");
+            if (mu < 0) v.fail("friction", "expected a friction coefficient >= 0, got " + show(mu));
+            V.scene.friction = mu;
+            for (SceneBody& b : V.scene.bodies) b.friction.reset();
+        }
+        if (v.has("model"))
+            parse_model(read_choice(v, "model", {"frictionless", "coulomb", "matrix", "stick", "page-listing", "routh"},
+                                    "model", ""),
+                        &V.scene.model);
+        if (v.has("restitution_law")) {
+            if (V.scene.model != Model::routh)
+                v.fail("restitution_law", "applies to model = \"routh\" only (the other models use Newton's law)");
+            parse_restitution_law(
+                read_choice(v, "restitution_law", {"newton", "poisson", "stronge"}, "restitution_law", ""),
+                &V.scene.restitution_law);
+        }
+        if (v.has("policy"))
+            V.scene.policy = read_choice(v, "policy", {"sequential", "simultaneous"}, "policy", "") == "sequential"
+                                 ? Policy::sequential
+                                 : Policy::simultaneous;
+        if (V.scene.model == Model::page_listing && (V.scene.dimension != 3 || V.scene.policy != Policy::sequential))
+            v.fail(v.has("model") ? "model" : "policy",
+                   "\"page-listing\" (the page's listing, 3D code answering one point at a time) runs only "
+                   "in 3D scenes with policy = \"sequential\"");
+        L.variants.push_back(std::move(V));
     }
 
     // [[figure]]: the collisions the lesson is about, with the roles a and b it gives them.
-    if (const toml::node* list = root.node("figure")) {
-        const toml::array* fs = list->as_array();
-        if (!fs) root.fail("figure", "expected [[figure]] tables");
-        for (std::size_t i = 0; i < fs->size(); ++i) {
-            const toml::table* t = fs->get(i)->as_table();
-            const std::string key = "figure[" + std::to_string(i + 1) + "]";
-            if (!t) root.fail("figure", key + " is not a table; write [[figure]]");
-            const TableReader f(*t, name, key);
-            f.allow_only({"a", "b", "collision", "caption", "touching"});
-            LessonFigure F;
-            F.key = key;
-            F.pos = f.table_pos();
-            const auto body = [&](const char* role, std::size_t* index) {
-                const std::string who = f.string(role, "a body's name").value_or("");
-                if (who.empty())
-                    f.fail(role, std::string("missing key '") + role + "' (the body the figure calls " + role + ")");
-                *index = body_named(L.scene, who, f, role);
-                return who;
-            };
-            F.a = body("a", &F.ia);
-            F.b = body("b", &F.ib);
-            if (F.ia == F.ib) f.fail("b", "a and b are the same body '" + F.a + "'");
-            const long long k = f.integer("collision", "which collision of a and b, from 1").value_or(1);
-            if (k < 1 || k > 1000000)
-                f.fail("collision", "expected a collision number from 1, got " + std::to_string(k));
-            F.collision = static_cast<int>(k);
-            F.caption = f.string("caption", "the figure's caption (text)").value_or("");
-            F.touching = f.boolean("touching").value_or(false);
-            for (const LessonFigure& G : L.figures) {
-                if ((G.ia == F.ib && G.ib == F.ia))
-                    f.fail("a", G.key + " calls '" + G.a + "' a and '" + G.b +
-                                    "' b: one lesson gives a pair of bodies one pair of roles");
-                if (G.ia == F.ia && G.ib == F.ib && G.collision == F.collision)
-                    f.fail("collision", "the same collision as " + G.key);
-            }
-            L.figures.push_back(std::move(F));
+    for (const TableReader& f : root.tables("figure")) {
+        f.allow_only({"a", "b", "collision", "caption", "touching"});
+        LessonFigure F;
+        F.key = f.prefix();
+        F.pos = f.table_pos();
+        const auto body = [&](const char* role, std::size_t* index) {
+            const std::string who = f.string(role, "a body's name").value_or("");
+            if (who.empty())
+                f.fail(role, std::string("missing key '") + role + "' (the body the figure calls " + role + ")");
+            *index = body_named(L.scene, who, f, role);
+            return who;
+        };
+        F.a = body("a", &F.ia);
+        F.b = body("b", &F.ib);
+        if (F.ia == F.ib) f.fail("b", "a and b are the same body '" + F.a + "'");
+        const long long k = f.integer("collision", "which collision of a and b, from 1").value_or(1);
+        if (k < 1 || k > 1000000) f.fail("collision", "expected a collision number from 1, got " + std::to_string(k));
+        F.collision = static_cast<int>(k);
+        F.caption = f.string("caption", "the figure's caption (text)").value_or("");
+        F.touching = f.boolean("touching").value_or(false);
+        for (const LessonFigure& G : L.figures) {
+            if ((G.ia == F.ib && G.ib == F.ia))
+                f.fail("a", G.key + " calls '" + G.a + "' a and '" + G.b +
+                                "' b: one lesson gives a pair of bodies one pair of roles");
+            if (G.ia == F.ia && G.ib == F.ib && G.collision == F.collision)
+                f.fail("collision", "the same collision as " + G.key);
         }
+        L.figures.push_back(std::move(F));
     }
 
     // [penalty]: the first collision again with a spring-damper contact (1D).
@@ -195,22 +176,14 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
 
     parse_vary(root, table, L);
 
-    if (const toml::node* list = root.node("question")) {
-        const toml::array* qs = list->as_array();
-        if (!qs) root.fail("question", "expected [[question]] tables");
-        constexpr int kMaxWhatIfs = 20;
-        int what_ifs = 0;
-        for (std::size_t i = 0; i < qs->size(); ++i) {
-            const toml::table* t = qs->get(i)->as_table();
-            const std::string key = "question[" + std::to_string(i + 1) + "]";
-            if (!t) root.fail("question", key + " is not a table; write [[question]]");
-            const TableReader q(*t, name, key);
-            // Each what-if reads the whole file again (and its answer runs the scene again):
-            // a bound keeps a lesson's cost linear in its size.
-            if (q.has("what_if") && ++what_ifs > kMaxWhatIfs)
-                q.fail("what_if", "a lesson may have at most " + std::to_string(kMaxWhatIfs) + " what-if questions");
-            L.questions.push_back(parse_question(q, L));
-        }
+    constexpr int kMaxWhatIfs = 20;
+    int what_ifs = 0;
+    for (const TableReader& q : root.tables("question")) {
+        // Each what-if reads the whole file again (and its answer runs the scene again):
+        // a bound keeps a lesson's cost linear in its size.
+        if (q.has("what_if") && ++what_ifs > kMaxWhatIfs)
+            q.fail("what_if", "a lesson may have at most " + std::to_string(kMaxWhatIfs) + " what-if questions");
+        L.questions.push_back(parse_question(q, L));
     }
     return L;
 }

@@ -70,16 +70,9 @@ namespace lesson_parse {
 
 // [[vary]]: the ranges a worksheet draws each student's values from.
 void parse_vary(const TableReader& root, const toml::table& file, Lesson& L) {
-    const toml::node* list = root.node("vary");
-    if (!list) return;
-    const toml::array* vs = list->as_array();
-    if (!vs) root.fail("vary", "expected [[vary]] tables");
-    for (std::size_t i = 0; i < vs->size(); ++i) {
-        const toml::table* t = vs->get(i)->as_table();
-        const std::string key = "vary[" + std::to_string(i + 1) + "]";
-        if (!t) root.fail("vary", key + " is not a table; write [[vary]]");
-        LessonVary V = parse_vary_entry(TableReader(*t, root.file(), key), file, L);
-        V.where = key;
+    for (const TableReader& entry : root.tables("vary")) {
+        LessonVary V = parse_vary_entry(entry, file, L);
+        V.where = entry.prefix();
         L.vary.push_back(std::move(V));
     }
 }

@@ -292,14 +292,8 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
     const toml::node* list = root.node("body");
     const toml::array* bodies = list ? list->as_array() : nullptr;
     if (!bodies || bodies->empty()) root.fail(list ? "body" : "", "expected one or more [[body]] tables");
-    std::vector<TableReader> readers;
-    for (std::size_t i = 0; i < bodies->size(); ++i) {
-        const toml::table* t = bodies->get(i)->as_table();
-        const std::string key = "body[" + std::to_string(i + 1) + "]";
-        if (!t) root.fail("body", key + " is not a table; write [[body]]");
-        readers.emplace_back(*t, name, key);
-        s.bodies.push_back(read_body(readers.back(), s.dimension, i));
-    }
+    const std::vector<TableReader> readers = root.tables("body");
+    for (std::size_t i = 0; i < readers.size(); ++i) s.bodies.push_back(read_body(readers[i], s.dimension, i));
     for (std::size_t j = 0; j < s.bodies.size(); ++j) {
         for (std::size_t i = 0; i < j; ++i) {
             const SceneBody &a = s.bodies[i], &b = s.bodies[j];
@@ -315,27 +309,19 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
         }
     }
     // [[mark]]: points of bodies to draw (after the bodies: they name one).
-    if (const toml::node* marks = root.node("mark")) {
-        const toml::array* ms = marks->as_array();
-        if (!ms) root.fail("mark", "expected [[mark]] tables");
-        for (std::size_t i = 0; i < ms->size(); ++i) {
-            const toml::table* t = ms->get(i)->as_table();
-            const std::string key = "mark[" + std::to_string(i + 1) + "]";
-            if (!t) root.fail("mark", key + " is not a table; write [[mark]]");
-            const TableReader m(*t, name, key);
-            m.allow_only({"body", "at", "name", "velocity"});
-            if (s.dimension == 3) m.fail("", "marked points are drawn in 1D and 2D diagrams only");
-            ViewMark v;
-            const std::string who = m.string("body", "a body's name").value_or("");
-            if (who.empty()) m.fail("body", "missing key 'body' (the body the point belongs to)");
-            v.body = body_named(s, who, m, "body");
-            if (!m.has("at")) m.fail("at", "missing key 'at' (the point in the body's frame, m)");
-            v.at = *read_vec(m, "at", s.dimension, "m");
-            v.name = m.string("name", "the point's name").value_or("");
-            if (v.name.empty()) m.fail("name", "missing key 'name' (drawn beside the point)");
-            v.velocity = m.boolean("velocity").value_or(false);
-            if (view) view->marks.push_back(std::move(v));
-        }
+    for (const TableReader& m : root.tables("mark")) {
+        m.allow_only({"body", "at", "name", "velocity"});
+        if (s.dimension == 3) m.fail("", "marked points are drawn in 1D and 2D diagrams only");
+        ViewMark v;
+        const std::string who = m.string("body", "a body's name").value_or("");
+        if (who.empty()) m.fail("body", "missing key 'body' (the body the point belongs to)");
+        v.body = body_named(s, who, m, "body");
+        if (!m.has("at")) m.fail("at", "missing key 'at' (the point in the body's frame, m)");
+        v.at = *read_vec(m, "at", s.dimension, "m");
+        v.name = m.string("name", "the point's name").value_or("");
+        if (v.name.empty()) m.fail("name", "missing key 'name' (drawn beside the point)");
+        v.velocity = m.boolean("velocity").value_or(false);
+        if (view) view->marks.push_back(std::move(v));
     }
     return s;
 }

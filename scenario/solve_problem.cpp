@@ -128,20 +128,8 @@ SolveBody read_body(const TableReader& root, const std::string& key, int dim, bo
     }
 
     body.b1 = Body1{mass, is_static, x.x(), v.x()};
-    body.b2.mass = mass;
-    body.b2.is_static = is_static;
-    body.b2.inertia = I2;
-    body.b2.angle = angle;
-    body.b2.position = x.head<2>();
-    body.b2.v = v.head<2>();
-    body.b2.w = w.z();
-    body.b3.mass = mass;
-    body.b3.is_static = is_static;
-    body.b3.inertia = I3;
-    body.b3.orientation = q;
-    body.b3.position = x;
-    body.b3.v = v;
-    body.b3.w = w;
+    body.b2 = Body2{mass, is_static, I2, angle, x.head<2>(), v.head<2>(), w.z()};
+    body.b3 = Body3{mass, is_static, I3, q, x, v, w};
     return body;
 }
 

@@ -286,6 +286,21 @@ std::optional<TableReader> TableReader::table(const std::string& key) const {
     return TableReader(*t, file_, full_key(key));
 }
 
+std::vector<TableReader> TableReader::tables(const std::string& key) const {
+    std::vector<TableReader> out;
+    const toml::node* list = table_.get(key);
+    if (!list) return out;
+    const toml::array* items = list->as_array();
+    if (!items) fail(key, "expected [[" + key + "]] tables");
+    for (std::size_t i = 0; i < items->size(); ++i) {
+        const toml::table* t = items->get(i)->as_table();
+        const std::string entry = key + "[" + std::to_string(i + 1) + "]";
+        if (!t) fail(key, entry + " is not a table; write [[" + key + "]]");
+        out.emplace_back(*t, file_, full_key(entry));
+    }
+    return out;
+}
+
 // A vector of the problem's dimension, zero-padded to 3D: 1D a number, 2D [x, y], 3D [x, y, z].
 std::optional<Vec3> read_vec(const TableReader& t, const std::string& key, int dim, const std::string& unit) {
     if (dim == 1) {

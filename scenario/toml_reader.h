@@ -53,9 +53,13 @@ public:
     std::optional<Mat3> matrix3(const std::string& key, const std::string& what) const;
     const toml::node* node(const std::string& key) const;
     std::optional<TableReader> table(const std::string& key) const;
+    // The [[key]] tables in order, each named key[1], key[2], ... in messages; none when the
+    // key is absent. Refuses a key that is not an array of tables.
+    std::vector<TableReader> tables(const std::string& key) const;
 
     [[noreturn]] void fail(const std::string& key, const std::string& message) const;
     const std::string& file() const { return file_; }
+    const std::string& prefix() const { return prefix_; }  // "a" for [a], "body[2]" for a [[body]]
 
 private:
     double checked_number(const toml::node& n, const std::string& key, const std::string& what) const;

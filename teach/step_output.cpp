@@ -342,24 +342,21 @@ std::vector<double> output_times(const Scene& s) {
     return t;
 }
 
-std::string state_json(const Scene& s, double t, const std::vector<Body1>& b, std::size_t only) {
+template <class Body>
+std::string state_json(const Scene& s, double t, const std::vector<Body>& b, std::size_t only) {
     return state_json_of(s, t, b, only);
 }
-std::string state_json(const Scene& s, double t, const std::vector<Body2>& b, std::size_t only) {
-    return state_json_of(s, t, b, only);
-}
-std::string state_json(const Scene& s, double t, const std::vector<Body3>& b, std::size_t only) {
-    return state_json_of(s, t, b, only);
-}
-std::string state_text(const Scene& s, double t, const std::vector<Body1>& b, std::size_t only) {
+template <class Body>
+std::string state_text(const Scene& s, double t, const std::vector<Body>& b, std::size_t only) {
     return state_text_of(s, t, b, only);
 }
-std::string state_text(const Scene& s, double t, const std::vector<Body2>& b, std::size_t only) {
-    return state_text_of(s, t, b, only);
-}
-std::string state_text(const Scene& s, double t, const std::vector<Body3>& b, std::size_t only) {
-    return state_text_of(s, t, b, only);
-}
+// The bodies of the three dimensions.
+template std::string state_json(const Scene&, double, const std::vector<Body1>&, std::size_t);
+template std::string state_json(const Scene&, double, const std::vector<Body2>&, std::size_t);
+template std::string state_json(const Scene&, double, const std::vector<Body3>&, std::size_t);
+template std::string state_text(const Scene&, double, const std::vector<Body1>&, std::size_t);
+template std::string state_text(const Scene&, double, const std::vector<Body2>&, std::size_t);
+template std::string state_text(const Scene&, double, const std::vector<Body3>&, std::size_t);
 
 std::string event_json(const Scene& s, const Event1& e, bool energy_gain) {
     const std::string& a = s.bodies[e.a].name;

@@ -34,9 +34,9 @@ std::vector<double> output_times(const Scene& scene);
 
 // One state or one event, as `collide step` prints them; `only` limits a state to one body.
 constexpr std::size_t kAllBodies = static_cast<std::size_t>(-1);
-std::string state_json(const Scene& s, double t, const std::vector<Body1>& bodies, std::size_t only = kAllBodies);
-std::string state_json(const Scene& s, double t, const std::vector<Body2>& bodies, std::size_t only = kAllBodies);
-std::string state_json(const Scene& s, double t, const std::vector<Body3>& bodies, std::size_t only = kAllBodies);
+// (Body: Body1, Body2 or Body3.)
+template <class Body>
+std::string state_json(const Scene& s, double t, const std::vector<Body>& bodies, std::size_t only = kAllBodies);
 // `energy_gain`: the event's instant left its bodies with more kinetic energy than before
 // (energy_gains): JSON "energy_gain": true, the text line ends with a warning.
 std::string event_json(const Scene& s, const Event1& e, bool energy_gain);
@@ -53,8 +53,7 @@ std::vector<bool> energy_gains(const Scene& s, const std::vector<Event1>& events
 std::vector<bool> energy_gains(const Scene& s, const std::vector<Event2>& events);
 std::vector<bool> energy_gains(const Scene& s, const std::vector<Event3>& events);
 // A state as lines for a reader: the time, one line per body, the totals (all bodies only).
-std::string state_text(const Scene& s, double t, const std::vector<Body1>& bodies, std::size_t only = kAllBodies);
-std::string state_text(const Scene& s, double t, const std::vector<Body2>& bodies, std::size_t only = kAllBodies);
-std::string state_text(const Scene& s, double t, const std::vector<Body3>& bodies, std::size_t only = kAllBodies);
+template <class Body>
+std::string state_text(const Scene& s, double t, const std::vector<Body>& bodies, std::size_t only = kAllBodies);
 
 }  // namespace collide
