@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <set>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -96,7 +97,15 @@ void expect_no_pair_missed(const Boxes<D>& boxes, const std::vector<std::set<std
 template <class T>
 class BroadPhaseTest : public ::testing::Test {};
 using Dimensions = ::testing::Types<std::integral_constant<int, 2>, std::integral_constant<int, 3>>;
-TYPED_TEST_SUITE(BroadPhaseTest, Dimensions);
+// Named 2d and 3d (an explicit name generator: clang -Wpedantic refuses the macro's empty
+// variadic argument).
+struct DimensionName {
+    template <class T>
+    static std::string GetName(int) {
+        return std::to_string(T::value) + "d";
+    }
+};
+TYPED_TEST_SUITE(BroadPhaseTest, Dimensions, DimensionName);
 
 TYPED_TEST(BroadPhaseTest, FindsEveryOverlappingPairOfRandomBoxes) {
     constexpr int D = TypeParam::value;
