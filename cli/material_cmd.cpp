@@ -1,14 +1,13 @@
 #include "cli/material_cmd.h"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <iostream>
+#include <ostream>
 
 #include "cli/exit_code.h"
+#include "cli/terminal.h"
 #include "cli/render_options.h"
 #include "cli/signals.h"
 #include "present/site.h"
@@ -82,7 +81,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             const bool video = request.video.has_value();
             // Build beside DIR, rename at the end.
             const fs::path& tmp = staged.begin();
-            const bool terminal = !opt.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+            const bool terminal = !opt.quiet && cli::progress_watched(err);
 
             const auto progress = [&](const SiteProgress& p) {
                 if (!terminal) return;

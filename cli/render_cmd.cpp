@@ -1,13 +1,13 @@
 #include "cli/render_cmd.h"
 
 #include <sys/resource.h>
-#include <unistd.h>
 
 #include <cstdio>
-#include <iostream>
+#include <ostream>
 
 #include "cli/exit_code.h"
 #include "cli/signals.h"
+#include "cli/terminal.h"
 
 namespace collide {
 
@@ -42,7 +42,7 @@ int run_render(const RenderOptions& o, std::ostream& out, std::ostream& err) {
         [&] {
             RenderRequest request = parse_render_request(o);
             // Progress only where someone watches it: the process's stderr, a terminal.
-            const bool shown = !request.quiet && err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+            const bool shown = !request.quiet && cli::progress_watched(err);
             const cli::SignalGuard signals;
             const bool summary = !request.quiet;
             request.quiet = !shown;

@@ -1,14 +1,13 @@
 #include "cli/worksheet_cmd.h"
 
-#include <unistd.h>
-
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <iostream>
+#include <ostream>
 #include <optional>
 
 #include "cli/exit_code.h"
+#include "cli/terminal.h"
 #include "present/staged_dir.h"
 #include "present/worksheets.h"
 #include "render/video.h"
@@ -47,7 +46,7 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
             throw InputError("", {}, "--students", "expected 1 to 1000 students, got " + std::to_string(opt.students));
         const std::vector<Lesson> lessons = load_worksheet_lessons(opt.lessons);
         StagedDirectory staged(opt.out_dir, opt.force);
-        const bool terminal = err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+        const bool terminal = cli::progress_watched(err);
         // Every student of every lesson is drawn and answered before anything is written: a
         // range that cannot be answered leaves no directory behind.
         std::vector<std::vector<StudentSheet>> all;

@@ -97,6 +97,15 @@ double read_fps(double fps) {
     return fps;
 }
 
+FrameSpec read_frame_spec(const std::string& size, double fps, const std::string& quality, const std::string& view) {
+    FrameSpec frame;
+    read_render_size(size, &frame.width, &frame.height);
+    frame.fps = read_fps(fps);
+    frame.quality = read_quality(quality);
+    frame.view = read_view(view);
+    return frame;
+}
+
 Quality read_quality(const std::string& name) {
     if (const Quality* q = find_choice(kQualities, name)) return *q;
     throw InputError(kCommand, {}, "--quality", "expected low, medium or high, got '" + name + "'");

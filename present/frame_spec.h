@@ -61,6 +61,9 @@ const RenderChoices& render_choices();
 bool parse_render_size(const std::string& text, int* width, int* height);
 // --fps: frames per simulated second in (0, 100000].
 double read_fps(double fps);
+// --size, --fps, --quality and --view, read in that order (the first wrong one is named): what
+// `collide render` and the Python module's render_figure share.
+FrameSpec read_frame_spec(const std::string& size, double fps, const std::string& quality, const std::string& view);
 // --quality: low, medium or high.
 Quality read_quality(const std::string& name);
 // --backend: osmesa or egl (when built).

@@ -21,10 +21,7 @@ using html::svg_plot;
 using html::worked_html;
 
 std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
-std::string vec(const Vec3& v, int dim) {
-    if (dim == 1) return n(v.x());
-    return "(" + n(v.x()) + ", " + n(v.y()) + (dim == 3 ? ", " + n(v.z()) : "") + ")";
-}
+std::string vec(const Vec3& v, int dim) { return notation::components_text(v, dim, n); }
 std::string spin(const Vec3& w, int dim) { return dim == 2 ? n(w.z()) : vec(w, 3); }
 
 // Three significant figures, a true minus sign, no "-0": numbers in sentences.

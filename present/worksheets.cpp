@@ -29,10 +29,7 @@ std::string given(double x) { return notation::true_minus(notation::num_text(std
 // An answer in the key: 4 significant figures, a true minus.
 std::string sig4(double x) { return notation::sig_text(x, 4); }
 
-std::string vec_text(const Vec3& v, int dim) {
-    if (dim == 1) return given(v.x());
-    return "(" + given(v.x()) + ", " + given(v.y()) + (dim == 3 ? ", " + given(v.z()) : "") + ")";
-}
+std::string vec_text(const Vec3& v, int dim) { return notation::components_text(v, dim, given); }
 
 // A key answer: the number or vector to 4 significant figures, with its unit.
 std::string answer_text(const LessonAnswer& a, int dim) {

@@ -152,10 +152,7 @@ std::optional<py::bytes> figure_png_bytes(const py::object& source, const std::s
     FrameSpec frame;
     render::GlBackend gl = render::GlBackend::osmesa;
     translating([&] {
-        read_render_size(size, &frame.width, &frame.height);
-        frame.fps = read_fps(fps);
-        frame.quality = read_quality(quality);
-        frame.view = read_view(view);
+        frame = read_frame_spec(size, fps, quality, view);
         gl = read_backend(backend);
         return 0;
     });

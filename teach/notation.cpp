@@ -141,6 +141,11 @@ std::string true_minus(std::string s) {
     return s;
 }
 
+std::string components_text(const Vec3& v, int dim, std::string (*number)(double)) {
+    if (dim == 1) return number(v.x());
+    return "(" + number(v.x()) + ", " + number(v.y()) + (dim == 3 ? ", " + number(v.z()) : "") + ")";
+}
+
 std::string num_data(double x) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.10g", x);

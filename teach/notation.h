@@ -38,6 +38,9 @@ std::string num_answer(double x);
 std::string sig_text(double x, int digits);
 // A leading '-' as a true minus sign (U+2212): numbers set in running text.
 std::string true_minus(std::string s);
+// A vector of a problem's dimension in running text, each component written by `number`:
+// 1D "x", 2D "(x, y)", 3D "(x, y, z)".
+std::string components_text(const Vec3& v, int dim, std::string (*number)(double));
 // Ten significant digits (printf %.10g, "-0" kept): the data files (data.csv, events.csv)
 // and numbers quoted back in messages.
 std::string num_data(double x);
