@@ -21,7 +21,8 @@ using html::svg_plot;
 using html::worked_html;
 
 std::string n(double x) { return notation::num_text(std::abs(x) < 1e-12 ? 0.0 : x); }
-std::string vec(const Vec3& v, int dim) { return notation::components_text(v, dim, n); }
+// Noise below the vector's own precision shown as 0 (notation::StudentNumbers).
+std::string vec(const Vec3& v, int dim) { return notation::vec(v, dim).txt; }
 std::string spin(const Vec3& w, int dim) { return dim == 2 ? n(w.z()) : vec(w, 3); }
 
 // Three significant figures, a true minus sign, no "-0": numbers in sentences.
