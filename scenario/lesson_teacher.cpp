@@ -15,8 +15,7 @@ namespace {
 
 std::string required_text(const TableReader& t, const std::string& key, const std::string& what) {
     const std::string s = t.string(key, what).value_or("");
-    if (s.find_first_not_of(" \t\r\n") == std::string::npos)
-        t.fail(key, "missing key '" + key + "' (" + what + ")");
+    if (s.find_first_not_of(" \t\r\n") == std::string::npos) t.fail(key, "missing key '" + key + "' (" + what + ")");
     return s;
 }
 

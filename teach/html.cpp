@@ -80,16 +80,31 @@ std::string strong(const std::string& html) {
     return out + html.substr(at);
 }
 
+// A paragraph's text: `code` as it is written (commands, file names: no subscripts), the rest
+// in our notation, **bold**.
+std::string inline_text(const std::string& text) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t open; (open = text.find('`', at)) != std::string::npos;) {
+        const std::size_t close = text.find('`', open + 1);
+        if (close == std::string::npos) break;
+        out += strong(math(text.substr(at, open - at))) + "<code>" + escape(text.substr(open + 1, close - open - 1)) +
+               "</code>";
+        at = close + 1;
+    }
+    return out + strong(math(text.substr(at)));
+}
+
 // Paragraphs separated by blank lines; in a paragraph, lines that start with "- " are the items
-// of a list (an item goes on over the lines after it that do not start one); **bold**.
+// of a list (an item goes on over the lines after it that do not start one); **bold**, `code`.
 std::string paragraphs(const std::string& text) {
     std::string out, para;
     std::vector<std::string> items;
     const auto flush = [&] {
-        if (!para.empty()) out += "<p>" + strong(math(para)) + "</p>\n";
+        if (!para.empty()) out += "<p>" + inline_text(para) + "</p>\n";
         if (!items.empty()) {
             out += "<ul>\n";
-            for (const std::string& item : items) out += "<li>" + strong(math(item)) + "</li>\n";
+            for (const std::string& item : items) out += "<li>" + inline_text(item) + "</li>\n";
             out += "</ul>\n";
         }
         para.clear();
