@@ -89,6 +89,26 @@ struct LessonFigure {
     std::string key;             // "figure[K]"
 };
 
+// [teacher] (docs/formats/lesson-files.md, "The teacher's page"): what the teacher's page of a
+// lesson says beyond the lesson's own text and answers. Bundled lessons must have it (the tests
+// refuse one without); a user's lesson may leave it out, and its teacher's page says so.
+struct LessonMisconception {
+    std::string belief;    // what a student may think, in the student's words
+    std::string evidence;  // what the lesson shows against it (a figure, a number, a panel)
+};
+struct LessonClassQuestion {
+    std::string question;    // to ask the class
+    std::string listen_for;  // what a good answer contains (optional)
+};
+struct LessonTeacher {
+    std::string level;                       // e.g. "Final year of school or first year of university"
+    std::vector<std::string> prerequisites;  // what the students should know before it
+    int minutes = 0;                         // the time it needs in class
+    std::vector<LessonMisconception> misconceptions;
+    std::vector<LessonClassQuestion> ask;  // questions to ask in class
+    std::string live;                      // how to run it live: what to move, what to look for
+};
+
 // [penalty] (1D lessons, docs/formats/lesson-files.md): the first collision again with a penalty
 // (spring-damper) contact instead of the impulse (engine/penalty.h, teach/lesson_penalty.h).
 struct LessonPenalty {
@@ -129,10 +149,14 @@ struct Lesson {
     std::string title;
     std::string section;  // the page's section it teaches
     std::vector<std::string> goals;
-    std::string explanation;  // plain language, Markdown paragraphs
+    // The givens, shown before the predictions ("The set-up"): what is there and how it moves,
+    // nothing the questions ask. Markdown paragraphs; may be empty (a user's lesson).
+    std::string setup;
+    std::string explanation;  // plain language, Markdown paragraphs; shown after the figures
     // For the teacher, not the students (commands to run, files to read): the site shows it
     // in its own section, left out of the student's print.
     std::string teacher_notes;
+    std::optional<LessonTeacher> teacher;  // [teacher]: the teacher's page (may be absent)
     std::vector<LessonQuestion> questions;
     Scene scene;
     std::string label;  // the scene's own label beside its variants (e.g. "e = 0.5")

@@ -325,7 +325,7 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
         for (const std::string& g : L.goals) out << "- " << g << "\n";
         out << "\n";
     }
-    if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
+    if (!L.setup.empty()) out << "## The set-up\n\n" << L.setup << "\n\n";
     const auto answer_at = [&](std::size_t i) { return i < answers.size() ? &answers[i] : nullptr; };
     std::vector<std::size_t> predict, others;
     for (std::size_t i = 0; i < L.questions.size(); ++i)
@@ -357,6 +357,8 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
             write_answer(q, answer_at(predict[k]), "Check your prediction", out);
         }
     }
+    // The explanation after the figures and the predictions checked, as the lesson page has it.
+    if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
     if (!others.empty()) {
         out << "## Questions\n\n";
         for (std::size_t k = 0; k < others.size(); ++k) {

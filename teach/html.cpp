@@ -67,17 +67,58 @@ std::string math(const std::string& text) {
     return out;
 }
 
-// Paragraphs separated by blank lines.
+// **bold** as <strong> in text math() has made (which leaves * alone).
+std::string strong(const std::string& html) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t open; (open = html.find("**", at)) != std::string::npos;) {
+        const std::size_t close = html.find("**", open + 2);
+        if (close == std::string::npos || close == open + 2) break;
+        out += html.substr(at, open - at) + "<strong>" + html.substr(open + 2, close - open - 2) + "</strong>";
+        at = close + 2;
+    }
+    return out + html.substr(at);
+}
+
+// A paragraph's text: `code` as it is written (commands, file names: no subscripts), the rest
+// in our notation, **bold**.
+std::string inline_text(const std::string& text) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t open; (open = text.find('`', at)) != std::string::npos;) {
+        const std::size_t close = text.find('`', open + 1);
+        if (close == std::string::npos) break;
+        out += strong(math(text.substr(at, open - at))) + "<code>" + escape(text.substr(open + 1, close - open - 1)) +
+               "</code>";
+        at = close + 1;
+    }
+    return out + strong(math(text.substr(at)));
+}
+
+// Paragraphs separated by blank lines; in a paragraph, lines that start with "- " are the items
+// of a list (an item goes on over the lines after it that do not start one); **bold**, `code`.
 std::string paragraphs(const std::string& text) {
     std::string out, para;
-    std::istringstream in(text);
+    std::vector<std::string> items;
     const auto flush = [&] {
-        if (!para.empty()) out += "<p>" + math(para) + "</p>\n";
+        if (!para.empty()) out += "<p>" + inline_text(para) + "</p>\n";
+        if (!items.empty()) {
+            out += "<ul>\n";
+            for (const std::string& item : items) out += "<li>" + inline_text(item) + "</li>\n";
+            out += "</ul>\n";
+        }
         para.clear();
+        items.clear();
     };
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos) {
             flush();
+        } else if (line.compare(first, 2, "- ") == 0) {
+            items.push_back(line.substr(first + 2));
+        } else if (!items.empty()) {
+            items.back() += ' ' + line.substr(first);
         } else {
             if (!para.empty()) para += ' ';
             para += line;
