@@ -2,6 +2,7 @@
 
 #include <ostream>
 
+#include "engine/run_error.h"
 #include "scenario/input_error.h"
 
 namespace collide::cli {
@@ -14,6 +15,9 @@ int run_command(std::ostream& err, const std::function<int()>& body,
         err << "collide: interrupted: " << (interrupted_note ? interrupted_note(e) : "stopped") << "\n";
         return kExitInterrupted;
     } catch (const InputError& e) {
+        err << "collide: error: " << e.what() << "\n";
+        return kExitBadInput;
+    } catch (const RunError& e) {
         err << "collide: error: " << e.what() << "\n";
         return kExitBadInput;
     } catch (const std::runtime_error& e) {

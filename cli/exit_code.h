@@ -1,6 +1,8 @@
 // The one mapping from what a command throws to its exit code and its one line on stderr
 // (every subcommand's --help and docs/commands/ list these codes):
 //   InputError          2    "collide: error: FILE:LINE:COL: key: message"  (nothing written)
+//   RunError            2    "collide: error: message" (a scene the engine cannot run as asked:
+//                            a state no longer finite, work beyond the budget; engine/run_error.h)
 //   Interrupted         130  "collide: interrupted: " and the command's note (complete files only)
 //   std::runtime_error  1    "collide: message"
 //   other exceptions    1    "collide: internal error: message"

@@ -13,7 +13,9 @@
 #include <vector>
 
 #include "teach/step_output.h"
+#include "scenario/input_error.h"
 #include "scenario/scene_file.h"
+#include "scenario/toml_reader.h"
 #include "teach/notation.h"
 
 namespace collide {
@@ -324,6 +326,26 @@ private:
     std::vector<Event> events_;   // every collision up to now
 };
 
+// One command line of at most kMaxInputBytes, read up to that many bytes (a stream without
+// line breaks, /dev/zero, is not read whole): false at the end of the input. A longer line or
+// a NUL byte (not text) ends the session with InputError (exit 2).
+bool read_command(std::istream& in, std::string* line, int number) {
+    line->clear();
+    for (;;) {
+        const int c = in.get();
+        if (c == std::char_traits<char>::eof()) return !line->empty();
+        if (c == '\n') return true;
+        if (c == '\0')
+            throw InputError("<stdin>", {number, static_cast<int>(line->size()) + 1}, "",
+                             "not text (a NUL byte); expected commands, one a line");
+        if (line->size() == kMaxInputBytes)
+            throw InputError(
+                "<stdin>", {number, 1}, "",
+                "a command line longer than 1 MiB (stopped reading there); commands are one short line each");
+        line->push_back(static_cast<char>(c));
+    }
+}
+
 template <int D>
 void loop(const Scene& scene, const InteractiveOptions& options, std::istream& in, std::ostream& out,
           std::ostream& err) {
@@ -334,9 +356,10 @@ void loop(const Scene& scene, const InteractiveOptions& options, std::istream& i
             << " s. help lists the commands.\n";
         session.print(session.now());
     }
+    int number = 0;
     for (std::string line;;) {
         if (options.prompt) out << "collide> " << std::flush;
-        if (!std::getline(in, line)) break;
+        if (!read_command(in, &line, ++number)) break;
         const Words words = split(line);
         if (words.empty()) continue;
         if (words[0] == "quit" || words[0] == "exit") return;

@@ -14,7 +14,9 @@ struct InteractiveOptions {
 };
 
 // Reads commands from in until `quit` or the end of input. Replies go to out, errors in
-// commands to err; a failed command changes nothing and the loop goes on.
+// commands to err; a failed command changes nothing and the loop goes on. Input that is not
+// commands (a NUL byte, a line longer than 1 MiB) ends it with InputError (exit 2), read no
+// further than that.
 void run_interactive(const Scene& scene, const InteractiveOptions& options, std::istream& in, std::ostream& out,
                      std::ostream& err);
 

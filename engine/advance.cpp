@@ -12,6 +12,7 @@
 #include <unordered_set>
 #include <utility>
 
+#include "engine/run_error.h"
 #include "engine/toi.h"
 
 namespace collide {
@@ -208,13 +209,26 @@ void World<D>::advance_to(double t_end, std::vector<Event<D>>* events, const Imp
             // state untouched (the next advance goes on from here).
             loop_.time = t_end;
             loop_.bodies_now = bodies_at(t_end);
+            check_finite(loop_.bodies_now, t_end);
             break;
         }
         for (std::size_t i = 0; i < bodies_.size(); ++i) drift(i, loop_.substep_end);
+        check_finite(bodies_, loop_.substep_end);
         loop_.time = loop_.substep_end;
         loop_.open = false;
         loop_.heap.clear();
     }
+}
+
+// A state that is no longer finite (an overflow, an infinite impulse) never leaves the world
+// as if it were one: it is caught at the end of the substep that made it.
+template <int D>
+void World<D>::check_finite(const std::vector<Body>& bodies, double t) const {
+    for (std::size_t i = 0; i < bodies.size(); ++i)
+        if (!bodies[i].state_finite())
+            throw RunError("the state of '" + scene_.bodies[i].name + "' is no longer finite by t = " + run_number(t) +
+                           " s (a number overflowed: the scene's speeds, spins or sizes are beyond what the run "
+                           "can follow)");
 }
 
 template <int D>
@@ -280,10 +294,12 @@ void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on
 
 template double World<2>::predict_pair(std::size_t, std::size_t, double, double);
 template void World<2>::predict(std::size_t, double);
+template void World<2>::check_finite(const std::vector<Body>&, double) const;
 template void World<2>::advance_to(double, std::vector<Event<2>>*, const ImpactHook&);
 template void World<2>::begin_substep(std::vector<Event<2>>*, const ImpactHook&);
 template double World<3>::predict_pair(std::size_t, std::size_t, double, double);
 template void World<3>::predict(std::size_t, double);
+template void World<3>::check_finite(const std::vector<Body>&, double) const;
 template void World<3>::advance_to(double, std::vector<Event<3>>*, const ImpactHook&);
 template void World<3>::begin_substep(std::vector<Event<3>>*, const ImpactHook&);
 

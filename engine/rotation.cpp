@@ -1,7 +1,10 @@
 #include "engine/rotation.h"
 
 #include <cmath>
+#include <cstdint>
+#include <string>
 
+#include "engine/run_error.h"
 #include "engine/trig.h"
 
 namespace collide {
@@ -51,30 +54,39 @@ Quat exp_map(const Vec3& phi) {
     return Quat(half.cos, v.x(), v.y(), v.z());
 }
 
-void rotate_free(Body3* body, double dt, const RotationSettings& settings) {
-    if (body->is_static || dt == 0.0) return;
+std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings) {
+    if (body->is_static || dt == 0.0) return 0;
     const Mat3& Ib = body->inertia;
     if (Ib == Mat3::Identity() * Ib(0, 0)) {
         // A sphere's inertia is isotropic: w stays constant and one exact turn does.
         body->orientation = (exp_map(body->w * dt) * body->orientation).normalized();
-        return;
+        return 1;
     }
     const Mat3 inv_Ib = inertia_pseudo_inverse(Ib);
     Quat q = body->orientation.normalized();
     Vec3 Lb = body->inertia * (q.conjugate() * body->w);
     const Vec3 wb = inv_Ib * Lb;
-    if (wb.norm() == 0.0) return;
-    const int n = std::max(1, static_cast<int>(std::ceil(wb.norm() * std::abs(dt) / settings.max_angle_per_step)));
-    const double h = dt / n;
+    if (wb.norm() == 0.0) return 0;
+    // The count as a double first: a spin of 1e9 rad/s for 0.01 s is 2e9 steps, more than an
+    // int holds (a cast would be undefined; it gave one giant step and NaN). The worlds refuse
+    // such a run before it starts (RunBudget, engine/scene.h); called directly, a count no
+    // 64-bit integer holds exactly is refused here.
+    const double steps = std::max(1.0, std::ceil(wb.norm() * std::abs(dt) / settings.max_angle_per_step));
+    if (!(steps <= 0x1p53))
+        throw RunError("a free rotation of " + run_number(wb.norm()) + " rad/s for " + run_number(dt) +
+                       " s would take " + run_number(steps) + " steps");
+    const auto n = static_cast<std::uint64_t>(steps);
+    const double h = dt / steps;
     // Yoshida's triple jump: symmetric steps of g1 h, g2 h, g1 h (g2 < 0) give fourth order.
     const double c = 1.2599210498948732, g1 = 1.0 / (2.0 - c), g2 = -c / (2.0 - c);  // c = cbrt 2
-    for (int i = 0; i < n; ++i) {
+    for (std::uint64_t i = 0; i < n; ++i) {
         midpoint_step(inv_Ib, g1 * h, &q, &Lb);
         midpoint_step(inv_Ib, g2 * h, &q, &Lb);
         midpoint_step(inv_Ib, g1 * h, &q, &Lb);
     }
     body->orientation = q;
     body->w = q * (inv_Ib * Lb);
+    return n;
 }
 
 }  // namespace collide

@@ -9,6 +9,8 @@
 // itself (how fast an asymmetric body tumbles, when a Dzhanibekov flip happens).
 #pragma once
 
+#include <cstdint>
+
 #include "engine/body.h"
 
 namespace collide {
@@ -20,8 +22,10 @@ struct RotationSettings {
 // The rotation by the vector phi (axis phi/|phi|, angle |phi| rad) as a unit quaternion.
 Quat exp_map(const Vec3& phi);
 
-// Turns the body for dt seconds with no torque: updates orientation and w (world frame).
-// Static bodies and bodies at rest are left alone.
-void rotate_free(Body3* body, double dt, const RotationSettings& settings = {});
+// Turns the body for dt seconds with no torque: updates orientation and w (world frame), and
+// returns the number of steps taken (each turns the body by at most max_angle_per_step).
+// Static bodies and bodies at rest are left alone (0 steps). Throws RunError
+// (engine/run_error.h) if the steps would number more than 2^53.
+std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings = {});
 
 }  // namespace collide

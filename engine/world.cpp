@@ -16,6 +16,7 @@
 
 #include "engine/respond.h"
 #include "engine/rotation.h"
+#include "engine/run_error.h"
 #include "engine/toi.h"
 
 namespace collide {
@@ -47,9 +48,11 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
     // Under the (small, constant) torque of resting forces: w(t) = w + alpha t, the orientation
     // turned by the midpoint spin of short steps.
     const double turned = (b->w.norm() + alpha.norm() * dt) * dt;
-    const int n = std::max(1, static_cast<int>(std::ceil(turned / 0.005)));
-    const double h = dt / n;
-    for (int k = 0; k < n; ++k) {
+    const double steps = std::max(1.0, std::ceil(turned / 0.005));  // (as in rotate_free: no int)
+    if (!(steps <= 0x1p53)) throw RunError("a turn of " + run_number(turned) + " rad in one step");
+    const auto n = static_cast<std::uint64_t>(steps);
+    const double h = dt / steps;
+    for (std::uint64_t k = 0; k < n; ++k) {
         const Vec3 phi = (b->w + alpha * ((k + 0.5) * h)) * h;
         if (phi.squaredNorm() > 0.0) b->orientation = (exp_map(phi) * b->orientation).normalized();
     }
@@ -249,6 +252,11 @@ void World<D>::build_grid(double t0, double t1) {
         if (bodies_[i].is_static) continue;
         Vec a, b;
         swept_box(i, t0, t1, &a, &b);
+        // A box beyond the doubles (a body about to overflow them) would size a grid without
+        // end: the run stops here, as at a state that is no longer finite (check_finite).
+        if (!a.allFinite() || !b.allFinite())
+            throw RunError("'" + scene_.bodies[i].name + "' moves beyond the range of numbers after t = " +
+                           run_number(t0) + " s (the scene's speeds or distances are beyond what the run can follow)");
         moving.push_back({a, b});
     }
     grid_.build(moving);

@@ -85,7 +85,8 @@ public:
     using ImpactHook = std::function<void(double t)>;
 
     // Moves to time t (>= time()), resolving every impact on the way; appends the events in
-    // time order. Throws std::runtime_error if more than kMaxEventsPerAdvance happen.
+    // time order. Throws std::runtime_error if more than kMaxEventsPerAdvance happen, RunError
+    // (engine/run_error.h) if a body's state is no longer finite.
     // Where advance_to is asked to stop does not shape the run: substeps are chosen from the
     // bodies alone, and an advance that ends inside one pauses there (bodies() is then each
     // body's state at t along its motion, the substep's predictions and forces kept), so a
@@ -166,6 +167,10 @@ private:
         std::size_t i = 0;
         Body body, compound;
     };
+
+    // Every body's state finite at t (the end of a substep, or where an advance pauses);
+    // else throws RunError naming the first body that is not and the instant.
+    void check_finite(const std::vector<Body>& bodies, double t) const;
 
     // Motion.
     static void move(Body* b, const Track& k, double dt);

@@ -9,6 +9,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "engine/run_error.h"
+
 namespace collide {
 
 namespace {
@@ -106,7 +108,7 @@ void World1::advance_to(double target, std::vector<Event1>* events, const Impact
             throw std::runtime_error("more than 10^6 impacts in one output step at t = " + std::to_string(time_) +
                                      " s");
         const double horizon = target - time_;
-        if (horizon <= 0.0) return;
+        if (horizon <= 0.0) return check_finite();
         double earliest = kNever;
         for (std::size_t i = 0; i < n; ++i)
             for (std::size_t j = i + 1; j < n; ++j)
@@ -115,11 +117,19 @@ void World1::advance_to(double target, std::vector<Event1>* events, const Impact
         if (earliest == kNever) {
             drift(horizon);
             time_ = target;
-            return;
+            return check_finite();
         }
         drift(earliest);
         time_ += earliest;
     }
+}
+
+// As the 2D and 3D worlds (World<D>::check_finite): no state that is not finite leaves.
+void World1::check_finite() const {
+    for (std::size_t i = 0; i < bodies_.size(); ++i)
+        if (!bodies_[i].state_finite())
+            throw RunError("the state of '" + scene_.bodies[i].name +
+                           "' is no longer finite by t = " + run_number(time_) + " s (a number overflowed)");
 }
 
 void World1::resolve_contacts(std::vector<Event1>* events) {

@@ -71,6 +71,7 @@ private:
     double gap(std::size_t i, std::size_t j) const;  // right i's face to left j's face
     double first_contact(std::size_t i, std::size_t j, double horizon) const;
     void drift(double dt);
+    void check_finite() const;                       // every body finite at time_; else RunError
     void update_support();                           // sets supported_ (see above)
     double acceleration(std::size_t i) const;        // m/s^2 along x
     std::vector<std::size_t> left_to_right() const;  // block indices by position

@@ -314,11 +314,9 @@ std::vector<GuiAction> parse_gui_script_text(const std::string& text, const std:
 }
 
 std::vector<GuiAction> parse_gui_script(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path, {}, "", "cannot read the script file");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return parse_gui_script_text(text.str(), path);
+    std::string name;
+    const std::string text = read_input_file(path, &name);  // bounded as every input file
+    return parse_gui_script_text(text, name);
 }
 
 bool run_script_action(const GuiAction& a, const std::string& file, GuiModel* model, GuiToggles* toggles) {

@@ -65,7 +65,11 @@ std::vector<Lesson> load_lessons(const std::string& dir) {
 
 std::string resolve_lesson(const std::string& id_or_file, const std::string& dir) {
     std::error_code ec;
-    if (fs::is_regular_file(id_or_file, ec) || id_or_file == "-") return id_or_file;
+    // Any file that exists is read as one (a device, a FIFO: the reader says what is wrong with
+    // it); so is a directory named as a path (with a '/'), which the reader refuses as such.
+    if (id_or_file == "-" || (fs::exists(id_or_file, ec) && !fs::is_directory(id_or_file, ec)) ||
+        (id_or_file.find('/') != std::string::npos && fs::is_directory(id_or_file, ec)))
+        return id_or_file;
     // The file named after the id (NN-id.toml) when it holds that lesson: then one file is
     // read, and a mistake in another lesson does not stop this one.
     for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) {

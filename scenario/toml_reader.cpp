@@ -2,10 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <iostream>
 #include <iterator>
 #include <sstream>
+
+#include <sys/stat.h>
 
 #include <Eigen/Eigenvalues>
 
@@ -13,8 +16,8 @@ namespace collide {
 
 namespace {
 
-constexpr std::size_t kMaxFileBytes = 1 << 20;  // collision and scenario files are small
-constexpr double kMaxMagnitude = 1e12;          // beyond this, squares lose all precision
+constexpr std::size_t kMaxFileBytes = kMaxInputBytes;  // collision and scenario files are small
+constexpr double kMaxMagnitude = 1e12;                 // beyond this, squares lose all precision
 
 SourcePos to_pos(const toml::source_region& r) {
     return SourcePos{static_cast<int>(r.begin.line), static_cast<int>(r.begin.column)};
@@ -114,25 +117,35 @@ std::string closest_match(const std::string& word, const std::vector<std::string
     return best;
 }
 
+std::string read_bounded(std::istream& in, const std::string& name) {
+    std::string text;
+    char chunk[1 << 16];
+    while (in) {
+        in.read(chunk, sizeof chunk);
+        const auto got = static_cast<std::size_t>(in.gcount());
+        if (std::memchr(chunk, '\0', got))
+            throw InputError(name, {}, "", "not a text file (it contains NUL bytes); expected TOML");
+        if (text.size() + got > kMaxFileBytes)
+            throw InputError(name, {}, "",
+                             "the input is too large: longer than 1 MiB (stopped reading there); input files are "
+                             "limited to 1 MiB");
+        text.append(chunk, got);
+    }
+    if (in.bad()) throw InputError(name, {}, "", "cannot read the file");
+    return text;
+}
+
 std::string read_input_file(const std::string& path, std::string* display_name) {
     const std::string name = path == "-" ? "<stdin>" : path;
     *display_name = name;
-    std::string text;
-    if (path == "-") {
-        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-    } else {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) throw InputError(name, {}, "", "cannot open the file (does it exist?)");
-        in.seekg(0, std::ios::end);
-        const auto size = static_cast<std::size_t>(std::max<std::streamoff>(0, in.tellg()));
-        if (size > kMaxFileBytes)
-            throw InputError(
-                name, {}, "",
-                "the file is too large (" + std::to_string(size) + " bytes); input files are limited to 1 MiB");
-        in.seekg(0);
-        text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    }
-    return text;
+    if (path == "-") return read_bounded(std::cin, name);
+    // A directory opens as a stream on Linux (its "size" the largest offset there is).
+    struct stat st {};
+    if (::stat(path.c_str(), &st) == 0 && S_ISDIR(st.st_mode))
+        throw InputError(name, {}, "", "is a directory; expected a file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(name, {}, "", "cannot open the file (does it exist?)");
+    return read_bounded(in, name);
 }
 
 toml::table parse_toml_text(const std::string& text, const std::string& name) {

@@ -2,6 +2,7 @@
 // line and column, the full key ("a.mass") and what was expected.
 #pragma once
 
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -13,9 +14,17 @@
 
 namespace collide {
 
+// Input files are at most this long (collision, scenario and lesson files, GUI scripts,
+// standard input).
+constexpr std::size_t kMaxInputBytes = 1 << 20;  // 1 MiB
+
 // Reads a whole input file ("-" is stdin, shown as "<stdin>" in messages). Throws InputError
-// when it cannot be read or is larger than 1 MiB.
+// when it cannot be read, is a directory, holds a NUL byte (not text) or is longer than
+// kMaxInputBytes: the limit is checked while reading, so a stream without end (/dev/zero,
+// `yes |`, a FIFO) is refused after at most 1 MiB and the first 64 KiB holding a NUL.
 std::string read_input_file(const std::string& path, std::string* display_name);
+// The same for an open stream, `name` the file name in messages.
+std::string read_bounded(std::istream& in, const std::string& name);
 // Parses TOML with the checks every input gets: text (no NUL bytes), not empty, at most 1 MiB.
 // `name` is the file name used in messages. Throws InputError.
 toml::table parse_toml_text(const std::string& text, const std::string& name);

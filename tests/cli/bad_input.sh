@@ -83,5 +83,36 @@ check "<stdin>" "2:1: scene: missing key 'duration'" step - <<<$'\n[scene]\ndime
 check "<stdin>" "scene.duration: expected the simulated time in s > 0" \
   render - -o "$tmp/render" --quiet <"$dir/scene/zero-duration.toml"
 
+# Input without end, or not a file (issue 34): every reader stops at the 1 MiB limit while
+# reading (or at the first NUL byte), under a 1 GiB address-space limit and within 5 s (about
+# 0.2 s each here): /dev/zero, `yes |` on stdin, a FIFO, a directory, the interactive mode.
+printf '#!/usr/bin/env bash\nulimit -v 1048576\nexec timeout 20 "%s" "$@"\n' "$collide" >"$tmp/limited"
+chmod +x "$tmp/limited"
+real=$collide
+collide=$tmp/limited
+bounded() {  # bounded FILE EXPECTED [collide args...]: check, and within 5 s
+  local start=$SECONDS
+  check "$@"
+  if ((SECONDS - start > 5)); then
+    failures=$((failures + 1))
+    echo "FAIL ${*:3} : took $((SECONDS - start)) s"
+  fi
+}
+cradle=$dir/../../lessons/scenes/cradle-1d.toml
+for cmd in solve step compare; do
+  bounded /dev/zero "not a text file" $cmd /dev/zero
+  bounded "<stdin>" "too large ... 1 MiB" $cmd - < <(yes)
+done
+bounded /dev/zero "not a text file" render /dev/zero -o "$tmp/render" --quiet
+bounded /dev/zero "not a text file" worksheet /dev/zero -o "$tmp/render" --students 3
+bounded "$tmp" "is a directory" solve "$tmp"
+bounded "$tmp" "is a directory" step "$tmp"
+mkfifo "$tmp/fifo"
+(yes >"$tmp/fifo" 2>/dev/null &)
+bounded "$tmp/fifo" "too large" solve "$tmp/fifo"
+bounded "<stdin>" "not text (a NUL byte)" step --interactive "$cradle" </dev/zero
+bounded "<stdin>" "longer than 1 MiB" step --interactive "$cradle" < <(yes | tr -d '\n')
+collide=$real
+
 echo "$count cases, $failures failed"
 [[ $failures -eq 0 ]]

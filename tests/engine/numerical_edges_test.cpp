@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include "engine/rotation.h"
+#include "engine/run_error.h"
 #include "engine/world.h"
 #include "engine/world1d.h"
 #include "tests/scenes/world_scenes.h"
@@ -225,6 +227,72 @@ TEST(NumericalEdges, FarFromTheOriginTheCollisionDegradesGracefully) {
         EXPECT_NEAR(h.t, one.t, tol * one.t);
         EXPECT_NEAR((h.impulse - one.impulse).norm(), 0.0, tol * one.impulse.norm());
     }
+}
+
+// ---- No state that is not finite leaves a world ---------------------------------------------
+
+// Checks that f throws RunError whose message holds every piece of `names`.
+template <class F>
+void expect_run_error(F f, const std::vector<std::string>& names) {
+    try {
+        f();
+        ADD_FAILURE() << "no RunError";
+    } catch (const RunError& e) {
+        for (const std::string& n : names) EXPECT_NE(std::string(e.what()).find(n), std::string::npos) << e.what();
+    }
+}
+
+// A body flying at 1e308 m/s from 1.79e308 m leaves the doubles (DBL_MAX = 1.798e308) within
+// its first 0.01 s (1000 substeps of 1e-5 s, each 1e303 m further): each world stops there with
+// RunError naming the body and the instant (2D, 3D: when its swept box leaves the doubles, a
+// substep before its state would), instead of returning an infinite state or sizing a grid
+// without end.
+TEST(NumericalEdges, AStateThatOverflowsStopsTheRunNamingBodyAndInstant) {
+    {
+        Scene s = empty_scene(2);
+        s.bodies.push_back(disc("runaway", 0.1, 1.0, Vec2(1.79e308, 0.0), Vec2(1e308, 0.0)));
+        World2 w(s);
+        std::vector<Event2> events;
+        expect_run_error([&] { w.advance_to(0.01, &events); }, {"'runaway'", "t = "});
+    }
+    {
+        Scene s = empty_scene(3);
+        s.bodies.push_back(scenes::sphere("runaway", 0.1, 1.0, Vec3(1.79e308, 0, 0), Vec3(1e308, 0, 0)));
+        World3 w(s);
+        std::vector<Event3> events;
+        expect_run_error([&] { w.advance_to(0.01, &events); }, {"'runaway'", "t = "});
+    }
+    {
+        Scene s = empty_scene(1);
+        SceneBody b;
+        b.name = "runaway";
+        b.shape = "block";
+        b.length = 0.1;
+        b.body1 = Body1{1.0, false, 1.79e308, 1e308};
+        s.bodies.push_back(b);
+        World1 w(s);
+        std::vector<Event1> events;
+        expect_run_error([&] { w.advance_to(1.0, &events); }, {"'runaway'", "no longer finite"});
+    }
+}
+
+// A free rotation's step count is a 64-bit count: one of more than 2^31 steps (a 3D spin of
+// 1.07e9 rad/s over a 0.01 s substep) overflowed an int and became one giant step, NaN.
+// Beyond 2^53 steps (here 1e12 rad/s for 1000 s at 1e-6 rad a step: 1e21) it is refused.
+TEST(NumericalEdges, AFreeRotationOfTooManyStepsIsRefusedNotNaN) {
+    Body3 b;
+    b.inertia = Vec3(1.0, 2.0, 3.0).asDiagonal();
+    b.w = Vec3(1e12, 1.0, 0.0);
+    RotationSettings fine;
+    fine.max_angle_per_step = 1e-6;
+    expect_run_error([&] { rotate_free(&b, 1000.0, fine); }, {"steps"});
+    // Below that, the count it reports is the turn over the step length: 2048 rad at 2^-7 rad.
+    Body3 c = b;
+    c.w = Vec3(2048.0, 0.0, 0.0);
+    RotationSettings coarse;
+    coarse.max_angle_per_step = 0x1p-7;
+    EXPECT_EQ(rotate_free(&c, 1.0, coarse), 262144u);
+    EXPECT_TRUE(c.state_finite());
 }
 
 }  // namespace

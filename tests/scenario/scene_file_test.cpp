@@ -1,11 +1,14 @@
 // Scenario files: what a valid file yields (masses from density, a polygon's centre of mass,
 // pair rules) and that every kind of mistake is refused with its file, line and key.
 #include <cmath>
+#include <sstream>
+#include <streambuf>
 
 #include <gtest/gtest.h>
 
 #include "scenario/input_error.h"
 #include "scenario/scene_file.h"
+#include "scenario/toml_reader.h"
 
 namespace collide {
 namespace {
@@ -236,6 +239,47 @@ TEST(SceneFile, MessagesQuotingALineBreakStayOnOneLine) {
 
 TEST(SceneFile, MissingSceneTable) {
     EXPECT_THROW(parse_scene_text("[[body]]\nshape = \"disc\"\n", "x.toml"), InputError);
+}
+
+// ---- Input without end ---------------------------------------------------------------------
+
+// A stream that never ends ('#', a comment, for ever), counting what is read of it.
+class Endless : public std::streambuf {
+public:
+    std::size_t served = 0;
+
+protected:
+    int_type underflow() override {
+        buffer_.assign(4096, '#');
+        setg(buffer_.data(), buffer_.data(), buffer_.data() + buffer_.size());
+        served += buffer_.size();
+        return traits_type::to_int_type('#');
+    }
+
+private:
+    std::string buffer_;
+};
+
+// The 1 MiB limit is checked while reading: an endless stream is refused having been read no
+// further than the limit and one 64 KiB chunk (it used to be read whole: 3 GB in 30 s of
+// /dev/zero). A file of exactly 1 MiB is read; one byte more is refused.
+TEST(InputFiles, AStreamWithoutEndIsRefusedAtTheLimitWhileReading) {
+    Endless endless;
+    std::istream in(&endless);
+    try {
+        read_bounded(in, "<stdin>");
+        ADD_FAILURE() << "no InputError";
+    } catch (const InputError& e) {
+        EXPECT_EQ(e.file(), "<stdin>");
+        EXPECT_NE(e.message().find("1 MiB"), std::string::npos) << e.what();
+    }
+    EXPECT_LE(endless.served, kMaxInputBytes + (1u << 16) + 4096);
+    std::istringstream exact(std::string(kMaxInputBytes, '#'));
+    EXPECT_EQ(read_bounded(exact, "f").size(), kMaxInputBytes);
+    std::istringstream over(std::string(kMaxInputBytes + 1, '#'));
+    EXPECT_THROW(read_bounded(over, "f"), InputError);
+    std::istringstream binary(std::string("a = 1\n\0", 7));
+    EXPECT_THROW(read_bounded(binary, "f"), InputError);
 }
 
 }  // namespace
