@@ -89,7 +89,6 @@ const char* kQuestionScript = R"(<script>
 </script>
 )";
 
-
 // Where a question goes on the student's page: a prediction before the figures, "Check
 // yourself" (numbers and choices about the lesson's own run) after the worked example, "What
 // if" (why-questions and numbers of a changed scene) last.

@@ -79,8 +79,8 @@ std::string refusal(const std::string& text, int line, const std::string& key) {
 TEST(LessonValues, TheGridReachesHi) {
     // 0.1 does not divide 1 exactly in doubles (1 / 0.1 = 10.000000000000002 is fine, but
     // 0.3 / 0.1 = 2.9999999999999996): both grids end at hi.
-    const Lesson L = parse(vary("scene", "restitution", "[0.0, 1.0]", "0.1") +
-                           vary("A", "mass", "[1.0, 4.0]", "0.1") + vary("B", "mass", "[0.7, 1.0]", "0.1"));
+    const Lesson L = parse(vary("scene", "restitution", "[0.0, 1.0]", "0.1") + vary("A", "mass", "[1.0, 4.0]", "0.1") +
+                           vary("B", "mass", "[0.7, 1.0]", "0.1"));
     ASSERT_EQ(L.vary.size(), 3u);
     EXPECT_EQ(L.vary[0].count(), 11u);
     EXPECT_EQ(L.vary[0].value(10), 1.0);

@@ -150,8 +150,8 @@ TEST(LessonInputs, EveryInputHasASliderThatReachesItsMax) {
             const int d = std::max({decimals(lo), decimals(hi), decimals(step), decimals(value)});
             ASSERT_LE(d, 12) << L.id << " " << v.name() << ": " << lo << " " << hi << " " << step;
             const long long s = scaled(step, d);
-            EXPECT_EQ((scaled(hi, d) - scaled(lo, d)) % s, 0) << L.id << " " << v.name() << ": max " << hi
-                                                                << " is not min + k step";
+            EXPECT_EQ((scaled(hi, d) - scaled(lo, d)) % s, 0)
+                << L.id << " " << v.name() << ": max " << hi << " is not min + k step";
             EXPECT_EQ((scaled(value, d) - scaled(lo, d)) % s, 0) << L.id << " " << v.name();
         }
         std::size_t sliders = 0;
