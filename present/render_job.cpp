@@ -275,10 +275,30 @@ void write_data_files(const RenderRequest& rq, const Scene& scene, const SceneRu
     render::write_file_atomic(rq.out_dir + "/data.json", json.str());
 }
 
-void write_worked_example(const std::string& dir, const WorkedExample& worked) {
+// Where the run resolved the collision with other contacts of the same instant (`instant`: the
+// collision as the run gave it), the calculation is labelled a simplified one and the run's
+// results follow it (the site's page does the same).
+void write_worked_example(const std::string& dir, const WorkedExample& worked, const CollisionInstant* instant) {
     const notation::StudentNumbers student;  // a lesson's: 4 figures, no floating-point noise
     std::ostringstream md;
+    const Solution run = instant ? as_resolved(worked.problem, worked.solution, *instant) : worked.solution;
+    const bool differs = resolved_differs(worked.solution, run);
     write_markdown(worked.problem, worked.solution, md);
+    if (differs) {  // under the title
+        std::string text = md.str();
+        const std::size_t title_end = text.find('\n') + 1;
+        text.insert(title_end, "\n**A simplified calculation: " + worked.problem.a.name + " and " +
+                                   worked.problem.b.name +
+                                   " alone.** In the run other contacts act at the same instant, and the world "
+                                   "solves them together; the numbers of the run follow the calculation.\n");
+        md.str(text);
+        md.seekp(0, std::ios_base::end);
+    }
+    if (differs) {
+        md << "\n## The two alone and the run\n\n| | the two alone (above) | the run |\n|---|---|---|\n";
+        for (const ResultBeside& r : results_beside(worked.problem, worked.solution, run))
+            md << "| " << r.what << " (" << r.unit << ") | " << r.alone << " | " << r.run << " |\n";
+    }
     render::write_file_atomic(dir + "/worked-example.md", md.str());
 }
 
@@ -380,7 +400,7 @@ Written write_stage(const RenderRequest& rq, const Loaded& in, const Ran& ran, c
         err << "collide render: no collision in " << in.scene.duration
             << " s: before.png, at.png, after.png, figure.png and worked-example.md are not written\n";
     write_data_files(rq, in.scene, ran.run);
-    if (a.worked) write_worked_example(rq.out_dir, *a.worked);
+    if (a.worked) write_worked_example(rq.out_dir, *a.worked, a.moments ? &a.moments->instant : nullptr);
     Written out;
     out.seconds = write_pictures(rq, in, ran.run, a, err, stop);
     if (in.lesson) write_lesson(rq.out_dir, in, ran, a);

@@ -1,5 +1,6 @@
 #include "present/site_pages.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -136,7 +137,7 @@ struct Shown {
         // window allows (style.css, figure.wide), so that their labels stay readable.
         const std::size_t k = static_cast<std::size_t>(&f - r().figures.data());
         const bool wide = k < b.figure_widths.size() && b.figure_widths[k] > kColumnWidth;
-        const std::string alt = figure_alt(f.problem, f.solution, f.instant.t);
+        const std::string alt = figure_alt(f.problem, as_resolved(f.problem, f.solution, f.instant), f.instant.t);
         const std::string what = f.caption.empty()
                                      ? (&f == &r().figures.front() && L().figures.empty()
                                             ? "Before, at and after the first collision"
@@ -187,6 +188,27 @@ struct Shown {
         return o.str();
     }
 
+    // One collision worked out. Where the run resolved it with other contacts of the same
+    // instant, the two-body calculation is labelled a simplified one and the run's numbers
+    // stand beside its results (one truth per page: the figure, the table and the answers
+    // give the run's).
+    std::string worked_with_run(const SolveProblem& P, const Solution& alone, const Solution& run,
+                                const std::string& world_note) const {
+        if (!resolved_differs(alone, run)) return worked_html(P, alone, world_note);
+        std::ostringstream o;
+        o << "<p class=\"simplified\"><strong>A simplified calculation: " << escape(P.a.name) << " and "
+          << escape(P.b.name)
+          << " alone.</strong> In the run other contacts act at the same instant, and the world solves them "
+             "together; the numbers of the run follow the calculation.</p>\n"
+          << worked_html(P, alone, "");
+        o << "<table class=\"beside\">\n<tr><th></th><th>the two alone (above)</th><th>the run</th></tr>\n";
+        for (const ResultBeside& r : results_beside(P, alone, run))
+            o << "<tr><td>" << escape(r.what) << " (" << escape(r.unit) << ")</td><td>" << escape(r.alone)
+              << "</td><td>" << escape(r.run) << "</td></tr>\n";
+        o << "</table>\n";
+        return o.str();
+    }
+
     // Every collision of the lesson worked out: the figures' (the first, then the others with
     // their figures when `with_figures`), the run's later ones folded (printed: one line each),
     // the tables of the bodies before and after and of the variants.
@@ -208,11 +230,13 @@ struct Shown {
              "at the contact point, and j = P · n is its size along n; u = v<sub>pb</sub> − v<sub>pa</sub>; SI "
              "units. Model: "
           << escape(model_name(P.model)) << ".</p>\n";
-        o << worked_html(P, S, R.world_note);
+        const Solution run = R.figures.empty() ? S : as_resolved(P, S, R.figures.front().instant);
+        o << worked_with_run(P, S, run, R.world_note);
         for (std::size_t k = 1; k < R.figures.size(); ++k) {
             const RenderReport::Shown& f = R.figures[k];
             o << "<h3>The collision of " << escape(f.problem.a.name) << " and " << escape(f.problem.b.name) << "</h3>\n"
-              << (with_figures ? figure(f, true) : "") << worked_html(f.problem, f.solution, f.world_note);
+              << (with_figures ? figure(f, true) : "")
+              << worked_with_run(f.problem, f.solution, as_resolved(f.problem, f.solution, f.instant), f.world_note);
         }
         if (!R.later.empty()) {
             const std::size_t worked = R.later.size() + R.figures.size();
@@ -222,15 +246,20 @@ struct Shown {
               << ". Open one to see it step by step.</p>\n";
             for (const RenderReport::Later& c : R.later) {
                 const int dc = c.problem.dimension;
+                const Solution ran = as_resolved(c.problem, c.solution, c.instant);
                 o << "<details class=\"later\"><summary>" << escape(c.problem.a.name) << " and "
                   << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t)) << " s, impulse on "
-                  << escape(c.problem.b.name) << " "
-                  << escape(dc == 1 ? sig3(c.solution.P.x()) : sig3(c.solution.P.norm())) << " N s</summary>\n"
-                  << worked_html(c.problem, c.solution, c.world_note) << "</details>\n";
+                  << escape(c.problem.b.name) << " " << escape(dc == 1 ? sig3(ran.P.x()) : sig3(ran.P.norm()))
+                  << " N s in the run</summary>\n"
+                  << worked_with_run(c.problem, c.solution, ran, c.world_note) << "</details>\n";
             }
         }
-        // The table: the two bodies before and after.
-        o << "<h3>Before and after</h3>\n<table>\n<tr><th>body</th><th>m (kg)</th><th>v before (m/s)</th>"
+        // The table: the two bodies before and after, as the run resolved them.
+        o << "<h3>Before and after</h3>\n";
+        if (resolved_differs(S, run))
+            o << "<p class=\"note\">As the run resolved the collision, with the other contacts of the same instant "
+                 "(the numbers the figure and the answers show).</p>\n";
+        o << "<table>\n<tr><th>body</th><th>m (kg)</th><th>v before (m/s)</th>"
              "<th>v after (m/s)</th>";
         if (d > 1) o << "<th>ω before (rad/s)</th><th>ω after (rad/s)</th>";
         o << "</tr>\n";
@@ -240,15 +269,15 @@ struct Shown {
             if (d > 1) o << "<td>" << escape(spin(B.b3.w, d)) << "</td><td>" << escape(spin(w, d)) << "</td>";
             o << "</tr>\n";
         };
-        row(P.a, S.va, S.wa);
-        row(P.b, S.vb, S.wb);
-        o << "</table>\n<table>\n<tr><th>totals</th><th>before</th><th>after</th></tr>\n"
-          << "<tr><td>momentum (kg m/s)</td><td>" << escape(vec(S.p_before, d)) << "</td><td>"
-          << escape(vec(S.p_after, d)) << "</td></tr>\n";
+        row(P.a, run.va, run.wa);
+        row(P.b, run.vb, run.wb);
+        o << "</table>\n<table>\n<tr><th>totals of the two</th><th>before</th><th>after</th></tr>\n"
+          << "<tr><td>momentum (kg m/s)</td><td>" << escape(vec(run.p_before, d)) << "</td><td>"
+          << escape(vec(run.p_after, d)) << "</td></tr>\n";
         if (d > 1)
-            o << "<tr><td>angular momentum about the origin (kg m²/s)</td><td>" << escape(spin(S.L_before, d))
-              << "</td><td>" << escape(spin(S.L_after, d)) << "</td></tr>\n";
-        o << "<tr><td>kinetic energy (J)</td><td>" << escape(n(S.ke_before)) << "</td><td>" << escape(n(S.ke_after))
+            o << "<tr><td>angular momentum about the origin (kg m²/s)</td><td>" << escape(spin(run.L_before, d))
+              << "</td><td>" << escape(spin(run.L_after, d)) << "</td></tr>\n";
+        o << "<tr><td>kinetic energy (J)</td><td>" << escape(n(run.ke_before)) << "</td><td>" << escape(n(run.ke_after))
           << "</td></tr>\n</table>\n";
         if (!R.variants.empty()) {
             o << "<h3>The panels side by side, in numbers</h3>\n"

@@ -204,4 +204,32 @@ std::string world_note(const Scene& scene, const CollisionInstant& c, const Vec3
     return "The world resolved several contact points here; its total impulse is P = " + P + " N\u00B7s";
 }
 
+Solution as_resolved(const SolveProblem& P, const Solution& alone, const CollisionInstant& c) {
+    return with_outcome(P, alone, c.impulse, c.va_after, c.wa_after, c.vb_after, c.wb_after);
+}
+
+bool resolved_differs(const Solution& alone, const Solution& run) {
+    const double scale =
+        std::max({alone.P.norm(), run.P.norm(), alone.va.norm(), alone.vb.norm(), run.va.norm(), run.vb.norm(),
+                  alone.wa.norm(), alone.wb.norm(), run.wa.norm(), run.wb.norm(), 1e-300});
+    const double gap = std::max({(alone.P - run.P).norm(), (alone.va - run.va).norm(), (alone.wa - run.wa).norm(),
+                                 (alone.vb - run.vb).norm(), (alone.wb - run.wb).norm()});
+    return gap > 1e-6 * scale;
+}
+
+std::vector<ResultBeside> results_beside(const SolveProblem& P, const Solution& alone, const Solution& run) {
+    const int d = P.dimension;
+    const auto vec = [d](const Vec3& v) { return notation::vec(v, d).txt; };
+    const auto spin = [d](const Vec3& w) { return d == 2 ? notation::num_text(w.z()) : notation::vec(w, 3).txt; };
+    std::vector<ResultBeside> out;
+    out.push_back({"impulse P on " + P.b.name, "N s", vec(alone.P), vec(run.P)});
+    out.push_back({P.a.name + "’s velocity after", "m/s", vec(alone.va), vec(run.va)});
+    if (d > 1) out.push_back({P.a.name + "’s spin after", "rad/s", spin(alone.wa), spin(run.wa)});
+    out.push_back({P.b.name + "’s velocity after", "m/s", vec(alone.vb), vec(run.vb)});
+    if (d > 1) out.push_back({P.b.name + "’s spin after", "rad/s", spin(alone.wb), spin(run.wb)});
+    out.push_back(
+        {"kinetic energy of the two after", "J", notation::num_text(alone.ke_after), notation::num_text(run.ke_after)});
+    return out;
+}
+
 }  // namespace collide

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "scenario/solve_problem.h"
+#include "teach/solve.h"
 #include "engine/record.h"
 #include "engine/scene.h"
 #include "engine/world.h"
@@ -72,5 +73,22 @@ std::optional<PairCollision> find_pair_collision(const Recording<D>& rec, std::s
 // here; its total impulse is P = ..."; "" otherwise. (The page's listing model is left
 // alone: its J is not what B receives, erratum 7, as its steps say.)
 std::string world_note(const Scene& scene, const CollisionInstant& c, const Vec3& formula_impulse);
+
+// Collision `c` as the run resolved it: `alone` (solve() of collision_problem(scene, c), the
+// two bodies alone) with the run's impulse on b and the velocities just after, the checks
+// recomputed (with_outcome). Where other contacts act at the same instant (a tower, a row of
+// dominoes) the two differ.
+Solution as_resolved(const SolveProblem& problem, const Solution& alone, const CollisionInstant& c);
+// Whether they differ beyond rounding: by more than 1e-6 of the largest impulse or velocity
+// (m/s and rad/s taken alike). Then a worked example is a simplified calculation, and the
+// run's numbers are shown beside its results.
+bool resolved_differs(const Solution& alone, const Solution& run);
+// The results side by side, for a table: what, its unit, the two alone, the run (student
+// numbers: 4 figures, no noise). Impulse on b, each body's velocity and (2D, 3D) spin after,
+// the two bodies' kinetic energy after.
+struct ResultBeside {
+    std::string what, unit, alone, run;
+};
+std::vector<ResultBeside> results_beside(const SolveProblem& problem, const Solution& alone, const Solution& run);
 
 }  // namespace collide

@@ -108,6 +108,44 @@ void set_velocity(Body3* body, const Vec3& v, const Vec3& w) {
     body->w = w;
 }
 
+// The relative contact velocity after the impulse, and the checks with the engine's
+// diagnostics on copies of the bodies, before and after.
+void after_impulse(const SolveProblem& P, Solution* out) {
+    Solution& s = *out;
+    s.u_after = (s.vb + s.wb.cross(s.rb)) - (s.va + s.wa.cross(s.ra));
+    s.un_after = s.u_after.dot(s.n);
+    SolveBody a = P.a, b = P.b;
+    auto check = [&](Vec3* p, Vec3* L, Vec3* Lp, double* ke) {
+        if (P.dimension == 3) {
+            const std::vector<Body3> bodies = {a.b3, b.b3};
+            const Totals3 t = totals(bodies, P.about), tp = totals(bodies, P.point);
+            *p = t.momentum;
+            *L = t.angular_momentum;
+            *Lp = tp.angular_momentum;
+            *ke = t.kinetic_energy;
+        } else if (P.dimension == 2) {
+            const std::vector<Body2> bodies = {a.b2, b.b2};
+            const Totals2 t = totals(bodies, P.about.head<2>()), tp = totals(bodies, P.point.head<2>());
+            *p = embed(t.momentum);
+            *L = embed(t.angular_momentum);
+            *Lp = embed(tp.angular_momentum);
+            *ke = t.kinetic_energy;
+        } else {
+            const Totals1 t = totals(std::vector<Body1>{a.b1, b.b1});
+            *p = Vec3(t.momentum, 0, 0);
+            *ke = t.kinetic_energy;
+        }
+    };
+    check(&s.p_before, &s.L_before, &s.Lp_before, &s.ke_before);
+    set_velocity(&a.b1, s.va, s.wa);
+    set_velocity(&b.b1, s.vb, s.wb);
+    set_velocity(&a.b2, s.va, s.wa);
+    set_velocity(&b.b2, s.vb, s.wb);
+    set_velocity(&a.b3, s.va, s.wa);
+    set_velocity(&b.b3, s.vb, s.wb);
+    check(&s.p_after, &s.L_after, &s.Lp_after, &s.ke_after);
+}
+
 }  // namespace
 
 Solution solve(const SolveProblem& P) {
@@ -164,40 +202,18 @@ Solution solve(const SolveProblem& P) {
             s.wb = Vec3(0, 0, s.wb.z());
         }
     }
-    s.u_after = (s.vb + s.wb.cross(s.rb)) - (s.va + s.wa.cross(s.ra));
-    s.un_after = s.u_after.dot(s.n);
+    after_impulse(P, &s);
+    return s;
+}
 
-    // Checks with the engine's diagnostics on copies of the bodies, before and after.
-    SolveBody a = P.a, b = P.b;
-    auto check = [&](Vec3* p, Vec3* L, Vec3* Lp, double* ke) {
-        if (P.dimension == 3) {
-            const std::vector<Body3> bodies = {a.b3, b.b3};
-            const Totals3 t = totals(bodies, P.about), tp = totals(bodies, P.point);
-            *p = t.momentum;
-            *L = t.angular_momentum;
-            *Lp = tp.angular_momentum;
-            *ke = t.kinetic_energy;
-        } else if (P.dimension == 2) {
-            const std::vector<Body2> bodies = {a.b2, b.b2};
-            const Totals2 t = totals(bodies, P.about.head<2>()), tp = totals(bodies, P.point.head<2>());
-            *p = embed(t.momentum);
-            *L = embed(t.angular_momentum);
-            *Lp = embed(tp.angular_momentum);
-            *ke = t.kinetic_energy;
-        } else {
-            const Totals1 t = totals(std::vector<Body1>{a.b1, b.b1});
-            *p = Vec3(t.momentum, 0, 0);
-            *ke = t.kinetic_energy;
-        }
-    };
-    check(&s.p_before, &s.L_before, &s.Lp_before, &s.ke_before);
-    set_velocity(&a.b1, s.va, s.wa);
-    set_velocity(&b.b1, s.vb, s.wb);
-    set_velocity(&a.b2, s.va, s.wa);
-    set_velocity(&b.b2, s.vb, s.wb);
-    set_velocity(&a.b3, s.va, s.wa);
-    set_velocity(&b.b3, s.vb, s.wb);
-    check(&s.p_after, &s.L_after, &s.Lp_after, &s.ke_after);
+Solution with_outcome(const SolveProblem& P, Solution s, const Vec3& impulse, const Vec3& va, const Vec3& wa,
+                      const Vec3& vb, const Vec3& wb) {
+    s.P = impulse;
+    s.va = va;
+    s.wa = wa;
+    s.vb = vb;
+    s.wb = wb;
+    after_impulse(P, &s);
     return s;
 }
 

@@ -52,6 +52,14 @@ struct Solution {
 
 Solution solve(const SolveProblem& problem);
 
+// `s` (solve(problem)'s) with the outcome another solver gave the same two bodies: the
+// impulse on b, the velocities just after, and the relative velocity and the checks
+// (momentum, angular momentum, kinetic energy) recomputed from them. A world that resolved
+// other contacts at the same instant gives another outcome than the two bodies alone; the
+// site's "Before and after" shows the run's.
+Solution with_outcome(const SolveProblem& problem, Solution s, const Vec3& P, const Vec3& va, const Vec3& wa,
+                      const Vec3& vb, const Vec3& wb);
+
 // The worked example as steps in the text notation (what `collide solve` prints): a title
 // (a name, often with the formula), the formula as its own field (a figure's overlay shows it), lines (formula, then the numbers substituted), notes (prose).
 // `response` marks the steps of the response model itself (denominator and impulse, the

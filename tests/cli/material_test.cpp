@@ -4,6 +4,10 @@
 #include "cli/material_cmd.h"
 #include "teach/answers.h"
 #include "teach/html.h"
+#include "present/render_job.h"
+#include "present/scene_run.h"
+#include "teach/event_problem.h"
+#include "teach/notation.h"
 
 #include <algorithm>
 #include <cctype>
@@ -13,6 +17,8 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
+#include <variant>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -505,6 +511,77 @@ TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
     EXPECT_EQ(before.find("1.5 m/s"), std::string::npos);  // not answered where it is asked
     // v_bf = v_bi + J / m_b = 0.3 + 1.2 / 1 (the lesson's worked numbers)
     EXPECT_NE(page.find("<span class=\"answer\">1.5 m/s</span><br>B receives +J.", check), std::string::npos);
+}
+
+// One truth per page (issue 33): in a many-body lesson the world resolves the shown collision
+// with the other contacts of its instant (box 4 rests on box 3 and under box 5; domino 2 stands
+// on the floor). The page's table, the figure's alt text and the answers give the run's numbers;
+// the two-body calculation is labelled a simplified one, with the run's results beside it.
+TEST(Material, AManyBodyPageGivesTheRunsNumbersAndLabelsTheTwoBodyCalculation) {
+    render::test::TempDir dir;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons = {"tower", "dominoes"};
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const notation::StudentNumbers student;  // the page's numbers: 4 figures, no noise
+    for (const auto& [id, a_name, b_name] :
+         {std::tuple<std::string, std::string, std::string>{"tower", "ball", "box 4"},
+          {"dominoes", "domino 1", "domino 2"}}) {
+        SCOPED_TRACE(id);
+        // The shown collision, from the engine's own run of the lesson's scene.
+        const RenderSource src = load_render_source(id);
+        const Scene& scene = src.scene;
+        const int d = scene.dimension;
+        std::size_t ia = 0, ib = 0;
+        for (std::size_t k = 0; k < scene.bodies.size(); ++k) {
+            if (scene.bodies[k].name == a_name) ia = k;
+            if (scene.bodies[k].name == b_name) ib = k;
+        }
+        const SceneRun run = run_scene(scene, {0.0, scene.duration}, nullptr, {RecordOptions::Keep{ia, ib, 1}});
+        std::optional<CollisionInstant> c;
+        std::visit(
+            [&](const auto& rec) {
+                if (const auto pc = find_pair_collision(rec, ia, ib, 1))
+                    c = with_roles(collision_instant(rec.events[pc->first]), ia, ib);
+            },
+            run.record);
+        ASSERT_TRUE(c.has_value());
+        const SolveProblem problem = collision_problem(scene, *c);
+        const double mb = problem.b.b3.mass;
+        // The two bodies alone (solve()) turn b otherwise than the run does: the case this is about.
+        const Solution alone = solve(problem);
+        EXPECT_GT((alone.wb - c->wb_after).norm(), 1.0);
+
+        const std::string page = read(fs::path(dir / "site") / id / "index.html");
+        // The table: b's row with the run's velocity and spin after.
+        const auto spin = [d](const Vec3& w) { return d == 2 ? notation::num_text(w.z()) : notation::vec(w, 3).txt; };
+        const std::size_t tb = page.find("<h3>Before and after</h3>");
+        ASSERT_NE(tb, std::string::npos);
+        const std::string table = page.substr(tb, page.find("</table>", tb) - tb);  // the bodies' table
+        const std::string row = "<tr><td>" + b_name + "</td><td>" + notation::num_text(mb) + "</td><td>" +
+                                notation::vec(c->before_b.v, d).txt + "</td><td>" + notation::vec(c->vb_after, d).txt +
+                                "</td><td>" + spin(c->before_b.w) + "</td><td>" + spin(c->wb_after) + "</td></tr>";
+        EXPECT_NE(table.find(row), std::string::npos) << row;
+        EXPECT_EQ(table.find(html::escape(spin(alone.wb))), std::string::npos) << "the two-body spin in the table";
+        // The calculation is labelled, and the run's results follow it.
+        const std::size_t label = page.find("A simplified calculation: " + a_name + " and " + b_name + " alone.");
+        ASSERT_NE(label, std::string::npos);
+        EXPECT_LT(label, page.find(html::escape(spin(alone.wb)), label));
+        const std::size_t beside = page.find("<table class=\"beside\">", label);
+        ASSERT_NE(beside, std::string::npos);
+        EXPECT_NE(
+            page.find("<td>" + html::escape(spin(alone.wb)) + "</td><td>" + html::escape(spin(c->wb_after)) + "</td>",
+                      beside),
+            std::string::npos);
+        // The figure's alt text: b spins as the run has it.
+        const std::size_t alt = page.find("<img src=\"figure.png\" alt=\"");
+        ASSERT_NE(alt, std::string::npos);
+        const std::string alt_text = page.substr(alt, page.find('>', alt) - alt);
+        EXPECT_NE(alt_text.find("spins at " +
+                                html::escape(notation::sig_text(d == 2 ? c->wb_after.z() : c->wb_after.norm(), 3))),
+                  std::string::npos)
+            << alt_text;
+    }
 }
 
 TEST(Material, BadInputWritesNothing) {

@@ -46,6 +46,28 @@ TEST(SolveExamples, CartsMatchTextbook) {
     EXPECT_NEAR(s.ke_before - s.ke_after, (1 - e * e) * ma * mb * 9 / (2 * (ma + mb)), kTol);
 }
 
+// with_outcome: another solver's outcome for the same two bodies, with the checks recomputed.
+// Carts (2 kg at 3 m/s, 1 kg at rest) given the perfectly plastic outcome (both at
+// p / (ma + mb) = 2 m/s, impulse mb * 2 = 2 N s) instead of e = 0.5's: momentum 6 kg m/s
+// before and after, kinetic energy 9 J before and (ma + mb) 2^2 / 2 = 6 J after, u' = 0.
+TEST(SolveExamples, AnotherOutcomeGetsItsOwnChecks) {
+    const SolveProblem P = parse_solve_file(example("carts-1d.toml"));
+    const Solution alone = solve(P);
+    const Solution plastic =
+        with_outcome(P, alone, Vec3(2, 0, 0), Vec3(2, 0, 0), Vec3::Zero(), Vec3(2, 0, 0), Vec3::Zero());
+    EXPECT_NEAR(plastic.p_before.x(), 6.0, kTol);
+    EXPECT_NEAR(plastic.p_after.x(), 6.0, kTol);
+    EXPECT_NEAR(plastic.ke_before, 9.0, kTol);
+    EXPECT_NEAR(plastic.ke_after, 6.0, kTol);
+    EXPECT_NEAR(plastic.un_after, 0.0, kTol);
+    EXPECT_NEAR(plastic.P.x(), 2.0, kTol);
+    // The problem's own outcome changes nothing.
+    const Solution same = with_outcome(P, alone, alone.P, alone.va, alone.wa, alone.vb, alone.wb);
+    EXPECT_EQ(same.ke_after, alone.ke_after);
+    EXPECT_EQ(same.p_after, alone.p_after);
+    EXPECT_EQ(same.un_after, alone.un_after);
+}
+
 // The matrix method with e = 1 reverses the whole contact velocity and keeps the energy.
 TEST(SolveExamples, SuperballReversesWholeContactVelocity) {
     const Solution s = solve(parse_solve_file(example("superball-2d.toml")));
