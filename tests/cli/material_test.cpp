@@ -47,17 +47,29 @@ MaterialOptions tiny(const std::string& out) {
     return o;
 }
 
-TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
-    // The smoke render of every bundled lesson (160x120, 10 frames/s: about 6 s), as the site.
-    render::test::TempDir dir;
+// The site of every bundled lesson as tiny() renders it (a low-resolution smoke run, about 30 s):
+// under ctest the fixture material.tiny_site (tests/cli/CMakeLists.txt) renders it once for the
+// tests that read it and COLLIDE_TINY_SITE names its directory; run alone, each renders its own
+// into `dir`.
+fs::path every_lesson_site(const render::test::TempDir& dir) {
+    if (const char* shared = std::getenv("COLLIDE_TINY_SITE")) {
+        EXPECT_TRUE(fs::exists(fs::path(shared) / "index.html")) << "the fixture's site is missing: " << shared;
+        return shared;
+    }
     std::ostringstream out, err;
     MaterialOptions o = tiny(dir / "site");
     o.lessons.clear();  // all of them
-    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    EXPECT_EQ(run_material(o, out, err), 0) << err.str();
+    return dir / "site";
+}
+
+TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
+    render::test::TempDir dir;
+    const fs::path site = every_lesson_site(dir);
     const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
     const std::regex attr(R"re((?:href|src|poster)="([^"]*)")re");
     int pages = 0, links = 0;
-    for (const auto& e : fs::recursive_directory_iterator(dir / "site")) {
+    for (const auto& e : fs::recursive_directory_iterator(site)) {
         if (e.path().extension() != ".html") continue;
         ++pages;
         const std::string html = read(e.path());
@@ -73,7 +85,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     EXPECT_EQ(pages, 2 * static_cast<int>(all.size()) + 1);  // the index, a student's and a teacher's page a lesson
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
-        const fs::path d = fs::path(dir / "site") / L.id;
+        const fs::path d = site / L.id;
         for (const char* name : {"index.html", "teacher.html", "lesson.md", "data.csv", "energy.svg", "momentum.svg"})
             EXPECT_TRUE(fs::exists(d / name)) << name;
         EXPECT_TRUE(fs::exists(d / "frames/frame_00000.png"));
@@ -98,16 +110,16 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     }
     EXPECT_GT(links, 10);
     // The lesson page holds its questions and the computed answers; the index links to it.
-    const std::string lesson = read(fs::path(dir / "site") / "catch-up/index.html");
+    const std::string lesson = read(site / "catch-up/index.html");
     EXPECT_NE(lesson.find("What impulse J does B receive?"), std::string::npos);
     EXPECT_NE(lesson.find("<details class=\"answer\"><summary>Answer</summary>"), std::string::npos);
     EXPECT_NE(lesson.find("1.2 N s"), std::string::npos);  // J = (1 + 0.5) 2 1 (1.5 - 0.3) / 3
-    EXPECT_NE(read(fs::path(dir / "site") / "index.html").find("catch-up/index.html"), std::string::npos);
-    EXPECT_NE(read(fs::path(dir / "site") / "index.html").find("catch-up/teacher.html"), std::string::npos);
-    EXPECT_NE(read(fs::path(dir / "site") / "style.css").find("@media print"), std::string::npos);
+    EXPECT_NE(read(site / "index.html").find("catch-up/index.html"), std::string::npos);
+    EXPECT_NE(read(site / "index.html").find("catch-up/teacher.html"), std::string::npos);
+    EXPECT_NE(read(site / "style.css").find("@media print"), std::string::npos);
     // Print: math wraps (no nowrap anywhere in the stylesheet); the animation section, screen
     // only, leaves no empty heading; each question has a space to write in.
-    const std::string css = read(fs::path(dir / "site") / "style.css");
+    const std::string css = read(site / "style.css");
     EXPECT_EQ(css.find("nowrap"), std::string::npos);
     EXPECT_NE(lesson.find("<section class=\"animation noprint\">\n<h3>Animation</h3>"), std::string::npos);
     // Per lesson: each question once, folded on screen, with a space to write in (a choice
@@ -119,7 +131,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     };
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         std::size_t predict = 0, asked = 0, spaces = 0, numbers = 0;
         for (const LessonQuestion& q : L.questions) {
             (q.kind == QuestionKind::predict ? predict : asked) += 1;
@@ -138,7 +150,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     // are not screen-only; their answers come after the animation.
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         const std::size_t predict = page.find("<section class=\"predict\""),
                           figure = page.find("<img src=\"figure.png\""),
                           animation = page.find("<section class=\"animation noprint\">"),
@@ -187,7 +199,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
           "figure, table, .plots, ol.questions > li", "figure img { width: auto; max-width: 100%; max-height:"})
         EXPECT_NE(print.find(rule), std::string::npos) << rule;
     for (const Lesson& L : all) {
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         // The figures, the animation and the plots are screen-only on the student's page.
         const std::size_t watch = page.find("<section class=\"watch\">\n<h2>Watch</h2>\n<div class=\"noprint\">");
         EXPECT_NE(watch, std::string::npos) << L.id;
@@ -200,15 +212,15 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     // Student pages name no commands and no files of the repository: those go on the
     // teacher's page.
     for (const Lesson& L : all) {
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         for (const char* word : {"collide solve", "collide compare", "collide render", "docs/"})
             EXPECT_EQ(page.find(word), std::string::npos) << L.id << " tells students \"" << word << "\"";
     }
     // Every collision the figures do not show is worked out too (at most 8), folded.
     for (const Lesson& L : all) {
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         std::size_t events = 0, later = 0;
-        std::ifstream csv(fs::path(dir / "site") / L.id / "events.csv");
+        std::ifstream csv(site / L.id / "events.csv");
         for (std::string line; std::getline(csv, line);) ++events;
         events -= 1;  // the header
         for (std::size_t at = 0; (at = page.find("<details class=\"later\">", at)) != std::string::npos; ++at) ++later;
@@ -224,7 +236,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     const std::regex number(R"re((\d+(?:\.\d+)?)(e[-+]?\d+)?)re");
     std::size_t math_lines = 0;
     for (const Lesson& L : all) {
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         for (std::sregex_iterator m(page.begin(), page.end(), math_line), end; m != end; ++m) {
             ++math_lines;
             const std::string text = (*m)[1];
@@ -250,7 +262,7 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     std::set<std::string> alts;
     const std::regex figure_alt(R"re(<img src="figure.png" alt="([^"]*)")re");
     for (const Lesson& L : all) {
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         std::smatch m;
         ASSERT_TRUE(std::regex_search(page, m, figure_alt)) << L.id;
         EXPECT_NE(m[1].str().find("the impulse on"), std::string::npos) << L.id << ": " << m[1];
@@ -335,10 +347,7 @@ std::vector<double> precise_numbers(const std::string& text) {
 // one.
 TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
     render::test::TempDir dir;
-    std::ostringstream out, err;
-    MaterialOptions o = tiny(dir / "site");
-    o.lessons.clear();
-    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const fs::path site = every_lesson_site(dir);
     const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
     // {lesson, question number from 1}: answers equal to a given of the set-up.
     std::set<std::pair<std::string, int>> givens = {
@@ -352,7 +361,7 @@ TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
     int checked = 0;
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
-        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string page = read(site / L.id / "index.html");
         const std::size_t setup_at = page.find("<section class=\"setup\">"),
                           setup_end = page.find("</section>", setup_at);
         ASSERT_NE(setup_at, std::string::npos);
@@ -418,19 +427,16 @@ TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
 // answer of the student's page and every worked example, unfolded.
 TEST(Material, EveryLessonHasATeachersPageWithEveryAnswer) {
     render::test::TempDir dir;
-    std::ostringstream out, err;
-    MaterialOptions o = tiny(dir / "site");
-    o.lessons.clear();
-    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const fs::path site = every_lesson_site(dir);
     const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
-    const std::string index = read(fs::path(dir / "site") / "index.html");
+    const std::string index = read(site / "index.html");
     const std::regex answer(R"re(<span class="answer">(.*?)</span>)re");
     const std::regex math_line(R"re(<div class="math[^"]*">(.*?)</div>)re");
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
         ASSERT_TRUE(L.teacher.has_value());
-        const std::string student = read(fs::path(dir / "site") / L.id / "index.html");
-        const std::string teacher = read(fs::path(dir / "site") / L.id / "teacher.html");
+        const std::string student = read(site / L.id / "index.html");
+        const std::string teacher = read(site / L.id / "teacher.html");
         EXPECT_NE(index.find("href=\"" + L.id + "/teacher.html\""), std::string::npos);
         EXPECT_NE(student.find("<a href=\"teacher.html\">"), std::string::npos);
         EXPECT_NE(teacher.find("<a href=\"index.html\">"), std::string::npos);
@@ -519,10 +525,7 @@ TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
 // the two-body calculation is labelled a simplified one, with the run's results beside it.
 TEST(Material, AManyBodyPageGivesTheRunsNumbersAndLabelsTheTwoBodyCalculation) {
     render::test::TempDir dir;
-    std::ostringstream out, err;
-    MaterialOptions o = tiny(dir / "site");
-    o.lessons = {"tower", "dominoes"};
-    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const fs::path site = every_lesson_site(dir);
     const notation::StudentNumbers student;  // the page's numbers: 4 figures, no noise
     for (const auto& [id, a_name, b_name] :
          {std::tuple<std::string, std::string, std::string>{"tower", "ball", "box 4"},
@@ -552,7 +555,7 @@ TEST(Material, AManyBodyPageGivesTheRunsNumbersAndLabelsTheTwoBodyCalculation) {
         const Solution alone = solve(problem);
         EXPECT_GT((alone.wb - c->wb_after).norm(), 1.0);
 
-        const std::string page = read(fs::path(dir / "site") / id / "index.html");
+        const std::string page = read(site / id / "index.html");
         // The table: b's row with the run's velocity and spin after.
         const auto spin = [d](const Vec3& w) { return d == 2 ? notation::num_text(w.z()) : notation::vec(w, 3).txt; };
         const std::size_t tb = page.find("<h3>Before and after</h3>");
