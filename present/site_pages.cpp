@@ -158,13 +158,68 @@ struct Shown {
         return std::string(heading ? "<h3>Side by side</h3>\n" : "") + "<figure" +
                (b.variants_width > kColumnWidth ? " class=\"wide\"" : "") +
                "><a href=\"variants.png\" title=\"Open the figure at full size\"><img src=\"variants.png\" "
-               "alt=\"The scene and its variants, before, at and after the collision\"></a></figure>\n";
+               "alt=\"" +
+               escape(variants_alt()) + "\"></a></figure>\n";
+    }
+
+    // What variants.png shows, panel by panel, in the numbers of the table below it.
+    std::string variants_alt() const {
+        const int d = L().scene.dimension;
+        std::string s =
+            "The lesson's scene and its variants side by side, each before, at and after its first "
+            "collision.";
+        for (const RenderReport::Variant& v : r().variants) {
+            s += " " + v.label + ": ";
+            if (!v.first) {
+                s += "no collision.";
+                continue;
+            }
+            const CollisionInstant& c = *v.first;
+            s += "impulse on " + L().scene.bodies[c.b].name + " " +
+                 (d == 1 ? sig3(c.impulse.x()) : sig3(c.impulse.norm())) + " N s, kinetic energy lost (J) " +
+                 energy_lost_text(v.ke_before, v.ke_after) + ".";
+        }
+        return s;
+    }
+
+    // The plots' alt texts: what each curve does from the start to the end, and the collisions.
+    std::string totals_alt(bool energy) const {
+        const std::vector<render::FrameTotals>& T = r().plot_totals;
+        const std::size_t collisions = r().collision_times.size();
+        std::string s =
+            std::string(energy ? "Energy" : "Momentum") + " against time, from 0 to " + sig3(L().scene.duration) + " s";
+        if (T.empty()) return s + ".";
+        const auto from_to = [&](const std::string& what, double a, double b, const std::string& unit) {
+            if (sig3(a) == sig3(b)) return what + " stays at " + sig3(a) + " " + unit;
+            return what + " from " + sig3(a) + " " + unit + " at the start to " + sig3(b) + " " + unit + " at the end";
+        };
+        const render::FrameTotals &a = T.front(), &b = T.back();
+        if (energy) {
+            s += ": " + from_to("kinetic energy", a.kinetic, b.kinetic, "J");
+            if (L().scene.gravity.norm() > 0)
+                s += "; total energy (kinetic and potential) " +
+                     from_to("", a.kinetic + a.potential, b.kinetic + b.potential, "J").substr(1);
+        } else {
+            const char* axis[] = {"x", "y", "z"};
+            const int d = L().scene.dimension;
+            s += ": ";
+            for (int k = 0; k < d; ++k)
+                s += (k ? "; " : "") +
+                     from_to(d == 1 ? "p" : std::string("p along ") + axis[k], a.momentum[k], b.momentum[k], "kg m/s");
+        }
+        s += ". " + std::to_string(collisions) +
+             (collisions == 1 ? " collision is marked by a red line" : " collisions are marked by red lines") +
+             (collisions
+                  ? (collisions == 1 ? ", at t = " : ", the first at t = ") + sig3(r().collision_times.front()) + " s."
+                  : ".");
+        return s;
     }
 
     std::string plots() const {
         return "<h3>Energy and momentum against time</h3>\n<div class=\"plots\">"
-               "<img src=\"energy.svg\" alt=\"Energy against time\"><img src=\"momentum.svg\" alt=\"Momentum against "
-               "time\"></div>\n<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "
+               "<img src=\"energy.svg\" alt=\"" +
+               escape(totals_alt(true)) + "\"><img src=\"momentum.svg\" alt=\"" + escape(totals_alt(false)) +
+               "\"></div>\n<p class=\"note\">Red lines: the collisions. Data: <a href=\"data.csv\">data.csv</a>, "
                "<a href=\"data.json\">data.json</a>, <a href=\"events.csv\">events.csv</a>.</p>\n";
     }
 

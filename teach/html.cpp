@@ -37,7 +37,14 @@ std::string escape(const std::string& s) {
 
 // Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>, and the plain
 // superscripts lesson texts write (I^-1, R^T) as <sup>.
-std::string math(const std::string& text) {
+namespace {
+
+// math() with the markup of a superscript and a subscript given: HTML's <sup>/<sub>, or SVG's
+// <tspan> (inside an SVG <text> an HTML element is not drawn: "p<sub>x</sub>" reads "p x").
+struct SubSup {
+    const char *sup_open, *sup_close, *sub_open, *sub_close;
+};
+std::string math_with(const std::string& text, const SubSup& m) {
     const std::string rich = notation::to_rich(text);  // v_{pa}
     std::string out;
     for (std::size_t i = 0; i < rich.size();) {
@@ -48,7 +55,7 @@ std::string math(const std::string& text) {
             if (j > i + 1 && std::isalnum(static_cast<unsigned char>(rich[j - 1]))) {
                 std::string sup = rich.substr(i + 1, j - i - 1);
                 if (sup[0] == '-') sup = "\u2212" + sup.substr(1);
-                out += "<sup>" + escape(sup) + "</sup>";
+                out += m.sup_open + escape(sup) + m.sup_close;
                 i = j;
                 continue;
             }
@@ -56,7 +63,7 @@ std::string math(const std::string& text) {
         if (rich.compare(i, 2, "_{") == 0) {
             const std::size_t close = rich.find('}', i + 2);
             if (close != std::string::npos) {
-                out += "<sub>" + escape(rich.substr(i + 2, close - i - 2)) + "</sub>";
+                out += m.sub_open + escape(rich.substr(i + 2, close - i - 2)) + m.sub_close;
                 i = close + 1;
                 continue;
             }
@@ -65,6 +72,15 @@ std::string math(const std::string& text) {
         ++i;
     }
     return out;
+}
+
+}  // namespace
+
+std::string math(const std::string& text) { return math_with(text, {"<sup>", "</sup>", "<sub>", "</sub>"}); }
+
+std::string svg_math(const std::string& text) {
+    return math_with(text, {"<tspan baseline-shift=\"super\" font-size=\"9\">", "</tspan>",
+                            "<tspan baseline-shift=\"sub\" font-size=\"9\">", "</tspan>"});
 }
 
 // **bold** as <strong> in text math() has made (which leaves * alone).
@@ -173,7 +189,7 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
         std::snprintf(buf, sizeof buf,
                       "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"3\"/>", kx,
                       ky - 4, kx + 20, ky - 4, key.colour.c_str());
-        o << buf << "<text x=\"" << kx + 25 << "\" y=\"" << ky << "\">" << math(key.label) << "</text>\n";
+        o << buf << "<text x=\"" << kx + 25 << "\" y=\"" << ky << "\">" << svg_math(key.label) << "</text>\n";
         kx += text_width(key.label) + 34;
     }
     // Axes, zero, collisions.

@@ -18,6 +18,9 @@ std::string escape(const std::string& s);
 // Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>, and the plain
 // superscripts lesson texts write (I^-1, R^T) as <sup>.
 std::string math(const std::string& text);
+// The same inside an SVG <text>: the subscripts and superscripts as <tspan> (an HTML element
+// there is not drawn: p<sub>x</sub> reads "p x").
+std::string svg_math(const std::string& text);
 // Paragraphs separated by blank lines, each as <p> (math()); lines that start with "- " as the
 // items of a list (<ul>), **bold** as <strong> and `code` as <code> (as written, no subscripts).
 std::string paragraphs(const std::string& text);

@@ -89,6 +89,15 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         for (const char* name : {"index.html", "teacher.html", "lesson.md", "data.csv", "energy.svg", "momentum.svg"})
             EXPECT_TRUE(fs::exists(d / name)) << name;
         EXPECT_TRUE(fs::exists(d / "frames/frame_00000.png"));
+        // The plots' legends are SVG (an HTML <sub> inside <text> is not drawn: "p p"), and
+        // each picture's alt text says what it shows (not one text shared by every lesson).
+        for (const char* svg : {"energy.svg", "momentum.svg"})
+            EXPECT_EQ(read(d / svg).find("<sub>"), std::string::npos);
+        const std::string student = read(d / "index.html");
+        for (const char* generic : {"alt=\"Energy against time\"", "alt=\"Momentum against time\"",
+                                    "alt=\"The scene and its variants, before, at and after the collision\""})
+            EXPECT_EQ(student.find(generic), std::string::npos) << generic;
+        EXPECT_NE(student.find("alt=\"Energy against time, from 0 to "), std::string::npos);
         // lesson.md shows each of the lesson's figures (figure.png, figure-2.png, ...), and
         // the page each of them: every [[figure]] has its picture.
         const std::string md = read(d / "lesson.md"), page = read(d / "index.html");
