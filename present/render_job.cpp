@@ -282,7 +282,7 @@ void write_worked_example(const std::string& dir, const WorkedExample& worked, c
     const notation::StudentNumbers student;  // a lesson's: 4 figures, no floating-point noise
     std::ostringstream md;
     const Solution run = instant ? as_resolved(worked.problem, worked.solution, *instant) : worked.solution;
-    const bool differs = resolved_differs(worked.solution, run);
+    const bool differs = resolved_differs(worked.problem, worked.solution, run);
     write_markdown(worked.problem, worked.solution, md);
     if (differs) {  // under the title
         std::string text = md.str();

@@ -249,7 +249,7 @@ struct Shown {
     // give the run's).
     std::string worked_with_run(const SolveProblem& P, const Solution& alone, const Solution& run,
                                 const std::string& world_note) const {
-        if (!resolved_differs(alone, run)) return worked_html(P, alone, world_note);
+        if (!resolved_differs(P, alone, run)) return worked_html(P, alone, world_note);
         std::ostringstream o;
         o << "<p class=\"simplified\"><strong>A simplified calculation: " << escape(P.a.name) << " and "
           << escape(P.b.name)
@@ -311,7 +311,7 @@ struct Shown {
         }
         // The table: the two bodies before and after, as the run resolved them.
         o << "<h3>Before and after</h3>\n";
-        if (resolved_differs(S, run))
+        if (resolved_differs(P, S, run))
             o << "<p class=\"note\">As the run resolved the collision, with the other contacts of the same instant "
                  "(the numbers the figure and the answers show).</p>\n";
         o << "<table>\n<tr><th>body</th><th>m (kg)</th><th>v before (m/s)</th>"

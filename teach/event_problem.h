@@ -81,8 +81,9 @@ std::string world_note(const Scene& scene, const CollisionInstant& c, const Vec3
 Solution as_resolved(const SolveProblem& problem, const Solution& alone, const CollisionInstant& c);
 // Whether they differ beyond rounding: by more than 1e-6 of the largest impulse or velocity
 // (m/s and rad/s taken alike). Then a worked example is a simplified calculation, and the
-// run's numbers are shown beside its results.
-bool resolved_differs(const Solution& alone, const Solution& run);
+// run's numbers are shown beside its results. (The page's listing model: velocities only, its J
+// is not what B receives.)
+bool resolved_differs(const SolveProblem& problem, const Solution& alone, const Solution& run);
 // The results side by side, for a table: what, its unit, the two alone, the run (student
 // numbers: 4 figures, no noise). Impulse on b, each body's velocity and (2D, 3D) spin after,
 // the two bodies' kinetic energy after.
