@@ -10,6 +10,7 @@
 #include "render/video.h"
 #include "scenario/toml_reader.h"
 #include "teach/html.h"
+#include "engine/math.h"  // kPi
 #include "teach/notation.h"
 
 namespace collide {
@@ -30,6 +31,13 @@ std::string given(double x) { return notation::true_minus(notation::num_text(std
 std::string sig4(double x) { return notation::sig_text(x, 4); }
 
 std::string vec_text(const Vec3& v, int dim) { return notation::components_text(v, dim, given); }
+
+// A 2D body's angle in degrees (4 figures), with the radians the lesson file gives after it:
+// "34.38° (0.6 rad)"; 0 alone.
+std::string angle_text(double rad) {
+    if (std::abs(rad) < 1e-12) return "0";
+    return notation::true_minus(notation::sig_text(rad * 180.0 / kPi, 4)) + "\u00b0 (" + given(rad) + " rad)";
+}
 
 // A key answer: the number or vector to 4 significant figures, with its unit.
 std::string answer_text(const LessonAnswer& a, int dim) {
@@ -101,7 +109,7 @@ std::string givens_html(const Lesson& L) {
     const toml::array* bodies = file["body"].as_array();
     std::ostringstream o;
     o << "<table class=\"givens\">\n<tr><th>body</th><th>shape</th><th>mass (kg)</th><th>position (m)</th>";
-    if (d == 2) o << "<th>angle (rad)</th>";
+    if (d == 2) o << "<th>angle</th>";
     o << "<th>velocity (m/s)</th>";
     if (d > 1) o << "<th>spin \u03c9 (rad/s)</th>";
     o << "<th>size</th></tr>\n";
@@ -114,7 +122,7 @@ std::string givens_html(const Lesson& L) {
               << given(b.body1.v);
         } else if (d == 2) {
             o << (fixed ? "fixed" : given(b.body2.mass)) << "</td><td>" << vec_text(lift(b.body2.position), 2)
-              << "</td><td>" << given(b.body2.angle) << "</td><td>" << vec_text(lift(b.body2.v), 2) << "</td><td>"
+              << "</td><td>" << angle_text(b.body2.angle) << "</td><td>" << vec_text(lift(b.body2.v), 2) << "</td><td>"
               << given(b.body2.w);
         } else {
             o << (fixed ? "fixed" : given(b.body3.mass)) << "</td><td>" << vec_text(b.body3.position, 3) << "</td><td>"

@@ -151,6 +151,21 @@ TEST(Worksheet, RotationAnswersAreTheEnginesAndKeepAngularMomentum) {
     }
 }
 
+// A 2D sheet gives each body's angle in degrees (the lesson file's radians beside it): A's
+// angle of rotation-directions, whatever a student's value in radians, as 180 a / pi.
+TEST(Worksheet, TwoDimensionalAnglesAreInDegrees) {
+    const std::string sheets = slurp(written("rotation-directions") / "sheets.html");
+    const json k = key("rotation-directions");
+    EXPECT_EQ(sheets.find("angle (rad)"), std::string::npos);
+    for (const json& s : k["students"]) {
+        const auto values = s["values"].get<std::map<std::string, double>>();
+        const double a = values.count("A.angle") ? values.at("A.angle") : 0.6;
+        char buf[40];
+        std::snprintf(buf, sizeof buf, "%.4g\u00b0 (%g rad)", a * 180.0 / 3.14159265358979323846, a);
+        EXPECT_NE(sheets.find(buf), std::string::npos) << buf;
+    }
+}
+
 TEST(Worksheet, SheetsShowNoAnswerAndNoWorkedExample) {
     for (const std::string id : {"catch-up", "rotation-directions"}) {
         const std::string sheets = slurp(written(id) / "sheets.html");
