@@ -386,6 +386,7 @@ bool World<D>::resolve_point(Contact* c, int k) {
     moved(c->a);
     moved(c->b);
     c->impulse += r.P;
+    c->approximate = c->approximate || r.approximate;
     c->weight += std::max(0.0, r.P.dot(n));
     c->moment += std::max(0.0, r.P.dot(n)) * p;
     return true;
@@ -519,6 +520,7 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         record(c.a, c.b, t, c.m.normal, c.impulse, c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0],
                scratch_.mark[c.a] == reached ? scratch_.before[c.a] : vel(c.a),
                scratch_.mark[c.b] == reached ? scratch_.before[c.b] : vel(c.b), events);
+        events->back().approximate = c.approximate;
     }
     settle(group, t);  // (stepped bodies are left out)
     for (std::size_t k : group) {

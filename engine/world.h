@@ -48,6 +48,9 @@ struct Event {
     // scene's masses, shapes and the velocities above, the collision can be rebuilt from the
     // event alone (teach/event_problem.h). (A welded body's pose is its own, not its compound's.)
     typename Space<D>::Pose pose_a, pose_b;
+    // The model's answer was an approximation (Response3::approximate: Routh's integration
+    // could not be finished as specified); `collide step --events` says so.
+    bool approximate = false;
 };
 
 template <int D>

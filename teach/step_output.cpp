@@ -18,6 +18,10 @@ namespace collide {
 
 namespace {
 
+// What an event flagged `approximate` (engine/world.h Event) says, in its JSON and its text.
+const char* const kApproximate =
+    "Routh's integration of this impact could not be finished as specified; this impulse is an approximation";
+
 // The end of an event's text line when its instant gained energy (energy_gains).
 std::string gain_warning(bool energy_gain) {
     return energy_gain ? "  [kinetic energy gained, which no real impact can do: Kane's paradox of a one-step "
@@ -145,6 +149,7 @@ std::string event_json_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     j["before"] = {{a, velocity_json<D>(e.before_a)}, {b, velocity_json<D>(e.before_b)}};
     j["after"] = {{a, velocity_json<D>(e.after_a)}, {b, velocity_json<D>(e.after_b)}};
     j["energy_gain"] = energy_gain;
+    if (e.approximate) j["approximate"] = kApproximate;  // only then: other runs print as before
     return j.dump();
 }
 
@@ -159,7 +164,8 @@ std::string event_text_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     };
     return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at " + txt(e.point) + " m, normal " + txt(e.normal) +
            ", impulse on " + b + " " + txt(e.impulse) + " N s; " + change(a, e.before_a, e.after_a) + "; " +
-           change(b, e.before_b, e.after_b) + gain_warning(energy_gain);
+           change(b, e.before_b, e.after_b) + gain_warning(energy_gain) +
+           (e.approximate ? std::string("  [approximate: ") + kApproximate + "]" : "");
 }
 
 // ---- The table ----
