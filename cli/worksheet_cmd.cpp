@@ -63,11 +63,6 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
                 err << line << std::flush;
             }
         }
-        // Not an error (a sheet of the lesson's own numbers is still a sheet), but rarely meant.
-        for (const Lesson& L : lessons)
-            if (L.vary.empty())
-                err << "collide: note: " << L.id
-                    << " has no [[vary]] ranges: every student gets the lesson's own numbers\n";
         const std::string weasyprint = render::find_program("weasyprint");
         const fs::path& tmp = staged.begin();
         std::vector<std::string> files;
@@ -91,6 +86,12 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
         out << "wrote " << opt.students << " worksheets of " << ids << " to " << opt.out_dir
             << (lessons.size() > 1 ? "/ID" : "") << " (" << list << (lessons.size() > 1 ? "; index.html" : "")
             << ") in " << secs << " s\n";
+        // Not an error (a sheet of the lesson's own numbers is still a sheet), but rarely meant:
+        // said in the summary, where the teacher reads what was written.
+        for (const Lesson& L : lessons)
+            if (L.vary.empty())
+                out << "note: " << L.id
+                    << " has no [[vary]] ranges: every student's sheet has the lesson's own numbers\n";
         return 0;
     });
 }

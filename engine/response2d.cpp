@@ -25,16 +25,6 @@ void apply_impulse(const ImpactBody2& a, const ImpactBody2& b, Response2* r) {
     r->wb = b.w + b.inv_I * (cross(b.r, r->P) + r->couple);
 }
 
-Response2 unchanged(const ImpactBody2& a, const ImpactBody2& b) {
-    Response2 r;
-    r.separating = true;
-    r.va = a.v;
-    r.wa = a.w;
-    r.vb = b.v;
-    r.wb = b.w;
-    return r;
-}
-
 Response2 frictionless(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e) {
     const double un = relative_velocity(a, b).dot(n);
     if (un >= 0.0) return unchanged(a, b);
@@ -50,57 +40,6 @@ Response2 frictionless(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n
     r.wa = a.w - j * dwa;
     r.vb = b.v + b.inv_m * r.P;
     r.wb = b.w + j * dwb;
-    return r;
-}
-
-Vec2 sticking_impulse(const Mat2& K, const Vec2& u, const Vec2& n, double e) {
-    return K.llt().solve(-e * u.dot(n) * n - u);
-}
-
-Vec2 slip_direction(const Mat2& K, const Vec2& u, const Vec2& n) {
-    Vec2 ut = u - u.dot(n) * n;
-    if (ut.norm() <= 1e-12 * u.norm()) {
-        const Vec2 Kn = K * n;
-        ut = Kn - Kn.dot(n) * n;
-    }
-    const double len = ut.norm();
-    return len > 0.0 ? Vec2(ut / len) : Vec2::Zero();
-}
-
-double sliding_denominator(const Mat2& K, const Vec2& n, const Vec2& t, double mu) { return n.dot(K * (n - mu * t)); }
-
-Response2 coulomb(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu) {
-    const Vec2 u = relative_velocity(a, b);
-    const double un = u.dot(n);
-    if (un >= 0.0) return unchanged(a, b);
-    const Mat2 K = collision_matrix(a, b);
-    Response2 r;
-    r.P = sticking_impulse(K, u, n, e);
-    const double Pn = r.P.dot(n);
-    const double Pt = (r.P - Pn * n).norm();
-    if (!(Pn >= 0.0 && Pt <= mu * Pn)) {
-        const Vec2 t = slip_direction(K, u, n);
-        const double denominator = sliding_denominator(K, n, t, mu);
-        if (denominator > 0.0) {
-            r.P = (-(1.0 + e) * un / denominator) * (n - mu * t);
-            r.sliding = true;
-        } else if (Pn < 0.0) {
-            // n . K (n - mu t) <= 0 (large mu, strongly coupled K: a Painleve-like case the
-            // one-step model cannot resolve) and the sticking impulse would pull: no friction.
-            r.P = (-(1.0 + e) * un / n.dot(K * n)) * n;
-            r.painleve = true;
-        }  // else keep the sticking impulse: it pushes, friction as large as needed.
-    }
-    apply_impulse(a, b, &r);
-    return r;
-}
-
-Response2 matrix(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e) {
-    const Vec2 u = relative_velocity(a, b);
-    if (u.dot(n) >= 0.0) return unchanged(a, b);
-    Response2 r;
-    r.P = collision_matrix(a, b).llt().solve(-(1.0 + e) * u);
-    apply_impulse(a, b, &r);
     return r;
 }
 

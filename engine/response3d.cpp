@@ -24,17 +24,6 @@ void apply_impulse(const ImpactBody3& a, const ImpactBody3& b, Response3* r) {
     r->wb = b.w + b.inv_I * (b.r.cross(r->P) + r->couple);
 }
 
-// No impulse: the bodies keep their velocities.
-Response3 unchanged(const ImpactBody3& a, const ImpactBody3& b) {
-    Response3 r;
-    r.separating = true;
-    r.va = a.v;
-    r.wa = a.w;
-    r.vb = b.v;
-    r.wb = b.w;
-    return r;
-}
-
 Response3 frictionless(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
     const double un = relative_velocity(a, b).dot(n);
     if (un >= 0.0) return unchanged(a, b);
@@ -50,60 +39,6 @@ Response3 frictionless(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n
     r.wa = a.w - j * dwa;
     r.vb = b.v + b.inv_m * r.P;
     r.wb = b.w + j * dwb;
-    return r;
-}
-
-Vec3 sticking_impulse(const Mat3& K, const Vec3& u, const Vec3& n, double e) {
-    // Final relative velocity -e un n: K P = -e un n - u.
-    return K.llt().solve(-e * u.dot(n) * n - u);
-}
-
-Vec3 slip_direction(const Mat3& K, const Vec3& u, const Vec3& n) {
-    Vec3 ut = u - u.dot(n) * n;
-    // No initial slip: the contact starts to slip the way the normal impulse alone drives it.
-    if (ut.norm() <= 1e-12 * u.norm()) {
-        const Vec3 Kn = K * n;
-        ut = Kn - Kn.dot(n) * n;
-    }
-    const double len = ut.norm();
-    return len > 0.0 ? Vec3(ut / len) : Vec3::Zero();
-}
-
-double sliding_denominator(const Mat3& K, const Vec3& n, const Vec3& t, double mu) { return n.dot(K * (n - mu * t)); }
-
-Response3 coulomb(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu) {
-    const Vec3 u = relative_velocity(a, b);
-    const double un = u.dot(n);
-    if (un >= 0.0) return unchanged(a, b);
-    const Mat3 K = collision_matrix(a, b);
-    Response3 r;
-    r.P = sticking_impulse(K, u, n, e);
-    const double Pn = r.P.dot(n);
-    const double Pt = (r.P - Pn * n).norm();
-    if (!(Pn >= 0.0 && Pt <= mu * Pn)) {
-        // Outside the friction cone: slide, friction mu Pn against the initial slip.
-        const Vec3 t = slip_direction(K, u, n);
-        const double denominator = sliding_denominator(K, n, t, mu);
-        if (denominator > 0.0) {
-            r.P = (-(1.0 + e) * un / denominator) * (n - mu * t);
-            r.sliding = true;
-        } else if (Pn < 0.0) {
-            // n . K (n - mu t) <= 0 (large mu, strongly coupled K: a Painleve-like case the
-            // one-step model cannot resolve) and the sticking impulse would pull: no friction.
-            r.P = (-(1.0 + e) * un / n.dot(K * n)) * n;
-            r.painleve = true;
-        }  // else keep the sticking impulse: it pushes, friction as large as needed.
-    }
-    apply_impulse(a, b, &r);
-    return r;
-}
-
-Response3 matrix(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e) {
-    const Vec3 u = relative_velocity(a, b);
-    if (u.dot(n) >= 0.0) return unchanged(a, b);
-    Response3 r;
-    r.P = collision_matrix(a, b).llt().solve(-(1.0 + e) * u);
-    apply_impulse(a, b, &r);
     return r;
 }
 

@@ -53,6 +53,20 @@ struct Event {
     bool approximate = false;
 };
 
+// Where, when and how hard one collision struck, in 3D form whatever its dimension (as
+// BodyState is for a body): what the renderer marks and the teaching code rebuilds from.
+struct LiftedEvent {
+    double t = 0.0;               // s
+    std::size_t a = 0, b = 0;     // body indices; the normal points from a into b
+    Vec3 point = Vec3::Zero();    // m
+    Vec3 normal = Vec3::UnitX();  // unit
+    Vec3 impulse = Vec3::Zero();  // N s on b
+};
+template <int D>
+LiftedEvent lifted(const Event<D>& e) {
+    return {e.t, e.a, e.b, lift(e.point), lift(e.normal), lift(e.impulse)};
+}
+
 template <int D>
 class World {
 public:

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <type_traits>
+#include <utility>
 #include <variant>
 
 #include "teach/step_output.h"
@@ -107,17 +108,22 @@ double size_of(const Scene& scene, std::size_t i) {
     return b.shape3.kind == Shape3::Kind::half_space ? 0.0 : 2.0 * bounding_radius(b.shape3);
 }
 
-// The two bodies of an event as they were just before its impulses (1D: no spin).
-void before_impulses(const Event1& e, std::vector<BodyState>* bodies) {
-    (*bodies)[e.a].v = lift_line(e.va_before);
-    (*bodies)[e.b].v = lift_line(e.vb_before);
+// The two bodies of an event as they were just before its impulses (When::before) or are
+// just after them (When::after); 1D: no spin.
+enum class When { before, after };
+void impulse_velocities(const Event1& e, When when, std::vector<BodyState>* bodies) {
+    const bool after = when == When::after;
+    (*bodies)[e.a].v = lift_line(after ? e.va_after : e.va_before);
+    (*bodies)[e.b].v = lift_line(after ? e.vb_after : e.vb_before);
 }
 template <int D>
-void before_impulses(const Event<D>& e, std::vector<BodyState>* bodies) {
-    (*bodies)[e.a].v = lift(e.before_a.v);
-    (*bodies)[e.a].w = lift_spin(e.before_a.w);
-    (*bodies)[e.b].v = lift(e.before_b.v);
-    (*bodies)[e.b].w = lift_spin(e.before_b.w);
+void impulse_velocities(const Event<D>& e, When when, std::vector<BodyState>* bodies) {
+    const bool after = when == When::after;
+    for (const auto& [body, u] :
+         {std::pair(e.a, after ? e.after_a : e.before_a), std::pair(e.b, after ? e.after_b : e.before_b)}) {
+        (*bodies)[body].v = lift(u.v);
+        (*bodies)[body].w = lift_spin(u.w);
+    }
 }
 
 // Every body's velocities just before the impacts of instants[which] (`pre`) and just after
@@ -129,7 +135,7 @@ void instant_velocities(const Scene& scene, const Recording& rec, std::size_t wh
     const auto& instant = rec.instants[which];
     *post = render::frame_state(scene, instant.t, instant.bodies).bodies;
     *pre = *post;
-    for (std::size_t k = instant.end; k-- > instant.first;) before_impulses(rec.events[k], pre);
+    for (std::size_t k = instant.end; k-- > instant.first;) impulse_velocities(rec.events[k], When::before, pre);
 }
 
 // `frame` drawn with the velocities of `at` (the poses stay the frame's).
@@ -138,19 +144,6 @@ void with_velocities(const std::vector<BodyState>& at, FrameState* frame) {
         frame->bodies[i].v = at[i].v;
         frame->bodies[i].w = at[i].w;
     }
-}
-
-// The two bodies of an event as they are just after its impulses.
-void after_impulses(const Event1& e, std::vector<BodyState>* bodies) {
-    (*bodies)[e.a].v = lift_line(e.va_after);
-    (*bodies)[e.b].v = lift_line(e.vb_after);
-}
-template <int D>
-void after_impulses(const Event<D>& e, std::vector<BodyState>* bodies) {
-    (*bodies)[e.a].v = lift(e.after_a.v);
-    (*bodies)[e.a].w = lift_spin(e.after_a.w);
-    (*bodies)[e.b].v = lift(e.after_b.v);
-    (*bodies)[e.b].w = lift_spin(e.after_b.w);
 }
 
 template <int D>
@@ -234,10 +227,10 @@ std::optional<Moments> moments_of(const Scene& scene, const SceneRun& run, const
     std::vector<BodyState> pre, post;
     instant_velocities(scene, rec, which, &pre, &post);
     if (scene.policy == Policy::sequential)
-        for (std::size_t k = instant.first; k < first_event; ++k) after_impulses(rec.events[k], &pre);
-    before_impulses(first, &pre);
+        for (std::size_t k = instant.first; k < first_event; ++k) impulse_velocities(rec.events[k], When::after, &pre);
+    impulse_velocities(first, When::before, &pre);
     post = pre;
-    for (std::size_t k = first_event; k < end_event; ++k) after_impulses(rec.events[k], &post);
+    for (std::size_t k = first_event; k < end_event; ++k) impulse_velocities(rec.events[k], When::after, &post);
     with_velocities(pre, &m.states[0]);
     with_velocities(post, &m.states[2]);
     m.instant = with_roles(collision_instant(first), pick.a, pick.b);

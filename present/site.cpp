@@ -71,6 +71,7 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         render::write_file_atomic(
             (dir / built[k].lesson.id / "index.html").string(),
             lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr, k + 1 < built.size() ? &built[k + 1] : nullptr));
+        render::write_file_atomic((dir / built[k].lesson.id / "teacher.html").string(), teacher_page(built[k]));
     }
     render::write_file_atomic((dir / "index.html").string(), index_page(built));
     render::write_file_atomic((dir / "style.css").string(), std::string(assets::site_style_css));

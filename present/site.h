@@ -3,7 +3,8 @@
 // the stylesheet and the WebAssembly module:
 //   DIR/index.html             every lesson with a thumbnail, its section and dimension
 //   DIR/style.css              one stylesheet, with print rules
-//   DIR/ID/index.html          a lesson (present/site_pages.h)
+//   DIR/ID/index.html          a lesson, the student's page (present/site_pages.h)
+//   DIR/ID/teacher.html        its teacher's page
 //   DIR/ID/...                 everything `collide render ID` writes (frames, data, Markdown),
 //                              energy.svg and momentum.svg
 //   DIR/collide-engine.js      the WebAssembly module, and the panels' script

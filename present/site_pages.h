@@ -21,11 +21,19 @@ struct SitePage {
     int variants_width = 0;          // of variants.png
 };
 
-// ID/index.html: goals, explanation, predictions, the figures, the animation, the worked
-// example, plots, questions with answers; `prev` and `next` for the pager (null at the ends).
+// ID/index.html, the student's page: goals, the set-up, predictions, the figures, animation and
+// plots ("Watch"), the predictions checked, the explanation, the worked example (folded until
+// every question below it is answered), "Check yourself" and "What if" (answers folded until
+// the student commits one); `prev` and `next` for the pager (null at the ends). Its print has
+// no answers.
 std::string lesson_page(const SitePage& page, const SitePage* prev, const SitePage* next);
 
-// index.html: every lesson with its thumbnail, section and dimension.
+// ID/teacher.html: the teacher's page of a lesson: level, prerequisites, time, misconceptions
+// with the lesson's evidence, questions for the class, how to run it live (the lesson's [[vary]]
+// inputs), the notes for the teacher, every answer and every worked example, unfolded.
+std::string teacher_page(const SitePage& page);
+
+// index.html: every lesson with its thumbnail, section and dimension, and its teacher's page.
 std::string index_page(const std::vector<SitePage>& all);
 
 // The figures' colours (render/style.h) for the Try-it panel's canvas, as CSS colours in JSON.

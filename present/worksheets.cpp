@@ -227,6 +227,9 @@ std::string key_page(const Lesson& L, const std::vector<StudentSheet>& sheets, s
             for (const auto& [key, value] : s.values)
                 o << "<tr><td>" << escape(key) << "</td><td>" << given(value) << "</td></tr>\n";
             o << "</table>\n";
+        } else {
+            o << "<p class=\"note\">This lesson declares no [[vary]] ranges: every student has the lesson's own "
+                 "numbers.</p>\n";
         }
         o << "<h2>Answers</h2>\n";
         for (std::size_t k = 0; k < s.asked.size(); ++k) o << key_answer(L, s.asked[k], s.answers[k]);

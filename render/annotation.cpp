@@ -151,6 +151,12 @@ void write_annotations_json(std::ostream& out, const Annotations& items, int dim
             << pixels(a.box.z) << ", " << pixels(a.box.w) << "]";
         if (a.kind == Mark::spin) out << ", \"sweep\": " << number(a.sweep);
         if (a.kind == Mark::label) out << ", \"of\": " << a.of << ", \"font_px\": " << pixels(a.font_px);
+        if (!a.outline.empty()) {
+            out << ", \"outline\": [";
+            for (std::size_t i = 0; i < a.outline.size(); ++i)
+                out << (i ? ", [" : "[") << pixels(a.outline[i].x) << ", " << pixels(a.outline[i].y) << "]";
+            out << "]";
+        }
         out << "}";
     }
     out << (items.empty() ? "]" : "\n" + pad + "]");

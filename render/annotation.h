@@ -53,12 +53,13 @@ struct Annotation {
     // body's pose: 1D [x]; 2D [x, y, angle]; 3D [x, y, z, qw, qx, qy, qz]. A label: the number
     // it prints, at full precision (empty for names).
     std::vector<double> value;
-    std::string text;        // labels: as drawn (rich text: "r_{a}", "ω = 1.5 rad/s"); 3D lever
-                             // arms: their name ("r_{a}")
-    ImVec4 box{0, 0, 0, 0};  // pixels (x0, y0, x1, y1): a label's box, an arrow's extent
-    double sweep = 0.0;      // spin: the arc's angle, radians, + counter-clockwise as seen
-    int of = -1;             // labels: the index of the item labelled; -1: none
-    float font_px = 0.0f;    // labels: the font's size (pixels): how tall the text is drawn
+    std::string text;             // labels: as drawn (rich text: "r_{a}", "ω = 1.5 rad/s"); 3D lever
+                                  // arms: their name ("r_{a}")
+    ImVec4 box{0, 0, 0, 0};       // pixels (x0, y0, x1, y1): a label's box, an arrow's extent
+    double sweep = 0.0;           // spin: the arc's angle, radians, + counter-clockwise as seen
+    int of = -1;                  // labels: the index of the item labelled; -1: none
+    float font_px = 0.0f;         // labels: the font's size (pixels): how tall the text is drawn
+    std::vector<ImVec2> outline;  // bodies in the 3D view: the projected outline (pixels, convex)
 
     // How it is drawn (not part of annotations.json).
     Colour colour = 0;
@@ -96,7 +97,7 @@ Annotation placed_label(const FontSet& fonts, LabelPlacer* placer, const Annotat
                         const LabelRequest& request, float pad, float gap);
 
 // The items as JSON objects {"kind", "body", "from", "to", "value", "text", "box"} (and
-// "sweep" for spins, "of" and "font_px" for labels): points and vectors with `dimension` components, a
+// "sweep" for spins, "of" and "font_px" for labels, "outline" for bodies of the 3D view): points and vectors with `dimension` components, a
 // one-component value as a number, `body` as the body's name (null for none).
 void write_annotations_json(std::ostream& out, const Annotations& items, int dimension,
                             const std::vector<std::string>& body_names, int indent);

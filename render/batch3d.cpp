@@ -117,6 +117,11 @@ void Batch3d::end(const char* what) {
     check_gl(gl_, what);
 }
 
+void Batch3d::clear_depth() {
+    gl_.DepthMask(GL_TRUE);
+    gl_.Clear(GL_DEPTH_BUFFER_BIT);
+}
+
 void Batch3d::ground(const GroundDraw& g, const std::vector<Shadow>& shadows) {
     // The ground: one quad of plane coordinates (m), pushed back in depth.
     const float e = g.extent;

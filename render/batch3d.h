@@ -80,6 +80,9 @@ public:
     void lines(const std::vector<Segment>& segments, bool depth_test, float depth_bias);
     // Ends a pass: depth test off; throws std::runtime_error on a GL error, naming `what`.
     void end(const char* what);
+    // Forgets the depth of everything drawn so far: what is drawn next is depth-tested only
+    // against itself (arrows over the bodies, yet each arrow shaded as a solid).
+    void clear_depth();
 
 private:
     struct GpuMesh {

@@ -267,7 +267,7 @@ ImVec2 LabelPlacer::place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float ga
                 const ImVec2 centre = add(anchor, mul(u, reach));
                 const ImVec4 r(centre.x - 0.5f * size.x, centre.y - 0.5f * size.y, centre.x + 0.5f * size.x,
                                centre.y + 0.5f * size.y);
-                if (free(r, strict == 1)) {
+                if (free(r, strict == 1) && (!acceptable_ || acceptable_(r))) {
                     taken_.push_back(r);
                     last_free_ = true;
                     return ImVec2(r.x, r.y);

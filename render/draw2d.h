@@ -6,7 +6,9 @@
 // ("m s⁻¹") are ordinary characters of the text font.
 #pragma once
 
+#include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <imgui.h>
@@ -59,6 +61,10 @@ public:
     // first).
     ImVec2 place(ImVec2 anchor, ImVec2 size, ImVec2 direction, float gap);
     bool last_free() const { return last_free_; }
+    // A further test every place() result must pass (e.g. "nearer its own body than any
+    // other"); none by default. place() falls back to a spot that fails it only as it does to
+    // a taken one: unreserved, with last_free() false.
+    void require(std::function<bool(const ImVec4&)> acceptable) { acceptable_ = std::move(acceptable); }
 
 private:
     bool free(const ImVec4& r, bool strict) const;
@@ -66,6 +72,7 @@ private:
     std::vector<ImVec4> taken_;
     std::vector<std::vector<ImVec2>> soft_;
     bool last_free_ = true;
+    std::function<bool(const ImVec4&)> acceptable_;
 };
 
 // A label with a soft paper-coloured backing so that it reads over lines and fills.

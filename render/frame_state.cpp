@@ -57,12 +57,7 @@ ImpactMark impact_mark(const Scene& scene, const Event1& e) {
 template <int D>
 ImpactMark impact_mark_of(const Event<D>& e) {
     ImpactMark m;
-    m.t = e.t;
-    m.a = e.a;
-    m.b = e.b;
-    m.point = lift(e.point);
-    m.normal = lift(e.normal);
-    m.impulse = lift(e.impulse);
+    static_cast<LiftedEvent&>(m) = lifted(e);
     return m;
 }
 

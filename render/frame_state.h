@@ -16,13 +16,8 @@ namespace collide::render {
 using collide::BodyState;  // engine/body.h: every body's state lifted to 3D
 
 // One collision as the diagrams draw it (docs/conventions.md: n from a into b, +P on b).
-struct ImpactMark {
-    double t = 0.0;  // s
-    std::size_t a = 0, b = 0;
-    Vec3 point = Vec3::Zero();    // m
-    Vec3 normal = Vec3::UnitX();  // unit
-    Vec3 impulse = Vec3::Zero();  // N s, on b
-    bool detailed = true;         // drawn with its value, n and r_a, r_b; else its impulse arrow only
+struct ImpactMark : LiftedEvent {  // t, a, b, point, normal, impulse on b (engine/world.h)
+    bool detailed = true;          // drawn with its value, n and r_a, r_b; else its impulse arrow only
 };
 
 struct TrailPoint {

@@ -17,6 +17,40 @@ namespace collide::render {
 
 namespace {
 
+// Distance (pixels) from p to a convex outline: 0 inside it.
+float distance_to_outline(const std::vector<ImVec2>& poly, ImVec2 p) {
+    if (poly.size() < 3) return std::numeric_limits<float>::max();
+    bool inside = true;
+    float best = std::numeric_limits<float>::max(), turn = 0.0f;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+        const ImVec2 a = poly[k], b = poly[(k + 1) % poly.size()];
+        const float ex = b.x - a.x, ey = b.y - a.y, px = p.x - a.x, py = p.y - a.y;
+        const float c = ex * py - ey * px;
+        if (c != 0.0f) {
+            if (turn == 0.0f) turn = c;
+            else if ((c > 0.0f) != (turn > 0.0f)) inside = false;
+        }
+        const float len2 = ex * ex + ey * ey;
+        const float t = len2 > 0.0f ? std::clamp((px * ex + py * ey) / len2, 0.0f, 1.0f) : 0.0f;
+        best = std::min(best, std::hypot(px - t * ex, py - t * ey));
+    }
+    return inside ? 0.0f : best;
+}
+
+// The body whose outline is nearest p (-1: none drawn); a tie goes to none.
+int nearest_outline(const std::vector<std::vector<ImVec2>>& outlines, ImVec2 p) {
+    int best = -1;
+    float best_d = std::numeric_limits<float>::max();
+    bool tie = false;
+    for (std::size_t i = 0; i < outlines.size(); ++i) {
+        if (outlines[i].empty()) continue;
+        const float d = distance_to_outline(outlines[i], p);
+        if (d < best_d) best = static_cast<int>(i), best_d = d, tie = false;
+        else if (d == best_d) tie = true;
+    }
+    return tie ? -1 : best;
+}
+
 double norm_of(const std::vector<double>& v) {
     double s = 0;
     for (double x : v) s += x * x;
@@ -203,8 +237,11 @@ void Scene3dView::draw_above(const FrameState& frame, const Decor& decor, const 
     Batch3d& b = I.batch;
     b.begin();
     b.meshes(o.bodies, MeshDepth::behind_lines);
-    b.meshes(o.arrows, MeshDepth::tested);
     b.lines(o.lines, true, 0.0005f);
+    // The arrows over every body (a body in front never hides another's velocity or spin),
+    // shaded among themselves.
+    b.clear_depth();
+    b.meshes(o.arrows, MeshDepth::tested);
     b.meshes(o.curl_heads, MeshDepth::tested);
     b.lines(o.impact_lines, false, 0.0f);
     b.meshes(o.impact_arrows, MeshDepth::over);
@@ -308,12 +345,40 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
             if (side * (q.x - edge.x) > 0) edge.x = q.x;
         pending.push_back({static_cast<int>(k), edge, ImVec2(side, 0), I.scene.bodies[i].name, {}, c.ink, true});
     }
+    // Each body's screen outline, on its item too (annotations.json: tests check the labels
+    // against them).
+    std::vector<std::vector<ImVec2>> outlines(n);
+    for (std::size_t i = 0; i < n; ++i)
+        if (I.solids.bodies[i].drawn()) outlines[i] = I.screen_outline(i, frame.bodies[i]);
+    for (Annotation& a : items)
+        if (a.kind == Mark::body && a.body >= 0 && static_cast<std::size_t>(a.body) < n)
+            a.outline = outlines[static_cast<std::size_t>(a.body)];
     const float pad = I.style.px(3.0f), gap = I.style.px(6.0f);
-    for (const LabelRequest& p : pending)
-        if (!p.text.empty()) {
+    for (const LabelRequest& p : pending) {
+        if (p.text.empty()) continue;
+        const int body = p.of >= 0 ? items[static_cast<std::size_t>(p.of)].body : -1;
+        if (body < 0 || static_cast<std::size_t>(body) >= n || outlines[static_cast<std::size_t>(body)].empty()) {
             Annotation a = placed_label(fonts, labels, items, p, pad, gap);
             if (labels->last_free()) items.push_back(std::move(a));  // else left out
+            continue;
         }
+        // A body's label stands nearer that body than any other: at its arrow's tip where that
+        // holds, else further back along the arrow towards the body (a leader line joins it).
+        labels->require([&outlines, body](const ImVec4& r) {
+            return nearest_outline(outlines, ImVec2(0.5f * (r.x + r.z), 0.5f * (r.y + r.w))) == body;
+        });
+        const ImVec2 centre = screen(frame.bodies[static_cast<std::size_t>(body)].x);
+        for (const float along : {1.0f, 0.6f, 0.3f, 0.0f}) {
+            LabelRequest q = p;
+            q.anchor = ImVec2(centre.x + along * (p.anchor.x - centre.x), centre.y + along * (p.anchor.y - centre.y));
+            Annotation a = placed_label(fonts, labels, items, q, pad, gap);
+            if (labels->last_free()) {
+                items.push_back(std::move(a));
+                break;
+            }  // else further back, or left out
+        }
+        labels->require(nullptr);
+    }
     return items;
 }
 

@@ -22,9 +22,9 @@ struct Palette {
     Colour grid = rgb(222, 222, 218);
     Colour static_fill = rgb(214, 214, 210);  // ground, walls, static bodies
     Colour hatch = rgb(90, 90, 92);
-    // The arrows' colours stay apart for readers with red-green colour blindness too: each
-    // pair differs by at least 15 (CIELAB ΔE) in normal vision and in deuteranopia and
-    // protanopia as simulated (tests/render/palette_test.cpp). (A violet spin was 6.6 from
+    // The arrows' colours stay apart for readers with colour blindness too: each pair differs
+    // by at least 15 (CIELAB ΔE) in normal vision and in deuteranopia, protanopia and
+    // tritanopia as simulated (tests/render/palette_test.cpp). (A violet spin was 6.6 from
     // the blue velocity for deuteranopes.)
     Colour velocity = rgb(29, 78, 216);      // blue
     Colour spin = rgb(200, 110, 0);          // amber
@@ -33,12 +33,15 @@ struct Palette {
     Colour lever = rgb(40, 40, 44);          // r vectors (dashed): near the ink
     Colour panel = rgb(255, 255, 255, 236);  // table and legend backgrounds
     Colour panel_border = rgb(200, 200, 196);
-    // Flat body fills, in scene order (cycled).
+    // Flat body fills, in scene order (cycled). The first two, the pair of most figures, stay
+    // apart from every arrow colour, flat and shaded (80 %), by ΔE 15 in normal vision and in
+    // deuteranopia, protanopia and tritanopia as simulated (tests/render/palette_test.cpp): B
+    // is sand, not orange (an orange B's shaded faces were the amber spin's colour).
     static constexpr int kFills = 6;
-    Colour fills[kFills] = {rgb(141, 179, 226), rgb(245, 185, 113), rgb(155, 211, 155),
+    Colour fills[kFills] = {rgb(141, 179, 226), rgb(240, 210, 150), rgb(155, 211, 155),
                             rgb(212, 166, 224), rgb(242, 142, 142), rgb(158, 219, 215)};
     // The same hues, darker: trails and 3D outlines.
-    Colour darks[kFills] = {rgb(46, 94, 160),  rgb(184, 110, 24), rgb(52, 128, 52),
+    Colour darks[kFills] = {rgb(46, 94, 160),  rgb(148, 130, 93), rgb(52, 128, 52),
                             rgb(128, 68, 150), rgb(170, 52, 52),  rgb(38, 130, 124)};
 };
 

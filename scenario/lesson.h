@@ -89,6 +89,26 @@ struct LessonFigure {
     std::string key;             // "figure[K]"
 };
 
+// [teacher] (docs/formats/lesson-files.md, "The teacher's page"): what the teacher's page of a
+// lesson says beyond the lesson's own text and answers. Bundled lessons must have it (the tests
+// refuse one without); a user's lesson may leave it out, and its teacher's page says so.
+struct LessonMisconception {
+    std::string belief;    // what a student may think, in the student's words
+    std::string evidence;  // what the lesson shows against it (a figure, a number, a panel)
+};
+struct LessonClassQuestion {
+    std::string question;    // to ask the class
+    std::string listen_for;  // what a good answer contains (optional)
+};
+struct LessonTeacher {
+    std::string level;                       // e.g. "Final year of school or first year of university"
+    std::vector<std::string> prerequisites;  // what the students should know before it
+    int minutes = 0;                         // the time it needs in class
+    std::vector<LessonMisconception> misconceptions;
+    std::vector<LessonClassQuestion> ask;  // questions to ask in class
+    std::string live;                      // how to run it live: what to move, what to look for
+};
+
 // [penalty] (1D lessons, docs/formats/lesson-files.md): the first collision again with a penalty
 // (spring-damper) contact instead of the impulse (engine/penalty.h, teach/lesson_penalty.h).
 struct LessonPenalty {
@@ -100,25 +120,36 @@ struct LessonPenalty {
     std::string step_key = "penalty";    // when the contact is run)
 };
 
-// [[vary]] (worksheets, docs/formats/lesson-files.md): a range a student's value of one input is drawn
-// from: `key` of the [[body]] named `body` (or of [scene] when body is "scene") takes one of
-// lo, lo + step, ... up to hi. The key is a number the table already has (its lesson value).
+// [[vary]] (docs/formats/lesson-files.md, "The lesson's inputs"): one input of the lesson, a
+// range its value is drawn from (worksheets) or set in (the Try-it panel's slider): `key` of the
+// [[body]] named `body` (or of [scene] when body is "scene") takes one of lo, lo + step, ...,
+// hi. The key is a number the table already has (its lesson value), or one component of a
+// vector it has ("v.x": field "v", component 0). Bodies listed in `in_proportion` have the
+// same key changed with it, each in proportion to its own value (a row's spacing).
 struct LessonVary {
-    std::string body;  // a body's name, or "scene"
-    std::string key;   // e.g. "mass"
+    std::string body;                        // a body's name, or "scene"
+    std::string key;                         // as written: "mass", "v.x"
+    std::string field;                       // the table's key: "mass", "v"
+    int component = -1;                      // -1: the number itself; 0, 1, 2: x, y, z of a vector
+    std::vector<std::string> in_proportion;  // other bodies whose `key` scales with this one
     double lo = 0.0, hi = 0.0, step = 1.0;
     double lesson_value = 0.0;  // the lesson's own value: what the table gives the key
     SourcePos pos;              // of the entry (for errors found when a draw is run)
     std::string where;          // "vary[K]"
 
-    // "A.mass" or "scene.restitution": the name lesson_with_values takes.
+    // "A.mass", "ball.v.x" or "scene.restitution": the name lesson_with_values takes (the
+    // Try-it panel's query string, key.json).
     std::string name() const { return body + "." + key; }
-    // How many values the grid has: floor((hi - lo) / step) + 1.
+    // How many values the grid has: (hi - lo) / step + 1 (the step divides the range; the
+    // reader refuses one that does not).
     std::size_t count() const;
     // The k-th value of the grid, lo + k step, rounded to 1e-9 so that it prints as written
-    // (0.1 + 2 * 0.1 gives 0.3, not 0.30000000000000004).
+    // (0.1 + 2 * 0.1 gives 0.3, not 0.30000000000000004); the last is hi exactly.
     double value(std::size_t k) const;
 };
+
+// The most values a [[vary]] grid may have.
+constexpr std::size_t kMaxVaryValues = 1000000;
 
 struct Lesson {
     std::string file;         // as given or found
@@ -129,10 +160,14 @@ struct Lesson {
     std::string title;
     std::string section;  // the page's section it teaches
     std::vector<std::string> goals;
-    std::string explanation;  // plain language, Markdown paragraphs
+    // The givens, shown before the predictions ("The set-up"): what is there and how it moves,
+    // nothing the questions ask. Markdown paragraphs; may be empty (a user's lesson).
+    std::string setup;
+    std::string explanation;  // plain language, Markdown paragraphs; shown after the figures
     // For the teacher, not the students (commands to run, files to read): the site shows it
     // in its own section, left out of the student's print.
     std::string teacher_notes;
+    std::optional<LessonTeacher> teacher;  // [teacher]: the teacher's page (may be absent)
     std::vector<LessonQuestion> questions;
     Scene scene;
     std::string label;  // the scene's own label beside its variants (e.g. "e = 0.5")
@@ -158,10 +193,21 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
 
 // The lesson with some of its scene's values changed and everything validated again, as if
 // the file had been written so: `values` maps "BODY.KEY" (a [[body]] named BODY) or
-// "scene.KEY" ([scene]) to a number (e.g. {"A.mass": 4.0, "scene.restitution": 1.0}). The
-// result has no questions and no [[vary]] (only its scene, view, variants, figures and [penalty]). Throws InputError
-// naming the changed key when there is no such body or the changed lesson is refused.
+// "scene.KEY" ([scene]) to a number (e.g. {"A.mass": 4.0, "scene.restitution": 1.0}); KEY may
+// name one component of a vector the table gives ("ball.v.x", "A.position.y"). Each changes
+// the number it names and nothing else (a question's what_if). The result has no questions
+// and no [[vary]] (only its scene, view, variants, figures and [penalty]). Throws InputError
+// naming the changed key when there is no such body or key or the changed lesson is refused.
 Lesson lesson_with_values(const Lesson& lesson, const std::map<std::string, double>& values);
+
+// The numbers a set of the lesson's [[vary]] inputs changes: `inputs` itself, and for an input
+// with in_proportion each of those bodies' key, times value / the input's lesson value. Throws
+// InputError naming a body's key that is given beside the input that moves it.
+std::map<std::string, double> input_values(const Lesson& lesson, const std::map<std::string, double>& inputs);
+
+// lesson_with_values(lesson, input_values(lesson, inputs)): the lesson as the Try-it panel and a
+// worksheet run it with these inputs.
+Lesson lesson_with_inputs(const Lesson& lesson, const std::map<std::string, double>& inputs);
 
 // ---- The lesson library on disk (scenario/lesson_library.cpp) ----
 

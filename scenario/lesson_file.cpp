@@ -34,7 +34,8 @@ using lesson_parse::parse_vary;
 using lesson_parse::strings;
 
 const std::vector<std::string>& lesson_tables() {
-    static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty", "figure", "vary"};
+    static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty",
+                                                    "figure", "vary",     "teacher"};
     return tables;
 }
 
@@ -57,7 +58,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
         root.fail("",
                   "missing table [lesson] (a scenario file without one is run with "
                   "'collide step' or 'collide render FILE')");
-    lt->allow_only({"id", "order", "title", "section", "goals", "explanation", "teacher_notes", "label"});
+    lt->allow_only({"id", "order", "title", "section", "goals", "setup", "explanation", "teacher_notes", "label"});
     L.id = lt->string("id", "a lesson id (letters, digits and -)").value_or("");
     if (L.id.empty()) lt->fail("id", "missing key 'id' (used as `collide render ID`)");
     for (char ch : L.id)
@@ -68,10 +69,12 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     if (L.title.empty()) lt->fail("title", "missing key 'title'");
     L.section = lt->string("section", "the page's section it teaches").value_or("");
     L.goals = strings(*lt, "goals", "a list of learning goals (strings)");
+    L.setup = lt->string("setup", "the set-up: the givens (text)").value_or("");
     L.explanation = lt->string("explanation", "the explanation (text)").value_or("");
     L.teacher_notes = lt->string("teacher_notes", "notes for the teacher (text)").value_or("");
     if (L.scene.title.empty()) L.scene.title = L.title;
     L.label = lt->string("label", "the scene's label beside its variants").value_or("");
+    L.teacher = lesson_parse::parse_teacher(root);
 
     // [[variant]]: the scene again with other scene-wide settings.
     for (const TableReader& v : root.tables("variant")) {

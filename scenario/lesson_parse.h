@@ -2,6 +2,7 @@
 // tables of the file and needs these from the others. Not for use outside scenario/.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,5 +21,8 @@ LessonQuestion parse_question(const TableReader& q, const Lesson& L);
 // [[vary]]: the ranges a worksheet draws each student's values from, checked against the
 // tables of the file they change (scenario/lesson_values.cpp).
 void parse_vary(const TableReader& root, const toml::table& file, Lesson& L);
+
+// [teacher]: the teacher's page's content (scenario/lesson_teacher.cpp); none when absent.
+std::optional<LessonTeacher> parse_teacher(const TableReader& root);
 
 }  // namespace collide::lesson_parse

@@ -249,13 +249,13 @@ std::vector<LessonAnswer> answer(const Lesson& L, const Recording<D>& run, const
             }
         }
         // The text: the number (or vector) to 4 significant digits, then the unit. A vector's
-        // components below 1e-9 of its largest print as 0: the world finds contacts to 1e-10 m
-        // (World::kTouch), so a normal, and what follows from it, is known to about that
-        // (a tangential impulse of 1e-10 N s on a 0.3 N s blow is that, not friction).
+        // components below 5e-5 of its largest print as 0: at the 4 digits of the largest they
+        // round to 0 (as notation::vec writes vectors for students), and the world finds
+        // contacts only to 1e-10 m (World::kTouch) anyway. The value keeps full precision.
         // Four significant digits, as students write them (issue: 3 or 4 in student text).
         const auto n = [](double x, double floor) { return notation::num_answer(std::abs(x) < floor ? 0.0 : x); };
         if (a.is_vector) {
-            const double floor = std::max(1e-12, 1e-9 * a.vector.cwiseAbs().maxCoeff());
+            const double floor = std::max(1e-12, 5e-5 * a.vector.cwiseAbs().maxCoeff());
             a.text = "(" + n(a.vector.x(), floor) + ", " + n(a.vector.y(), floor) +
                      (D == 3 ? ", " + n(a.vector.z(), floor) : "") + ")";
         } else {
@@ -325,7 +325,7 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
         for (const std::string& g : L.goals) out << "- " << g << "\n";
         out << "\n";
     }
-    if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
+    if (!L.setup.empty()) out << "## The set-up\n\n" << L.setup << "\n\n";
     const auto answer_at = [&](std::size_t i) { return i < answers.size() ? &answers[i] : nullptr; };
     std::vector<std::size_t> predict, others;
     for (std::size_t i = 0; i < L.questions.size(); ++i)
@@ -357,6 +357,8 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
             write_answer(q, answer_at(predict[k]), "Check your prediction", out);
         }
     }
+    // The explanation after the figures and the predictions checked, as the lesson page has it.
+    if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
     if (!others.empty()) {
         out << "## Questions\n\n";
         for (std::size_t k = 0; k < others.size(); ++k) {

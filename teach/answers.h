@@ -76,8 +76,9 @@ std::vector<LessonAnswer> answer_questions(const Lesson& lesson, const AnyRecord
 // The same from a run of the lesson's scene sampled at its end only.
 std::vector<LessonAnswer> answer_questions(const Lesson& lesson);
 
-// The lesson as Markdown: title, the page's section, goals, explanation, the predictions
-// ("Before you watch", before the figure), the figure, the predictions checked, the questions
+// The lesson as Markdown: title, the page's section, goals, the set-up, the predictions
+// ("Before you watch", before the figure), the figure, the predictions checked, the
+// explanation, the questions
 // with their answers (in <details>, opened on click), and a link to the worked example.
 void write_lesson_markdown(const Lesson& lesson, const std::vector<LessonAnswer>& answers, std::ostream& out);
 

@@ -53,12 +53,7 @@ void place(CollisionInstant::Side* side, const Pose3& p) {
 template <int D>
 CollisionInstant instant(const Event<D>& e) {
     CollisionInstant c;
-    c.t = e.t;
-    c.a = e.a;
-    c.b = e.b;
-    c.point = lift(e.point);
-    c.normal = lift(e.normal);
-    c.impulse = lift(e.impulse);
+    static_cast<LiftedEvent&>(c) = lifted(e);
     c.before_a.v = lift(e.before_a.v);
     c.before_a.w = lift_spin(e.before_a.w);
     c.before_b.v = lift(e.before_b.v);

@@ -18,13 +18,10 @@ namespace collide {
 
 // The two bodies at the instant of a collision event, every vector embedded in 3D
 // (1D: along x; 2D: the xy plane, spins along z).
-struct CollisionInstant {
-    double t = 0.0;               // s
-    std::size_t a = 0, b = 0;     // scene indices; the normal points from a into b
-    Vec3 point = Vec3::Zero();    // m (1D: unused)
-    Vec3 normal = Vec3::UnitX();  // unit (1D: +x, b is to the right of a)
-    Vec3 impulse = Vec3::Zero();  // N s on b: what the world applied
-    using Side = BodyState;       // engine/body.h: x, q (2D: angle), v, w just before
+// t, a, b (scene indices), point (m; 1D: unused), normal (unit; 1D: +x, b is to the right of
+// a) and impulse (N s on b: what the world applied): engine/world.h.
+struct CollisionInstant : LiftedEvent {
+    using Side = BodyState;  // engine/body.h: x, q (2D: angle), v, w just before
     Side before_a, before_b;
     // Just after it, as the world resolved it.
     Vec3 va_after = Vec3::Zero(), wa_after = Vec3::Zero(), vb_after = Vec3::Zero(), wb_after = Vec3::Zero();

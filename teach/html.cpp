@@ -67,17 +67,58 @@ std::string math(const std::string& text) {
     return out;
 }
 
-// Paragraphs separated by blank lines.
+// **bold** as <strong> in text math() has made (which leaves * alone).
+std::string strong(const std::string& html) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t open; (open = html.find("**", at)) != std::string::npos;) {
+        const std::size_t close = html.find("**", open + 2);
+        if (close == std::string::npos || close == open + 2) break;
+        out += html.substr(at, open - at) + "<strong>" + html.substr(open + 2, close - open - 2) + "</strong>";
+        at = close + 2;
+    }
+    return out + html.substr(at);
+}
+
+// A paragraph's text: `code` as it is written (commands, file names: no subscripts), the rest
+// in our notation, **bold**.
+std::string inline_text(const std::string& text) {
+    std::string out;
+    std::size_t at = 0;
+    for (std::size_t open; (open = text.find('`', at)) != std::string::npos;) {
+        const std::size_t close = text.find('`', open + 1);
+        if (close == std::string::npos) break;
+        out += strong(math(text.substr(at, open - at))) + "<code>" + escape(text.substr(open + 1, close - open - 1)) +
+               "</code>";
+        at = close + 1;
+    }
+    return out + strong(math(text.substr(at)));
+}
+
+// Paragraphs separated by blank lines; in a paragraph, lines that start with "- " are the items
+// of a list (an item goes on over the lines after it that do not start one); **bold**, `code`.
 std::string paragraphs(const std::string& text) {
     std::string out, para;
-    std::istringstream in(text);
+    std::vector<std::string> items;
     const auto flush = [&] {
-        if (!para.empty()) out += "<p>" + math(para) + "</p>\n";
+        if (!para.empty()) out += "<p>" + inline_text(para) + "</p>\n";
+        if (!items.empty()) {
+            out += "<ul>\n";
+            for (const std::string& item : items) out += "<li>" + inline_text(item) + "</li>\n";
+            out += "</ul>\n";
+        }
         para.clear();
+        items.clear();
     };
+    std::istringstream in(text);
     for (std::string line; std::getline(in, line);) {
-        if (line.find_first_not_of(" \t\r") == std::string::npos) {
+        const std::size_t first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos) {
             flush();
+        } else if (line.compare(first, 2, "- ") == 0) {
+            items.push_back(line.substr(first + 2));
+        } else if (!items.empty()) {
+            items.back() += ' ' + line.substr(first);
         } else {
             if (!para.empty()) para += ' ';
             para += line;
@@ -198,33 +239,62 @@ std::string worked_html(const SolveProblem& P, const Solution& S, const std::str
 
 namespace {
 
-// The unit of a [[vary]] key, as a slider's label shows it ("" for a pure number).
-std::string vary_unit(const std::string& key) {
-    if (key == "mass") return "kg";
-    if (key == "v" || key == "speed") return "m/s";
-    if (key == "w") return "rad/s";
-    if (key == "angle") return "rad";
-    if (key == "position" || key == "x" || key == "length" || key == "width" || key == "height" || key == "radius" ||
-        key == "size")
+// The unit of a [[vary]] key's field, as a slider's label shows it ("" for a pure number).
+std::string vary_unit(const std::string& field) {
+    if (field == "mass") return "kg";
+    if (field == "v" || field == "speed") return "m/s";
+    if (field == "w") return "rad/s";
+    if (field == "angle") return "rad";
+    if (field == "position" || field == "x" || field == "length" || field == "width" || field == "height" ||
+        field == "radius" || field == "size" || field == "offset")
         return "m";
-    if (key == "inertia") return "kg m^2";
-    if (key == "duration" || key == "output_dt") return "s";
+    if (field == "inertia") return "kg m^2";
+    if (field == "duration" || field == "output_dt") return "s";
+    if (field == "gravity") return "m/s^2";
     return "";
 }
 
-// A slider's label in our notation: "m of A (kg)", "e (the scene)".
-std::string vary_label(const LessonVary& v) {
-    static const char* const symbols[][2] = {{"mass", "m"},        {"v", "v"},        {"w", "ω"},       {"angle", "θ"},
-                                             {"restitution", "e"}, {"friction", "μ"}, {"position", "x"}};
-    std::string symbol = v.key;
+// A [[vary]] input's symbol in our notation: "m", "v_x", "ω_z", "x" (a position's x), "e".
+std::string vary_symbol(const LessonVary& v) {
+    static const char* const symbols[][2] = {
+        {"mass", "m"},     {"v", "v"},        {"w", "ω"},      {"angle", "θ"},  {"restitution", "e"},
+        {"friction", "μ"}, {"position", "x"}, {"radius", "r"}, {"length", "L"}, {"gravity", "g"}};
+    static const char* const edges[] = {"width", "height", "depth"};
+    const char axis = static_cast<char>('x' + std::max(0, v.component));
+    if (v.component >= 0 && v.field == "position") return std::string(1, axis);
+    if (v.component >= 0 && v.field == "size") return edges[v.component];
+    std::string symbol = v.field;
     for (const auto& s : symbols)
-        if (v.key == s[0]) symbol = s[1];
-    const std::string unit = vary_unit(v.key);
-    if (v.body == "scene") return symbol + (symbol == v.key ? "" : " (" + v.key + ")");
-    return symbol + " of " + v.body + (unit.empty() ? "" : " (" + unit + ")");
+        if (v.field == s[0]) symbol = s[1];
+    if (v.component >= 0) symbol += std::string("_") + axis;
+    return symbol;
 }
 
+// A slider's label in our notation: "m of A (kg)", "v_x of ball (m/s)", "e (restitution)",
+// "x of domino 2 (m), and of domino 3, …, domino 15 in proportion".
+std::string vary_label(const LessonVary& v) {
+    const std::string symbol = vary_symbol(v);
+    const std::string unit = vary_unit(v.field);
+    if (v.body == "scene")
+        return symbol + (symbol == v.key ? "" : " (" + v.key + ")") + (unit.empty() ? "" : ", " + unit);
+    std::string label = symbol + " of " + v.body + (unit.empty() ? "" : " (" + unit + ")");
+    const std::vector<std::string>& others = v.in_proportion;
+    if (others.size() == 1) label += ", and of " + others[0] + " in proportion";
+    if (others.size() == 2) label += ", and of " + others[0] + " and " + others[1] + " in proportion";
+    if (others.size() > 2) label += ", and of " + others.front() + ", …, " + others.back() + " in proportion";
+    return label;
+}
+
+// A number as an HTML attribute: the shortest decimal that reads back as the same double
+// ("0.1", not "0.10000000000000001": a browser would take the longer one at its word, and a
+// slider from 0 to 1 in such steps would stop at 0.9).
 std::string number_attr(double x) {
+    for (int precision = 1; precision <= 17; ++precision) {
+        std::ostringstream o;
+        o.precision(precision);
+        o << x;
+        if (std::stod(o.str()) == x) return o.str();
+    }
     std::ostringstream o;
     o.precision(17);
     o << x;
@@ -244,6 +314,12 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
       << ", and works out the collision " << (L.figures.empty() ? "of the first impact" : "of the figure above")
       << " step by step. Nothing is sent anywhere.</p>\n";
     o << "<p class=\"tryit-status note\" role=\"status\">Loading the engine…</p>\n";
+    if (L.vary.empty())
+        o << "<p class=\"tryit-novary\">This lesson has no inputs to change: its file declares no [[vary]] ranges "
+             "(docs/formats/lesson-files.md, \"The lesson's inputs\"), so the panel plays the lesson's own run.</p>\n";
+    // Lines about the page's address (?A.mass=3): a name the lesson has no input for, a value
+    // outside its range (try-it.js fills it in).
+    o << "<ul class=\"tryit-query\" hidden></ul>\n";
     if (!L.vary.empty()) {
         o << "<div class=\"tryit-inputs\" role=\"group\" aria-label=\"The lesson's inputs\">\n";
         for (std::size_t k = 0; k < L.vary.size(); ++k) {
@@ -257,6 +333,10 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
               << "</output></div>\n";
         }
         o << "<button type=\"button\" class=\"tryit-reset\">The lesson's values</button>\n</div>\n";
+        std::string names;
+        for (const LessonVary& v : L.vary) names += (names.empty() ? "" : ", ") + v.name();
+        o << "<p class=\"tryit-names note\">The page's address sets them too: index.html?" << escape(L.vary[0].name())
+          << "=" << number_attr(L.vary[0].hi) << " (the inputs' names: " << escape(names) << ").</p>\n";
     }
     if (d < 3)
         o << "<canvas class=\"tryit-scene\" width=\"960\" height=\"" << (d == 1 ? 300 : 480)

@@ -18,7 +18,8 @@ std::string escape(const std::string& s);
 // Text in our notation (v_pa, I_a⁻¹) as HTML: escaped, subscripts as <sub>, and the plain
 // superscripts lesson texts write (I^-1, R^T) as <sup>.
 std::string math(const std::string& text);
-// Paragraphs separated by blank lines, each as <p> (math()).
+// Paragraphs separated by blank lines, each as <p> (math()); lines that start with "- " as the
+// items of a list (<ul>), **bold** as <strong> and `code` as <code> (as written, no subscripts).
 std::string paragraphs(const std::string& text);
 
 // A collision worked out (the lesson pages of collide material, the answer key of collide
@@ -44,7 +45,11 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
 // impulse, energy and momentum of the page's collision and its worked example, all recomputed
 // by the engine in the page (assets/site/try-it.js, with `root`collide-engine.js); `fps` is the
 // frames' rate. The data the script needs is try_it_data_js's, in the page's folder as
-// try-it-lesson.js. A query string such as ?A.mass=3 sets the inputs.
+// try-it-lesson.js. A query string such as ?A.mass=3 sets the inputs; what it asks and the
+// panel cannot do (a name the lesson has no input for, a value outside the range) is said in
+// a line of the panel (.tryit-query), and a lesson without [[vary]] says that it has no inputs.
+// The slider's numbers are written as the shortest decimals that read back exactly, so that a
+// browser's decimal step reaches max.
 std::string try_it_html(const Lesson& lesson, double fps, const std::string& root);
 // try-it-lesson.js: the lesson's file as text (the engine reads it as `collide` does) and the
 // figures' colours (`palette`, a JSON object: render/style.h), as `window.collideTryIt`. A

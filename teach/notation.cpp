@@ -105,10 +105,22 @@ F unit(const std::string& u) {
 namespace {
 thread_local bool student = false;  // StudentNumbers
 constexpr double kNoise = 1e-10;    // SI: shown as 0 for students
-constexpr double kRelativeNoise = 1e-9;
+// Four significant digits of a vector's largest entry L place its last digit at L/1000 or
+// L/10000 at the finest: an entry below 5e-5 L rounds to 0 at the vector's own precision.
+constexpr double kRelativeNoise = 5e-5;
 
-// A vector's or matrix's entries for students: those below 1e-9 of the largest set to 0.
+// A vector's or matrix's entries for students: those below 5e-5 of the largest set to 0.
 double cleaned(double x, double largest) { return student && std::abs(x) < kRelativeNoise * largest ? 0.0 : x; }
+
+// printf's %.Ng, but a number from 10 000 to under 1 000 000 written out ("20000", not
+// "2e+04"): its rounded value has no more digits than its integer part.
+std::string general(double x, int digits) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+    const double rounded = std::strtod(buf, nullptr);
+    if (std::abs(rounded) >= 1e4 && std::abs(rounded) < 1e6) std::snprintf(buf, sizeof buf, "%.0f", rounded);
+    return buf;
+}
 }  // namespace
 
 StudentNumbers::StudentNumbers() : was_(student) { student = true; }
@@ -117,9 +129,7 @@ StudentNumbers::~StudentNumbers() { student = was_; }
 std::string num_text(double x) {
     if (student && std::abs(x) < kNoise) x = 0.0;
     if (x == 0.0) x = 0.0;  // no "-0"
-    char buf[32];
-    std::snprintf(buf, sizeof buf, student ? "%.4g" : "%.6g", x);
-    return buf;
+    return general(x, student ? 4 : 6);
 }
 
 std::string num_answer(double x) {
@@ -131,9 +141,7 @@ std::string num_answer(double x) {
 
 std::string sig_text(double x, int digits) {
     if (std::abs(x) < 1e-12) return "0";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
-    return true_minus(buf);
+    return true_minus(general(x, digits));
 }
 
 std::string true_minus(std::string s) {

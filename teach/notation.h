@@ -26,8 +26,8 @@ inline F f(const std::string& text) { return {text, to_tex(text)}; }
 F words(const std::string& text);
 // A unit after a number: " m/s" / "\,\mathrm{m/s}".
 F unit(const std::string& u);
-// A number to 6 significant digits ("-0" shown as "0"; 1e-07 as 1\times10^{-7} in LaTeX);
-// 4 for students (StudentNumbers).
+// A number to 6 significant digits ("-0" shown as "0"; 1e-07 as 1\times10^{-7} in LaTeX;
+// 10 000 to 1 000 000 written out, "20000"); 4 for students (StudentNumbers).
 F num(double x);
 std::string num_text(double x);
 // An answer for students: 4 significant digits ("-0" shown as "0"). Full precision stays in
@@ -46,9 +46,10 @@ std::string components_text(const Vec3& v, int dim, std::string (*number)(double
 std::string num_data(double x);
 // Numbers for students (the site, worksheets, a lesson's worked example) while one of these
 // lives on the thread: num(), vec(), spin(), mat() and num_text() give 4 significant digits,
-// and show as 0 what is floating-point noise of an exact event: a vector's component below
-// 1e-9 of its largest, and any value below 1e-10 in SI units (1e-9 of 0.1 m, 0.1 m/s, 0.1 kg:
-// smaller than anything a lesson is about). `collide solve` keeps 6 digits for checking.
+// and show as 0 what is floating-point noise of an exact event or below the precision shown: a
+// vector's component below 5e-5 of its largest (it rounds to 0 at the vector's 4 digits), and
+// any value below 1e-10 in SI units (1e-9 of 0.1 m, 0.1 m/s, 0.1 kg: smaller than anything a
+// lesson is about). `collide solve` keeps 6 digits for checking.
 class StudentNumbers {
 public:
     StudentNumbers();

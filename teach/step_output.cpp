@@ -7,6 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -135,22 +136,30 @@ ordered_json velocity_json(const typename Event<D>::Velocity& u) {
     return {{"v", arr(u.v)}, {"w", arr(u.w)}};
 }
 
-template <int D>
-std::string event_json_of(const Scene& s, const Event<D>& e, bool energy_gain) {
-    const std::string& a = s.bodies[e.a].name;
-    const std::string& b = s.bodies[e.b].name;
+// One collision as JSON, in the order every dimension writes it (point, normal and impulse:
+// numbers in 1D, arrays in 2D and 3D; each body's velocities before and after).
+std::string event_json_with(double t, const std::string& a, const std::string& b, ordered_json point,
+                            ordered_json normal, ordered_json impulse, ordered_json before_a, ordered_json before_b,
+                            ordered_json after_a, ordered_json after_b, bool energy_gain, bool approximate = false) {
     ordered_json j;
-    j["t"] = e.t;
+    j["t"] = t;
     j["a"] = a;
     j["b"] = b;
-    j["point"] = arr(e.point);
-    j["normal"] = arr(e.normal);
-    j["impulse"] = arr(e.impulse);
-    j["before"] = {{a, velocity_json<D>(e.before_a)}, {b, velocity_json<D>(e.before_b)}};
-    j["after"] = {{a, velocity_json<D>(e.after_a)}, {b, velocity_json<D>(e.after_b)}};
+    j["point"] = std::move(point);
+    j["normal"] = std::move(normal);
+    j["impulse"] = std::move(impulse);
+    j["before"] = {{a, std::move(before_a)}, {b, std::move(before_b)}};
+    j["after"] = {{a, std::move(after_a)}, {b, std::move(after_b)}};
     j["energy_gain"] = energy_gain;
-    if (e.approximate) j["approximate"] = kApproximate;  // only then: other runs print as before
+    if (approximate) j["approximate"] = kApproximate;  // only then: other runs print as before
     return j.dump();
+}
+
+template <int D>
+std::string event_json_of(const Scene& s, const Event<D>& e, bool energy_gain) {
+    return event_json_with(e.t, s.bodies[e.a].name, s.bodies[e.b].name, arr(e.point), arr(e.normal), arr(e.impulse),
+                           velocity_json<D>(e.before_a), velocity_json<D>(e.before_b), velocity_json<D>(e.after_a),
+                           velocity_json<D>(e.after_b), energy_gain, e.approximate);
 }
 
 template <int D>
@@ -365,19 +374,8 @@ template std::string state_text(const Scene&, double, const std::vector<Body2>&,
 template std::string state_text(const Scene&, double, const std::vector<Body3>&, std::size_t);
 
 std::string event_json(const Scene& s, const Event1& e, bool energy_gain) {
-    const std::string& a = s.bodies[e.a].name;
-    const std::string& b = s.bodies[e.b].name;
-    ordered_json j;
-    j["t"] = e.t;
-    j["a"] = a;
-    j["b"] = b;
-    j["point"] = e.point;
-    j["normal"] = 1.0;
-    j["impulse"] = e.impulse;
-    j["before"] = {{a, {{"v", e.va_before}}}, {b, {{"v", e.vb_before}}}};
-    j["after"] = {{a, {{"v", e.va_after}}}, {b, {{"v", e.vb_after}}}};
-    j["energy_gain"] = energy_gain;
-    return j.dump();
+    return event_json_with(e.t, s.bodies[e.a].name, s.bodies[e.b].name, e.point, 1.0, e.impulse, {{"v", e.va_before}},
+                           {{"v", e.vb_before}}, {{"v", e.va_after}}, {{"v", e.vb_after}}, energy_gain);
 }
 std::string event_json(const Scene& s, const Event2& e, bool gain) { return event_json_of<2>(s, e, gain); }
 std::string event_json(const Scene& s, const Event3& e, bool gain) { return event_json_of<3>(s, e, gain); }

@@ -126,7 +126,7 @@ StudentSheet draw_student(const Lesson& L, std::uint64_t seed, int student) {
         s.values.clear();
         for (const LessonVary& v : L.vary) s.values[v.name()] = v.value(splitmix64(state) % v.count());
         try {
-            s.lesson = lesson_with_values(L, s.values);
+            s.lesson = lesson_with_inputs(L, s.values);
             s.lesson.questions.clear();
             for (std::size_t i : s.asked) s.lesson.questions.push_back(L.questions[i]);
             answer_sheet(L, s);

@@ -46,7 +46,7 @@ struct WorkedCollision {
 struct StudentSheet {
     int student = 1;                       // from 1
     std::map<std::string, double> values;  // every [[vary]] name ("A.mass") -> its value
-    Lesson lesson;                         // lesson_with_values(lesson, values)
+    Lesson lesson;                         // lesson_with_inputs(lesson, values)
     std::vector<std::size_t> asked;        // worksheet_questions(lesson), into the original's questions
     std::vector<LessonAnswer> answers;     // one for each of `asked`
     std::vector<WorkedCollision> worked;   // the collisions the answers come from, in order

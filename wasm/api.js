@@ -13,7 +13,8 @@ Module['run'] = function (text) { return collideAnswer(Module['run_answer'](Stri
 // lesson(text, values, fps): a lesson file and the Try-it panel's values ({"A.mass": 3, ...},
 // the names of its [[vary]] entries) -> the lesson run once with them, sampled at fps, as JSON:
 // {dimension, duration, gravity, bodies, vary, values, worked: {t, a, b, html, solve} (the
-// page's collision worked out; null without one), states, events}.
+// page's collision worked out; null without one), figures: [{t, a, b, solve}] (every
+// [[figure]]'s collision; empty without figures), states, events}.
 Module['lesson'] = function (text, values, fps) {
   return collideAnswer(Module['lesson_answer'](String(text), JSON.stringify(values || {}), Number(fps) || 30));
 };

@@ -4,12 +4,13 @@
 //   solve_answer  collide solve --format json            (teach/solve.h write_json)
 //   run_answer    collide step --json, --events --json   (teach/step_output.h step_json: one run)
 //   lesson_answer a lesson page's Try-it panel: the lesson with the student's values
-//                 (lesson_with_values), run once (engine/record.h) at the page's frame rate
+//                 (lesson_with_inputs), run once (engine/record.h) at the page's frame rate
 //                 (present/frame_times.h, as the site's frames), its states and events as
 //                 `collide step --json` prints them, the collision the page shows
 //                 (present/shown_collision.h, as `collide render` picks it) worked out
 //                 (teach/event_problem.h, solve.h, html.h worked_html) as `collide material`
-//                 and `collide solve --format json` show it, and what the page needs to draw
+//                 and `collide solve --format json` show it, every [[figure]]'s collision as
+//                 `collide solve --format json` gives it, and what the page needs to draw
 //                 the bodies
 // Each returns {ok, text}: the JSON, or the reader's message without a file name
 // ("LINE:COL: key: message"); api.js turns a refusal into a thrown Error.
@@ -114,7 +115,7 @@ ordered_json bodies_json(const Scene& scene) {
     return out;
 }
 
-// `values`: a JSON object {"A.mass": 3, ...} (lesson_with_values' names); `fps`: the
+// `values`: a JSON object {"A.mass": 3, ...} (the [[vary]] inputs' names, lesson_with_inputs); `fps`: the
 // page's frame rate (the states are sampled at 1/fps, as the site's frames).
 std::string lesson_json(const std::string& text, const std::string& values, double fps) {
     const Lesson original = parse_lesson_text(text, kTextName, "");
@@ -125,7 +126,7 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
         if (!x.is_number()) throw InputError("", {}, name, "expected a number");
         changed[name] = x.get<double>();
     }
-    const Lesson lesson = changed.empty() ? original : lesson_with_values(original, changed);
+    const Lesson lesson = changed.empty() ? original : lesson_with_inputs(original, changed);
     const Scene& scene = lesson.scene;
     if (!(fps > 0 && fps <= 1000)) throw InputError("", {}, "fps", "expected 0 < fps <= 1000");
     RecordOptions options;
@@ -134,6 +135,7 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
 
     std::string states = "[", events = "[";
     std::optional<CollisionInstant> collision;
+    std::vector<CollisionInstant> figure_collisions;  // every [[figure]]'s, in order (as found)
     std::visit(
         [&](const auto& rec) {
             for (std::size_t k = 0; k < rec.times.size(); ++k)
@@ -142,6 +144,9 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
             for (std::size_t k = 0; k < rec.events.size(); ++k)
                 events += (k ? "," : "") + event_json(scene, rec.events[k], gains[k]);
             collision = page_collision(figure_picks(&lesson), rec);
+            for (const CollisionPick& pick : figure_picks(&lesson))
+                if (const std::optional<PairCollision> c = find_pick(rec, pick))
+                    figure_collisions.push_back(with_roles(collision_instant(rec.events[c->first]), pick.a, pick.b));
         },
         any);
     states += "]";
@@ -174,9 +179,23 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
         worked.pop_back();
         worked += ",\"solve\":" + json.str() + "}";
     }
+    // Each collision the lesson's figures show (a lesson of several, such as two bats hit at
+    // two points): who, when, and `collide solve --format json`'s numbers for it.
+    std::string figures = "[";
+    for (std::size_t k = 0; k < figure_collisions.size(); ++k) {
+        const SolveProblem problem = collision_problem(scene, figure_collisions[k]);
+        std::ostringstream json;
+        write_json(problem, solve(problem), json);
+        std::string f =
+            ordered_json{{"t", figure_collisions[k].t}, {"a", problem.a.name}, {"b", problem.b.name}}.dump();
+        f.pop_back();
+        figures += (k ? "," : "") + f + ",\"solve\":" + json.str() + "}";
+    }
+    figures += "]";
     std::string s = out.dump();
     s.pop_back();
-    return s + ",\"worked\":" + worked + ",\"states\":" + states + ",\"events\":" + events + "}";
+    return s + ",\"worked\":" + worked + ",\"figures\":" + figures + ",\"states\":" + states + ",\"events\":" + events +
+           "}";
 }
 
 Answer lesson_answer(const std::string& text, const std::string& values, double fps) {

@@ -53,12 +53,53 @@
   // ?show=try-it: the panel alone on the page (the browser test's screenshots: a headless
   // screenshot shows the top of a page, wherever it is scrolled to).
   if (query.get('show') === 'try-it') document.body.classList.add('tryit-only');
-  inputs.forEach(function (input) {
-    var q = query.get(input.dataset.name);
-    if (q !== null && q.trim() !== '' && isFinite(Number(q))) {
-      values[input.dataset.name] = Number(q);
-      input.value = q;
+  // The address's inputs (?A.mass=3, ?ball.v.x=5): each sets its slider; what cannot be done
+  // as asked is said in a line on the page (.tryit-query), never ignored without a word.
+  var queryLines = panel.querySelector('.tryit-query');
+  var byName = {};
+  inputs.forEach(function (input) { byName[input.dataset.name] = input; });
+  function queryLine(cls, textValue) {
+    if (!queryLines) return;
+    var li = document.createElement('li');
+    li.className = cls;
+    li.textContent = textValue;
+    queryLines.appendChild(li);
+    queryLines.hidden = false;
+  }
+  var names = inputs.map(function (input) { return input.dataset.name; });
+  query.forEach(function (q, name) {
+    if (name === 'show') return;
+    var input = byName[name];
+    if (!input) {
+      queryLine('tryit-query-unknown', 'The page\u2019s address sets ' + name + ' = ' + q + ', but this lesson has no input ' +
+                name + (names.length ? ' (its inputs: ' + names.join(', ') + ').' : ' (it has no inputs to change).'));
+      return;
     }
+    var x = Number(q), lo = parseFloat(input.min), hi = parseFloat(input.max), step = parseFloat(input.step);
+    if (q.trim() === '' || !isFinite(x)) {
+      queryLine('tryit-query-bad', 'The page\u2019s address sets ' + name + ' = \u201c' + q +
+                '\u201d, which is not a number: the lesson\u2019s ' + name + ' = ' + num(parseFloat(input.dataset.lesson)) + ' is used.');
+      return;
+    }
+    // A hair of slack for a value typed as the slider shows it.
+    var slack = 1e-9 * Math.max(1, Math.abs(lo), Math.abs(hi));
+    if (x < lo - slack || x > hi + slack) {
+      queryLine('tryit-query-bad', 'The page\u2019s address sets ' + name + ' = ' + num(x) + ', outside the input\u2019s range ' +
+                num(lo) + ' to ' + num(hi) + ' (the lesson\u2019s point holds only there): the lesson\u2019s ' + name +
+                ' = ' + num(parseFloat(input.dataset.lesson)) + ' is used.');
+      return;
+    }
+    values[name] = x;
+    input.value = q;
+    // The browser puts the slider on its nearest step: said when that is not the value asked.
+    var shown = parseFloat(input.value);
+    if (Math.abs(shown - x) > slack)
+      queryLine('tryit-query-between', 'The page\u2019s address sets ' + name + ' = ' + num(x) +
+                ', between the slider\u2019s steps of ' + num(step) + ' (it shows ' + num(shown) + '): the run uses ' +
+                num(x) + ' exactly.');
+  });
+  panel.dataset.queryLines = queryLines ? queryLines.children.length : 0;
+  inputs.forEach(function (input) {
     showValue(input);
     input.addEventListener('input', function () {
       values[input.dataset.name] = parseFloat(input.value);
@@ -129,6 +170,23 @@
            '</td><td>' + spin(s.angular_momentum.after) + '</td></tr>';
     h += '<tr><td>kinetic energy (J)</td><td class="tryit-ke-before">' + num(s.kinetic_energy.before) +
          '</td><td class="tryit-ke-after">' + num(s.kinetic_energy.after) + '</td></tr></table>';
+    // A lesson of several figures (two bats, three rows, two pucks): each of their collisions,
+    // since an input may change another than the first.
+    var figs = run.figures || [];
+    if (figs.length > 1) {
+      h += '<table class="tryit-figures"><caption>Every collision the lesson\u2019s figures show, with these inputs</caption>' +
+           '<tr><th>collision</th><th>t (s)</th><th>impulse on b (N\u00b7s)</th><th>body</th><th>v after (m/s)</th>' +
+           (d > 1 ? '<th>\u03c9 after (rad/s)</th>' : '') + '</tr>';
+      figs.forEach(function (f) {
+        [['a', f.a], ['b', f.b]].forEach(function (p, k) {
+          h += '<tr>' + (k === 0 ? '<td rowspan="2">' + escapeHtml(f.a) + ' (a) and ' + escapeHtml(f.b) + ' (b)</td>' +
+                                   '<td rowspan="2">' + num(f.t) + '</td><td rowspan="2">' + vec(f.solve.impulse) + '</td>' : '') +
+               '<td>' + escapeHtml(p[1]) + '</td><td>' + vec(f.solve[p[0]].v) + '</td>' +
+               (d > 1 ? '<td>' + spin(f.solve[p[0]].w) + '</td>' : '') + '</tr>';
+        });
+      });
+      h += '</table>';
+    }
     numbers.innerHTML = h;
   }
 

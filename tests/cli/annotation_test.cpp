@@ -5,6 +5,7 @@
 // turns in the sense of w; every label's number is its quantity at the precision shown; no
 // two labels overlap.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -178,6 +179,28 @@ std::vector<LessonFile> bundled_lessons() {
 }
 
 void PrintTo(const LessonFile& lesson, std::ostream* os) { *os << lesson.id; }
+
+// Distance from c to a convex polygon (pixels), 0 inside it.
+double outline_distance(const std::vector<std::array<double, 2>>& poly, const std::array<double, 2>& c) {
+    double best = 1e300;
+    int sign = 0;
+    bool inside = poly.size() >= 3;
+    for (std::size_t k = 0; k < poly.size(); ++k) {
+        const std::array<double, 2>& a = poly[k];
+        const std::array<double, 2>& b = poly[(k + 1) % poly.size()];
+        const double ex = b[0] - a[0], ey = b[1] - a[1], px = c[0] - a[0], py = c[1] - a[1];
+        const double cr = ex * py - ey * px;
+        if (cr != 0) {
+            const int sg = cr > 0 ? 1 : -1;
+            if (sign == 0) sign = sg;
+            else if (sg != sign) inside = false;
+        }
+        const double len2 = ex * ex + ey * ey;
+        const double t = len2 > 0 ? std::clamp((px * ex + py * ey) / len2, 0.0, 1.0) : 0.0;
+        best = std::min(best, std::hypot(px - t * ex, py - t * ey));
+    }
+    return inside ? 0.0 : best;
+}
 
 class LessonFigure : public ::testing::TestWithParam<LessonFile> {};
 
@@ -453,6 +476,27 @@ void check_figure(const std::string& file, const ::collide::LessonFigure* pick, 
                                                                                             : " N s";
             EXPECT_TRUE(text.size() > unit.size() && text.compare(text.size() - unit.size(), unit.size(), unit) == 0)
                 << "\"" << text << "\" does not end in \"" << unit << "\"";
+        }
+        // 3D: every label of a body sits nearer that body's projected outline than any other
+        // body's (its box's centre; distance 0 inside an outline): a velocity or spin label
+        // never stands beside another body.
+        if (three_d) {
+            std::map<std::string, std::vector<std::array<double, 2>>> outlines;
+            for (const json& it : items)
+                if (it["kind"] == "body" && it.contains("outline"))
+                    for (const json& q : it["outline"]) outlines[it["body"]].push_back({q[0], q[1]});
+            for (const json& it : items) {
+                if (it["kind"] != "label" || it["body"].is_null() || !outlines.count(it["body"])) continue;
+                const std::array<double, 2> c = {0.5 * (it["box"][0].get<double>() + it["box"][2].get<double>()),
+                                                 0.5 * (it["box"][1].get<double>() + it["box"][3].get<double>())};
+                const std::string own = it["body"];
+                const double mine = outline_distance(outlines[own], c);
+                for (const auto& [other, poly] : outlines)
+                    if (other != own) {
+                        EXPECT_LT(mine, outline_distance(poly, c))
+                            << "the label \"" << it["text"] << "\" of " << own << " stands nearer " << other;
+                    }
+            }
         }
         // No arrow shaft (velocity, impulse, a point's velocity) runs through a body's name
         // (the 2D diagram: an arrow's box is its extent, and its screen direction is the

@@ -86,7 +86,15 @@ check "<stdin>" "scene.duration: expected the simulated time in s > 0" \
 # Input without end, or not a file (issue 34): every reader stops at the 1 MiB limit while
 # reading (or at the first NUL byte), under a 1 GiB address-space limit and within 5 s (about
 # 0.2 s each here): /dev/zero, `yes |` on stdin, a FIFO, a directory, the interactive mode.
-printf '#!/usr/bin/env bash\nulimit -v 1048576\nexec timeout 20 "%s" "$@"\n' "$collide" >"$tmp/limited"
+# An AddressSanitizer build reserves terabytes of shadow address space at start, which an
+# address-space limit forbids: there the limit is left out (the GCC build's run checks it) and
+# this says so; the 20 s timeout and the 5 s check stay.
+limit='ulimit -v 1048576'
+if grep -qa __asan_init "$collide"; then
+  limit=':'
+  echo "note: $collide is built with AddressSanitizer: the 1 GiB address-space limit is not applied"
+fi
+printf '#!/usr/bin/env bash\n%s\nexec timeout 20 "%s" "$@"\n' "$limit" "$collide" >"$tmp/limited"
 chmod +x "$tmp/limited"
 real=$collide
 collide=$tmp/limited
@@ -108,11 +116,16 @@ bounded /dev/zero "not a text file" worksheet /dev/zero -o "$tmp/render" --stude
 bounded "$tmp" "is a directory" solve "$tmp"
 bounded "$tmp" "is a directory" step "$tmp"
 mkfifo "$tmp/fifo"
-(yes >"$tmp/fifo" 2>/dev/null &)
+# The writer's own output goes to /dev/null before it blocks opening the FIFO (a writer holding
+# ctest's pipe would keep the test running forever if the reader never opened it), and it ends
+# within 60 s in any case.
+timeout 60 sh -c 'exec yes >"$1"' sh "$tmp/fifo" </dev/null >/dev/null 2>&1 &
+writer=$!
 bounded "$tmp/fifo" "too large" solve "$tmp/fifo"
 bounded "<stdin>" "not text (a NUL byte)" step --interactive "$cradle" </dev/zero
 bounded "<stdin>" "longer than 1 MiB" step --interactive "$cradle" < <(yes | tr -d '\n')
 collide=$real
+kill "$writer" 2>/dev/null
 
 echo "$count cases, $failures failed"
 [[ $failures -eq 0 ]]

@@ -6,6 +6,8 @@
 #include "teach/html.h"
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <regex>
@@ -56,16 +58,17 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         EXPECT_EQ(html.find("http://"), std::string::npos) << e.path();
         EXPECT_EQ(html.find("https://"), std::string::npos) << e.path();
         for (std::sregex_iterator m(html.begin(), html.end(), attr), end; m != end; ++m) {
-            const std::string target = (*m)[1];
+            std::string target = (*m)[1];
+            target = target.substr(0, target.find('#'));  // a place in a page: the page
             ++links;
             EXPECT_TRUE(fs::exists(e.path().parent_path() / target)) << e.path() << " -> " << target;
         }
     }
-    EXPECT_EQ(pages, static_cast<int>(all.size()) + 1);  // the index and one page a lesson
+    EXPECT_EQ(pages, 2 * static_cast<int>(all.size()) + 1);  // the index, a student's and a teacher's page a lesson
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
         const fs::path d = fs::path(dir / "site") / L.id;
-        for (const char* name : {"index.html", "lesson.md", "data.csv", "energy.svg", "momentum.svg"})
+        for (const char* name : {"index.html", "teacher.html", "lesson.md", "data.csv", "energy.svg", "momentum.svg"})
             EXPECT_TRUE(fs::exists(d / name)) << name;
         EXPECT_TRUE(fs::exists(d / "frames/frame_00000.png"));
         // lesson.md shows each of the lesson's figures (figure.png, figure-2.png, ...), and
@@ -91,18 +94,18 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
     // The lesson page holds its questions and the computed answers; the index links to it.
     const std::string lesson = read(fs::path(dir / "site") / "catch-up/index.html");
     EXPECT_NE(lesson.find("What impulse J does B receive?"), std::string::npos);
-    EXPECT_NE(lesson.find("<details><summary>Answer</summary>"), std::string::npos);
+    EXPECT_NE(lesson.find("<details class=\"answer\"><summary>Answer</summary>"), std::string::npos);
     EXPECT_NE(lesson.find("1.2 N s"), std::string::npos);  // J = (1 + 0.5) 2 1 (1.5 - 0.3) / 3
     EXPECT_NE(read(fs::path(dir / "site") / "index.html").find("catch-up/index.html"), std::string::npos);
+    EXPECT_NE(read(fs::path(dir / "site") / "index.html").find("catch-up/teacher.html"), std::string::npos);
     EXPECT_NE(read(fs::path(dir / "site") / "style.css").find("@media print"), std::string::npos);
     // Print: math wraps (no nowrap anywhere in the stylesheet); the animation section, screen
-    // only, leaves no empty heading; each question has a space to write in and, for the
-    // teacher's copy, its answer.
+    // only, leaves no empty heading; each question has a space to write in.
     const std::string css = read(fs::path(dir / "site") / "style.css");
     EXPECT_EQ(css.find("nowrap"), std::string::npos);
-    EXPECT_NE(lesson.find("<section class=\"animation noprint\">\n<h2>Animation</h2>"), std::string::npos);
+    EXPECT_NE(lesson.find("<section class=\"animation noprint\">\n<h3>Animation</h3>"), std::string::npos);
     // Per lesson: each question once, folded on screen, with a space to write in (a choice
-    // question: a number to circle instead) and its answer for the teacher's copy.
+    // question: a number to circle instead); the teacher's page is linked.
     const auto count = [](const std::string& text, const std::string& what) {
         std::size_t k = 0;
         for (std::size_t at = 0; (at = text.find(what, at)) != std::string::npos; at += what.size()) ++k;
@@ -117,14 +120,13 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
             spaces += q.has_choices() ? 0 : 1;
             numbers += q.choices.size();
         }
-        EXPECT_EQ(count(page, "<details><summary>Answer</summary>"), asked);
-        EXPECT_EQ(count(page, "<details><summary>Check your prediction</summary>"), predict);
+        EXPECT_EQ(count(page, "<details class=\"answer\"><summary>Answer</summary>"), asked);
+        EXPECT_EQ(count(page, "<summary>Check your prediction</summary>"), predict);
         EXPECT_EQ(count(page, "<div class=\"write-here"), spaces);
-        EXPECT_EQ(count(page, "class=\"printed-answer\""), L.questions.size());
         // Every option numbered where it is asked, and again with its reason in the answer
-        // (on screen and printed).
-        EXPECT_EQ(count(page, "<span class=\"letter\">"), 3 * numbers);
-        EXPECT_EQ(count(page, "id=\"print-answers\""), 1u);
+        // (folded on screen, never printed).
+        EXPECT_EQ(count(page, "<span class=\"letter\">"), 2 * numbers);
+        EXPECT_EQ(count(page, "<a href=\"teacher.html\">"), 1u);
     }
     // The predictions come before the figure and the animation, which show what happens, and
     // are not screen-only; their answers come after the animation.
@@ -165,22 +167,34 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         EXPECT_NE(lesson.find(html::math(L.questions[5].answer)), std::string::npos);
         EXPECT_NE(lesson.find("<span class=\"answer\">0.3 m/s</span>"), std::string::npos);  // the what-if's run
     }
-    // Print: predictions print (they are not screen-only) with a space to write in; their
-    // answers and every other answer only in the teacher's copy; explanations get more room.
+    // Print: predictions print (they are not screen-only) with a space to write in; no answer
+    // prints on the student's page (they are on the teacher's page): no folded answer, no
+    // predictions checked, no worked example, nor the figures and plots, which show the run's
+    // numbers; explanations get more room; a heading stays with what follows it and a figure
+    // or a question is not split.
     const std::string print = css.substr(css.find("@media print"));
-    for (const char* rule : {".write-here { display: block;", "body.with-answers .printed-answer { display: block; }",
-                             "section.check { display: none; }", "body.with-answers section.check { display: block; }",
-                             ".write-here.tall {", "details { display: none; }", "ol.predictions > li"})
+    for (const char* rule :
+         {".write-here { display: block;",
+          "body.student details, body.student section.check, "
+          "body.student section.worked",
+          ".write-here.tall {", "ol.predictions > li", "h1, h2, h3 { break-after: avoid;",
+          "figure, table, .plots, ol.questions > li", "figure img { width: auto; max-width: 100%; max-height:"})
         EXPECT_NE(print.find(rule), std::string::npos) << rule;
+    for (const Lesson& L : all) {
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        // The figures, the animation and the plots are screen-only on the student's page.
+        const std::size_t watch = page.find("<section class=\"watch\">\n<h2>Watch</h2>\n<div class=\"noprint\">");
+        EXPECT_NE(watch, std::string::npos) << L.id;
+        EXPECT_LT(watch, page.find("<img src=\"figure.png\"")) << L.id;
+        EXPECT_NE(page.find("<body class=\"student\">"), std::string::npos) << L.id;
+    }
     for (const char* hidden :
          {"section.predict { display: none", ".choices { display: none", ".letter { display: none"})
         EXPECT_EQ(print.find(hidden), std::string::npos) << hidden;
-    // Student pages name no commands and no files of the repository: those go in the
-    // teacher's section.
+    // Student pages name no commands and no files of the repository: those go on the
+    // teacher's page.
     for (const Lesson& L : all) {
-        std::string page = read(fs::path(dir / "site") / L.id / "index.html");
-        const std::size_t teacher = page.find("<section class=\"teacher\">");
-        if (teacher != std::string::npos) page.erase(teacher, page.find("</section>", teacher) - teacher);
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
         for (const char* word : {"collide solve", "collide compare", "collide render", "docs/"})
             EXPECT_EQ(page.find(word), std::string::npos) << L.id << " tells students \"" << word << "\"";
     }
@@ -244,6 +258,223 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         EXPECT_EQ(e.path().filename().string().find(".tmp-"), std::string::npos) << e.path();
 }
 
+// What a student sees of a piece of a page before opening anything: its text without tags,
+// scripts and folded <details> (answers, the worked example), entities decoded, spaces joined.
+std::string visible_text(const std::string& html) {
+    std::string s = html, out;
+    for (const char* tag : {"script", "details"}) {
+        // Remove each outermost <tag ...>...</tag> (nested ones go with it).
+        const std::string open = std::string("<") + tag, close = std::string("</") + tag + ">";
+        std::string kept;
+        int depth = 0;
+        for (std::size_t i = 0; i < s.size();) {
+            if (s.compare(i, open.size(), open) == 0 && (s[i + open.size()] == '>' || s[i + open.size()] == ' ')) {
+                ++depth;
+                i += open.size();
+            } else if (depth > 0 && s.compare(i, close.size(), close) == 0) {
+                --depth;
+                i += close.size();
+            } else {
+                if (depth == 0) kept += s[i];
+                ++i;
+            }
+        }
+        s = kept;
+    }
+    bool in_tag = false;
+    for (char c : s) {
+        if (c == '<') in_tag = true;
+        else if (c == '>') in_tag = false;
+        else if (!in_tag) out += c;
+    }
+    for (const auto& [entity, text] : std::vector<std::pair<std::string, std::string>>{
+             {"&lt;", "<"}, {"&gt;", ">"}, {"&quot;", "\""}, {"&amp;", "&"}})
+        for (std::size_t at; (at = out.find(entity)) != std::string::npos;) out.replace(at, entity.size(), text);
+    std::string joined;
+    for (char c : out) {
+        const bool space = c == ' ' || c == '\n' || c == '\t' || c == '\r';
+        if (space && (joined.empty() || joined.back() == ' ')) continue;
+        joined += space ? ' ' : c;
+    }
+    return joined;
+}
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+// The numbers of a text with at least 3 significant digits ("0.501", "4.077", "1.234e-3"): a
+// number written to that precision names a value; "1.5" or "2" may be any given.
+std::vector<double> precise_numbers(const std::string& text) {
+    static const std::regex number(R"re((\d+\.\d+|\d+)(e[-+]?\d+)?)re");
+    std::vector<double> out;
+    for (std::sregex_iterator k(text.begin(), text.end(), number), end; k != end; ++k) {
+        std::string digits;
+        for (char ch : (*k)[1].str())
+            if (ch != '.' && !(digits.empty() && ch == '0')) digits += ch;
+        while (!digits.empty() && digits.back() == '0' && (*k)[1].str().find('.') == std::string::npos)
+            digits.pop_back();
+        if (digits.size() >= 3) out.push_back(std::stod((*k)[0].str()));
+    }
+    return out;
+}
+
+// Issue 33, "Ask before telling": on every lesson's student page, nothing a student sees above a
+// prediction or a numeric question gives its answer, as the page writes it (the right option's
+// text, or the answer's text; and no number to 3 or more digits within 0.5 % of one of the
+// answer's). Answers, the predictions' checks and the worked example are folded until the
+// student commits an answer. An answer that is one of the givens (A's speed before is B's
+// after) may appear in the set-up, and only there: each such case is listed, and must still be
+// one.
+TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
+    render::test::TempDir dir;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons.clear();
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
+    // {lesson, question number from 1}: answers equal to a given of the set-up.
+    std::set<std::pair<std::string, int>> givens = {
+        {"catch-up", 3},        // B leaves at 1.5 m/s, A's speed before
+        {"catch-up", 7},        // with the masses swapped A leaves at 0.3 m/s, B's speed before
+        {"reversed", 3},        // B leaves at 0.3 m/s, A's speed before
+        {"restitution", 4},     // e = 1: the points part at the 2 m/s they met at
+        {"newtons-cradle", 5},  // the last block leaves at the first one's 2 m/s
+    };
+    std::set<std::pair<std::string, int>> used;
+    int checked = 0;
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.id);
+        const std::string page = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::size_t setup_at = page.find("<section class=\"setup\">"),
+                          setup_end = page.find("</section>", setup_at);
+        ASSERT_NE(setup_at, std::string::npos);
+        int predict_k = 0;
+        for (std::size_t i = 0; i < L.questions.size(); ++i) {
+            const LessonQuestion& q = L.questions[i];
+            if (q.kind == QuestionKind::predict) ++predict_k;
+            if (!(q.kind == QuestionKind::predict || q.has_quantity())) continue;
+            const int number = static_cast<int>(i) + 1;
+            SCOPED_TRACE("question " + std::to_string(number) + ": " + q.text);
+            const std::size_t asked = page.find(" data-q=\"" + std::to_string(number) + "\"");
+            ASSERT_NE(asked, std::string::npos);
+            // The answer as the page writes it (in the fold below the question, or for a
+            // prediction in "Check your predictions").
+            const std::size_t fold = q.kind == QuestionKind::predict
+                                         ? page.find("<details id=\"check-" + std::to_string(predict_k) + "\"")
+                                         : page.find("<details class=\"answer\">", asked);
+            ASSERT_NE(fold, std::string::npos);
+            const std::size_t a0 = page.find("<span class=\"answer\">", fold);
+            ASSERT_NE(a0, std::string::npos);
+            const std::size_t a1 = page.find("</span>", a0);
+            std::string answer = visible_text(page.substr(a0, a1 - a0));
+            if (q.has_choices()) {
+                EXPECT_EQ(answer, "Option " + std::to_string(q.correct) + ".");
+                answer = visible_text(html::math(q.choices[static_cast<std::size_t>(q.correct - 1)]));
+            }
+            ASSERT_FALSE(answer.empty());
+            // A count ("6") is found as a count of something ("6 collisions"), not inside "16".
+            const bool count = answer.find_first_not_of("0123456789") == std::string::npos;
+            const std::regex counted(count ? "(^|[^0-9.])" + answer + " (collision|landing|bounce|contact|time)" : "x");
+            const auto spoils = [&](const std::string& html) {
+                const std::string seen = visible_text(html);
+                if (count) return std::regex_search(seen, counted) ? "\"" + answer + " ...\"" : std::string();
+                if (lower(seen).find(lower(answer)) != std::string::npos) return "\"" + answer + "\"";
+                if (q.has_choices()) return std::string();
+                for (double a : precise_numbers(answer))
+                    for (double x : precise_numbers(seen))
+                        if (std::abs(x - a) <= 0.005 * a) return std::to_string(x) + " (the answer: " + answer + ")";
+                return std::string();
+            };
+            const std::string above = page.substr(0, asked);
+            const std::string found = spoils(above);
+            if (givens.count({L.id, number})) {
+                used.insert({L.id, number});
+                EXPECT_FALSE(found.empty()) << "listed as a given but not found above: remove it from the list";
+                // Only the set-up has it.
+                std::string without = above;
+                without.erase(setup_at, setup_end - setup_at);
+                EXPECT_EQ(spoils(without), "") << "outside the set-up";
+                EXPECT_NE(spoils(page.substr(setup_at, setup_end - setup_at)), "");
+            } else {
+                EXPECT_EQ(found, "") << "the page shows the answer above the question";
+            }
+            ++checked;
+        }
+    }
+    EXPECT_EQ(used, givens);
+    EXPECT_GT(checked, 22 * 4);
+}
+
+// Issue 33, "Two audiences": every lesson has a teacher's page, linked from the index and from
+// the lesson's page, that holds the lesson's [teacher] content, its [[vary]] inputs, every
+// answer of the student's page and every worked example, unfolded.
+TEST(Material, EveryLessonHasATeachersPageWithEveryAnswer) {
+    render::test::TempDir dir;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons.clear();
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
+    const std::string index = read(fs::path(dir / "site") / "index.html");
+    const std::regex answer(R"re(<span class="answer">(.*?)</span>)re");
+    const std::regex math_line(R"re(<div class="math[^"]*">(.*?)</div>)re");
+    for (const Lesson& L : all) {
+        SCOPED_TRACE(L.id);
+        ASSERT_TRUE(L.teacher.has_value());
+        const std::string student = read(fs::path(dir / "site") / L.id / "index.html");
+        const std::string teacher = read(fs::path(dir / "site") / L.id / "teacher.html");
+        EXPECT_NE(index.find("href=\"" + L.id + "/teacher.html\""), std::string::npos);
+        EXPECT_NE(student.find("<a href=\"teacher.html\">"), std::string::npos);
+        EXPECT_NE(teacher.find("<a href=\"index.html\">"), std::string::npos);
+        EXPECT_NE(teacher.find(html::math(L.teacher->level)), std::string::npos);
+        EXPECT_NE(teacher.find("about " + std::to_string(L.teacher->minutes) + " minutes"), std::string::npos);
+        for (const std::string& p : L.teacher->prerequisites) EXPECT_NE(teacher.find(html::math(p)), std::string::npos);
+        for (const LessonMisconception& m : L.teacher->misconceptions) {
+            EXPECT_NE(teacher.find(html::math(m.belief)), std::string::npos);
+            EXPECT_NE(teacher.find(html::math(m.evidence)), std::string::npos);
+        }
+        for (const LessonClassQuestion& q : L.teacher->ask)
+            EXPECT_NE(teacher.find(html::math(q.question)), std::string::npos);
+        // How to run it live: the lesson's inputs from its [[vary]] tables, or a plain note
+        // that it has none.
+        if (L.vary.empty()) {
+            EXPECT_NE(teacher.find("declares no <code>[[vary]]</code> inputs"), std::string::npos);
+        } else {
+            for (const LessonVary& v : L.vary)
+                EXPECT_NE(teacher.find("<code>" + html::escape(v.name()) + "</code>"), std::string::npos) << v.name();
+        }
+        // Every answer of the student's page, and each model answer.
+        std::size_t answers = 0;
+        for (std::sregex_iterator m(student.begin(), student.end(), answer), end; m != end; ++m, ++answers)
+            EXPECT_NE(teacher.find((*m)[0].str()), std::string::npos) << (*m)[0];
+        EXPECT_GE(answers, L.questions.size() -
+                               std::count_if(L.questions.begin(), L.questions.end(),
+                                             [](const LessonQuestion& q) { return q.kind == QuestionKind::explain; }));
+        for (const LessonQuestion& q : L.questions) {
+            EXPECT_NE(teacher.find(html::math(q.text)), std::string::npos) << q.text;
+            if (q.kind == QuestionKind::explain) {
+                EXPECT_NE(teacher.find(html::paragraphs(q.answer)), std::string::npos);
+            }
+            for (const std::string& r : q.reasons) EXPECT_NE(teacher.find(html::math(r)), std::string::npos);
+        }
+        // Every worked line of the student's folded worked example, unfolded: no <details>
+        // but the run's later collisions (one line each when printed).
+        std::size_t lines = 0;
+        for (std::sregex_iterator m(student.begin(), student.end(), math_line), end; m != end; ++m, ++lines)
+            EXPECT_NE(teacher.find((*m)[0].str()), std::string::npos) << (*m)[0];
+        EXPECT_GT(lines, 5u);
+        EXPECT_EQ(teacher.find("<details class=\"worked\""), std::string::npos);
+        for (std::size_t at = 0; (at = teacher.find("<details", at)) != std::string::npos; ++at)
+            EXPECT_EQ(teacher.compare(at, 23, "<details class=\"later\">"), 0) << teacher.substr(at, 40);
+        // The teacher's notes (commands, files) are on the teacher's page, not the student's.
+        if (!L.teacher_notes.empty()) {
+            EXPECT_NE(teacher.find(html::paragraphs(L.teacher_notes)), std::string::npos);
+        }
+    }
+}
+
 // A prediction of a number: on screen a field to type it in, printed a space to write it in;
 // after the animation the engine's answer with its tolerance and why. A what-if's answer is
 // its own scene's.
@@ -269,7 +500,7 @@ TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
     ASSERT_NE(asked, std::string::npos);
     EXPECT_LT(asked, animation);
     const std::string before = page.substr(asked, page.find("</section>", asked) - asked);  // the box
-    EXPECT_NE(before.find("<input type=\"text\" class=\"prediction\""), std::string::npos);
+    EXPECT_NE(before.find("<input type=\"text\" class=\"answer-in prediction\""), std::string::npos);
     EXPECT_NE(before.find("<div class=\"write-here\" aria-hidden=\"true\"></div>"), std::string::npos);
     EXPECT_EQ(before.find("1.5 m/s"), std::string::npos);  // not answered where it is asked
     // v_bf = v_bi + J / m_b = 0.3 + 1.2 / 1 (the lesson's worked numbers)

@@ -961,7 +961,11 @@ TEST(LessonAnswers, Dominoes) {
     // 0.05 ms), and dominoes twice as large, spaced twice as far, take sqrt(2) times as long
     // (the time steps do not scale: 0.3 %). The lesson's file edited as the teacher notes say.
     std::ifstream in(L.file);
-    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Without its [[vary]] tables (the file's last): their ranges are around the lesson's own
+    // spacing, which the larger row leaves.
+    ASSERT_NE(text.find("[[vary]]"), std::string::npos);
+    text = text.substr(0, text.find("[[vary]]"));
     const auto replaced = [](std::string s, const std::string& from, const std::string& to) {
         for (std::size_t at = s.find(from); at != std::string::npos; at = s.find(from, at + to.size()))
             s.replace(at, from.size(), to);

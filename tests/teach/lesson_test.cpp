@@ -31,6 +31,16 @@ TEST(Lessons, EveryBundledLessonLoadsRunsAndAnswersEveryQuestion) {
         EXPECT_FALSE(L.title.empty());
         EXPECT_FALSE(L.explanation.empty());
         EXPECT_FALSE(L.goals.empty());
+        // The student's page asks before it tells: the givens come first, on their own; the
+        // teacher's page has its own content (scenario/lesson.h LessonTeacher).
+        EXPECT_FALSE(L.setup.empty()) << "a bundled lesson needs its set-up (the givens)";
+        ASSERT_TRUE(L.teacher.has_value()) << "a bundled lesson needs its [teacher] table";
+        EXPECT_FALSE(L.teacher->level.empty());
+        EXPECT_FALSE(L.teacher->prerequisites.empty());
+        EXPECT_GT(L.teacher->minutes, 0);
+        EXPECT_FALSE(L.teacher->misconceptions.empty());
+        EXPECT_FALSE(L.teacher->ask.empty());
+        EXPECT_FALSE(L.teacher->live.empty());
         const std::vector<LessonAnswer> answers = answer_questions(L);
         ASSERT_EQ(answers.size(), L.questions.size());
         for (const LessonAnswer& a : answers) EXPECT_TRUE(std::isfinite(a.value)) << a.text;
@@ -221,6 +231,27 @@ INSTANTIATE_TEST_SUITE_P(
     Catalogue, LessonBad,
     ::testing::Values(
         BadLesson{"no [lesson] table", "", "", "missing table [lesson]"},
+        BadLesson{"unknown key in [teacher]",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[teacher]\nlevel = \"l\"\nprerequisites = [\"p\"]\n"
+                  "minute = 20\n",
+                  "teacher.minute", "did you mean 'minutes'?"},
+        BadLesson{"[teacher] without a level",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[teacher]\nprerequisites = [\"p\"]\nminutes = 20\n",
+                  "teacher.level", "missing key 'level'"},
+        BadLesson{"[teacher] without a misconception",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[teacher]\nlevel = \"l\"\nprerequisites = [\"p\"]\n"
+                  "minutes = 20\nlive = \"move e\"\n",
+                  "teacher.misconception", "at least one"},
+        BadLesson{"unknown key in a misconception",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[teacher]\nlevel = \"l\"\nprerequisites = [\"p\"]\n"
+                  "minutes = 20\nlive = \"move e\"\n[[teacher.misconception]]\nbelief = \"b\"\nevidenc = \"e\"\n",
+                  "teacher.misconception[1].evidenc", "did you mean 'evidence'?"},
+        BadLesson{"[teacher] minutes out of range",
+                  "[lesson]\nid = \"x\"\ntitle = \"t\"\n[teacher]\nlevel = \"l\"\nprerequisites = [\"p\"]\n"
+                  "minutes = 0\n",
+                  "teacher.minutes", "from 1 to 600"},
+        BadLesson{"setup not text", "[lesson]\nid = \"x\"\ntitle = \"t\"\nsetup = 3\n", "lesson.setup", "the set-up"},
+
         BadLesson{"no id", "[lesson]\ntitle = \"t\"\n", "lesson.id", "missing key 'id'"},
         BadLesson{"bad id", "[lesson]\nid = \"a b\"\ntitle = \"t\"\n", "lesson.id", "letters, digits and -"},
         BadLesson{"unknown quantity",

@@ -1,9 +1,15 @@
 #!/usr/bin/env bash
-# The Try-it panel in a real browser: `collide material` writes lesson 01's page with the
-# WebAssembly module ($COLLIDE_ENGINE_JS), headless Chromium opens it from file:// with
-# ?A.mass=3, and the impulse the page shows must equal `collide solve`'s for those inputs
-# (catch-up-a3.toml) to 1e-12 relative. Screenshots of the panel before (the lesson's values)
-# and after (A.mass = 3) stay in WORK/ to be looked at.
+# The Try-it panel in a real browser: `collide material` writes lessons 01 and 06's pages with
+# the WebAssembly module ($COLLIDE_ENGINE_JS), headless Chromium opens them from file://:
+# - catch-up?A.mass=3: the impulse the page shows must equal `collide solve`'s for those inputs
+#   (catch-up-a3.toml) to 1e-12 relative;
+# - catch-up?scene.restitution=1: the slider reaches its maximum (a step written as
+#   0.10000000000000001 stopped it at 0.9), so the panel has no line about the address;
+# - general-2d?A.v.x=2&A.mas=3: one component of a vector set from the address (the impulse
+#   equals the first collision of `collide step --events --json` on the lesson with v = [2, 0],
+#   to 1e-9 relative: the page samples the run at its frame rate), and the name the lesson has
+#   no input for shown on the page.
+# Screenshots of the panels stay in WORK/ to be looked at.
 # Usage: browser.sh COLLIDE CHROMIUM WORK
 set -euo pipefail
 collide=$1
@@ -14,7 +20,7 @@ rm -rf "$work"
 mkdir -p "$work"
 [[ -f ${COLLIDE_ENGINE_JS:-} ]] || { echo "browser.sh: COLLIDE_ENGINE_JS=${COLLIDE_ENGINE_JS:-} is not a file" >&2; exit 1; }
 
-"$collide" material -o "$work/site" --size 640x360 --quiet catch-up
+"$collide" material -o "$work/site" --size 640x360 --quiet catch-up general-2d
 [[ -f $work/site/collide-engine.js && -f $work/site/try-it.js ]] || { echo "browser.sh: the site has no module" >&2; exit 1; }
 page="file://$work/site/catch-up/index.html"
 
@@ -28,7 +34,6 @@ start=$(date +%s.%N)
 browse --dump-dom "$page?A.mass=3" >"$work/after.html"
 browse --screenshot="$work/before.png" "$page?show=try-it"
 browse --screenshot="$work/after.png" "$page?A.mass=3&show=try-it"
-end=$(date +%s.%N)
 
 shown=$(grep -o 'class="tryit-impulse" data-value="[^"]*"' "$work/after.html" | sed 's/.*data-value="\([^"]*\)"/\1/' || true)
 status=$(grep -o '<p class="tryit-status[^>]*>[^<]*' "$work/after.html" | sed 's/.*>//' || true)
@@ -40,4 +45,35 @@ awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (a
   exit 1
 }
 for f in before after; do [[ -s $work/$f.png ]] || { echo "browser.sh: no $f.png" >&2; exit 1; }; done
-printf 'browser.sh: equal; screenshots %s/before.png and after.png (Chromium: %.1f s)\n' "$work" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')"
+
+# The slider's maximum: e = 1 is set and shown as asked, with no line about the address.
+browse --dump-dom "$page?scene.restitution=1" >"$work/e1.html"
+grep -q 'class="tryit-query-' "$work/e1.html" && {
+  echo "browser.sh: FAIL: ?scene.restitution=1: $(grep -o '<li class="tryit-query[^<]*' "$work/e1.html")" >&2
+  exit 1
+}
+grep -q '<output for="tryit-in-5">1</output>' "$work/e1.html" || { echo "browser.sh: FAIL: e = 1 is not shown" >&2; exit 1; }
+echo "browser.sh: ?scene.restitution=1 reaches the slider's maximum"
+
+# A vector's component from the address, and a name the lesson has no input for.
+page2="file://$work/site/general-2d/index.html"
+browse --dump-dom "$page2?A.v.x=2&A.mas=3" >"$work/general-2d.html"
+browse --screenshot="$work/general-2d.png" "$page2?A.v.x=2&A.mas=3&show=try-it"
+unknown=$(grep -o '<li class="tryit-query-unknown">[^<]*' "$work/general-2d.html" | sed 's/.*>//' || true)
+[[ $unknown == *"this lesson has no input A.mas"* ]] || {
+  echo "browser.sh: FAIL: ?A.mas=3 is not shown on the page as a name without an input (got: '$unknown')" >&2
+  exit 1
+}
+shown=$(grep -o 'class="tryit-impulse" data-value="[^"]*"' "$work/general-2d.html" | sed 's/.*data-value="\[\([^,]*\),.*/\1/' || true)
+sed 's/^v = \[1.5, 0.0\]$/v = [2.0, 0.0]/' "$here/../../lessons/06-general-2d.toml" >"$work/general-2d-v2.toml"
+grep -q '^v = \[2.0, 0.0\]$' "$work/general-2d-v2.toml" || { echo "browser.sh: lesson 06 has no v = [1.5, 0.0]" >&2; exit 1; }
+expected=$("$collide" step "$work/general-2d-v2.toml" --events --json | head -1 | sed 's/.*"impulse":\[\([^,]*\),.*/\1/')
+echo "browser.sh: the page (?A.v.x=2) shows P_x = $shown N s; collide step gives $expected N s; unknown name: $unknown"
+[[ -n $shown ]] || { echo "browser.sh: FAIL: general-2d shows no impulse" >&2; exit 1; }
+awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (b < 0 ? -b : b); exit !(d <= 1e-9 * m) }' || {
+  echo "browser.sh: FAIL: they differ" >&2
+  exit 1
+}
+[[ -s $work/general-2d.png ]] || { echo "browser.sh: no general-2d.png" >&2; exit 1; }
+end=$(date +%s.%N)
+printf 'browser.sh: equal; screenshots %s/before.png, after.png and general-2d.png (Chromium: %.1f s)\n' "$work" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')"
