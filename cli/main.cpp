@@ -1,6 +1,8 @@
 // The `collide` command.
 #include <unistd.h>
 
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -254,6 +256,20 @@ int main(int argc, char** argv) {
         "Example: collide compare lessons/scenes/compare-slow-bounce.toml --box2d-defaults\n"
         "See docs/commands/compare.md.");
 
+    // Every command that runs a scene: the work a run may take before it is refused (exit 2).
+    double max_work = collide::kDefaultWorkBudget;
+    for (CLI::App* c : {step, render, gui, material, worksheet, compare})
+        c->add_option("--max-work", max_work,
+                      "the work a run may take before it is refused, in units of about a microsecond "
+                      "(docs/stepping.md, \"Work budget\")")
+            ->check([](const std::string& text) {
+                char* end = nullptr;
+                const double x = std::strtod(text.c_str(), &end);
+                return *end == '\0' && x > 0.0 && std::isfinite(x) ? std::string()
+                                                                   : "expected a number > 0, got '" + text + "'";
+            })
+            ->capture_default_str();
+
     if (argc == 1) {  // bare `collide`: show what it can do
         std::cout << app.help();
         return 0;
@@ -265,6 +281,7 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : kBadInput;
     }
     return collide::cli::run_command(std::cerr, [&] {
+        collide::set_default_work_budget(max_work);
         if (*solve) return run_solve(file, format, model);
         if (*compare) return collide::run_compare(compare_options, std::cout, std::cerr);
         if (*step) {

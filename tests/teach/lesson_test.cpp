@@ -2,6 +2,7 @@
 // answers match closed forms; malformed lesson files are refused with their key.
 #include "teach/answers.h"
 
+#include "engine/world.h"
 #include "engine/world1d.h"
 
 #include <cctype>
@@ -50,6 +51,39 @@ TEST(Lessons, EveryBundledLessonLoadsRunsAndAnswersEveryQuestion) {
     }
     // Ordered, ids unique (load_lessons refuses duplicates).
     for (std::size_t i = 1; i < all.size(); ++i) EXPECT_LE(all[i - 1].order, all[i].order);
+}
+
+// Every bundled lesson's run (and every bundled scene's) stays well within the WebAssembly
+// module's work budget (engine/scene.h kWasmWorkBudget, 5e6; the command's is 1e8), so that no
+// lesson page's Try-it panel is refused at its own values: within a fifth of it (the largest,
+// bin-2d, takes about 4e5).
+TEST(Lessons, EveryBundledRunIsWellWithinTheBrowsersWorkBudget) {
+    std::vector<std::string> files;
+    for (const Lesson& L : load_lessons(kDir)) files.push_back(L.file);
+    for (const auto& e : std::filesystem::directory_iterator(kDir + "/scenes")) files.push_back(e.path().string());
+    for (const std::string& f : files) {
+        SCOPED_TRACE(f);
+        const Scene s = load_scenario(f);
+        EXPECT_EQ(s.work_budget, kDefaultWorkBudget);
+        double work = 0.0;
+        if (s.dimension == 1) {
+            World1 w(s);
+            std::vector<Event1> events;
+            w.advance_to(s.duration, &events);
+            work = static_cast<double>(w.work_done());
+        } else if (s.dimension == 2) {
+            World2 w(s);
+            std::vector<Event2> events;
+            w.advance_to(s.duration, &events);
+            work = static_cast<double>(w.work_done());
+        } else {
+            World3 w(s);
+            std::vector<Event3> events;
+            w.advance_to(s.duration, &events);
+            work = static_cast<double>(w.work_done());
+        }
+        EXPECT_LT(work, kWasmWorkBudget / 5);
+    }
 }
 
 TEST(Lessons, CatchUpAnswersAreTheClosedForms) {
