@@ -1,6 +1,7 @@
 // The `collide` command.
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
@@ -181,6 +182,14 @@ int main(int argc, char** argv) {
     worksheet->add_option("--students", worksheet_options.students, "how many sheets (1 to 1000)")
         ->capture_default_str();
     worksheet->add_option("--seed", worksheet_options.seed, "the draw: the same seed gives the same sheets")
+        ->check([](const std::string& text) {  // not "-1" or 2^64 quietly made the largest seed
+            errno = 0;
+            char* end = nullptr;
+            std::strtoull(text.c_str(), &end, 10);
+            return !text.empty() && text.find_first_not_of("0123456789") == std::string::npos && errno != ERANGE
+                       ? std::string()
+                       : "expected a whole number from 0 to 18446744073709551615 (2^64 - 1), got '" + text + "'";
+        })
         ->capture_default_str();
     worksheet->add_flag("--force", worksheet_options.force, "replace a directory that is not empty");
     worksheet->footer(

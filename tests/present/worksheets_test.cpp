@@ -180,6 +180,22 @@ TEST(Worksheet, SheetsShowNoAnswerAndNoWorkedExample) {
     }
 }
 
+// A seed outside 0 .. 2^64 - 1 ("-1", 2^64) quietly became the largest seed (issue 34): now
+// refused (exit 2) naming the range, before anything is written; the largest seed itself is
+// taken as written.
+TEST(Worksheet, ASeedOutsideItsRangeIsRefusedNotMadeTheLargest) {
+    const fs::path out = scratch("seed-range");
+    for (const char* seed : {"-1", "18446744073709551616", "1e3", "7x", "''"}) {
+        std::string err;
+        EXPECT_EQ(worksheet("catch-up -o " + out.string() + " --students 2 --seed " + seed, &err), 2) << seed;
+        EXPECT_NE(err.find("expected a whole number from 0 to 18446744073709551615"), std::string::npos) << err;
+        EXPECT_FALSE(fs::exists(out)) << seed;
+    }
+    ASSERT_EQ(worksheet("catch-up -o " + out.string() + " --students 2 --seed 18446744073709551615"), 0);
+    EXPECT_EQ(json::parse(slurp(out / "key.json"))["seed"].get<std::uint64_t>(), 18446744073709551615ULL);
+    fs::remove_all(out);
+}
+
 TEST(Worksheet, TheSameSeedGivesTheSameFilesAnotherSeedOtherValues) {
     const fs::path a = scratch("seed-a"), b = scratch("seed-b"), c = scratch("seed-c");
     ASSERT_EQ(worksheet("catch-up rotation-directions -o " + a.string() + " --students 4 --seed 7"), 0);
