@@ -60,9 +60,12 @@ std::size_t count(const Words& words) {
     if (words.size() == 1) return 1;
     if (words.size() > 2) throw std::runtime_error(words[0] + " takes at most one number: " + words[0] + " [n]");
     const std::string& w = words[1];
-    if (w.find_first_not_of("0123456789") != std::string::npos || w.size() > 9 || std::stoul(w) == 0)
+    if (w.empty() || w.find_first_not_of("0123456789") != std::string::npos ||
+        w.find_first_not_of('0') == std::string::npos)
         throw std::runtime_error("n must be a whole number >= 1, not '" + w + "'");
-    return std::stoul(w);
+    // Any whole number: beyond the steps the scene has, it goes to the end (or the start).
+    const std::string digits = w.substr(w.find_first_not_of('0'));
+    return digits.size() > 18 ? std::numeric_limits<std::size_t>::max() / 2 : std::stoull(digits);
 }
 
 // The numbers of a value written "1,2", "1 2", "[1, 2]" or "(1, 2)".

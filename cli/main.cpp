@@ -1,6 +1,9 @@
 // The `collide` command.
 #include <unistd.h>
 
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -179,6 +182,14 @@ int main(int argc, char** argv) {
     worksheet->add_option("--students", worksheet_options.students, "how many sheets (1 to 1000)")
         ->capture_default_str();
     worksheet->add_option("--seed", worksheet_options.seed, "the draw: the same seed gives the same sheets")
+        ->check([](const std::string& text) {  // not "-1" or 2^64 quietly made the largest seed
+            errno = 0;
+            char* end = nullptr;
+            std::strtoull(text.c_str(), &end, 10);
+            return !text.empty() && text.find_first_not_of("0123456789") == std::string::npos && errno != ERANGE
+                       ? std::string()
+                       : "expected a whole number from 0 to 18446744073709551615 (2^64 - 1), got '" + text + "'";
+        })
         ->capture_default_str();
     worksheet->add_flag("--force", worksheet_options.force, "replace a directory that is not empty");
     worksheet->footer(
@@ -254,6 +265,20 @@ int main(int argc, char** argv) {
         "Example: collide compare lessons/scenes/compare-slow-bounce.toml --box2d-defaults\n"
         "See docs/commands/compare.md.");
 
+    // Every command that runs a scene: the work a run may take before it is refused (exit 2).
+    double max_work = collide::kDefaultWorkBudget;
+    for (CLI::App* c : {step, render, gui, material, worksheet, compare})
+        c->add_option("--max-work", max_work,
+                      "the work a run may take before it is refused, in units of about a microsecond "
+                      "(docs/stepping.md, \"Work budget\")")
+            ->check([](const std::string& text) {
+                char* end = nullptr;
+                const double x = std::strtod(text.c_str(), &end);
+                return *end == '\0' && x > 0.0 && std::isfinite(x) ? std::string()
+                                                                   : "expected a number > 0, got '" + text + "'";
+            })
+            ->capture_default_str();
+
     if (argc == 1) {  // bare `collide`: show what it can do
         std::cout << app.help();
         return 0;
@@ -265,6 +290,7 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : kBadInput;
     }
     return collide::cli::run_command(std::cerr, [&] {
+        collide::set_default_work_budget(max_work);
         if (*solve) return run_solve(file, format, model);
         if (*compare) return collide::run_compare(compare_options, std::cout, std::cerr);
         if (*step) {

@@ -66,6 +66,9 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
             // The WebAssembly module, for the pages' Try-it panels (docs/commands/material.md, "The Try-it panel").
             const std::string engine_js = engine_js_path();
+            // Ctrl-C from here on is one flag for the whole command (lessons, frames, ffmpeg),
+            // held until the staging directory is removed again.
+            const cli::SignalGuard signals;
             StagedDirectory staged(opt.out_dir, opt.force);
             // The options, read once as collide render reads them: every lesson renders with them,
             // and with an MP4 when ffmpeg is installed.
@@ -89,7 +92,6 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                 std::snprintf(line, sizeof line, "[%zu/%zu] %-24s %5.1f s\n", p.done, p.total, p.id.c_str(), p.seconds);
                 err << line << std::flush;
             };
-            const cli::SignalGuard signals;
             build_site(SiteRequest{lessons, request, engine_js}, tmp, progress, cli::stop_requested);
             staged.commit();
             if (!opt.quiet) {

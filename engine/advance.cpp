@@ -226,7 +226,8 @@ template <int D>
 void World<D>::check_finite(const std::vector<Body>& bodies, double t) const {
     for (std::size_t i = 0; i < bodies.size(); ++i)
         if (!bodies[i].state_finite())
-            throw RunError("the state of '" + scene_.bodies[i].name + "' is no longer finite by t = " + run_number(t) +
+            throw RunError(run_source(scene_.file) + "the state of '" + scene_.bodies[i].name +
+                           "' is no longer finite by t = " + run_number(t) +
                            " s (a number overflowed: the scene's speeds, spins or sizes are beyond what the run "
                            "can follow)");
 }
@@ -261,6 +262,8 @@ void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on
     } else if (any_rest || gravity().norm() > 0.0) {
         h = std::min(h, kRestStep);
     }
+    work_.body_substeps += moving;
+    if (work_done() > work_budget()) refuse_work(t0);
     const double t1 = t0 + h;
     loop_.substep_end = t1;
     loop_.open = true;

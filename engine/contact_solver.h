@@ -30,6 +30,7 @@ struct Contact {
     Vec impulse = Vec::Zero();  // summed over its points, on b
     double weight = 0.0;        // summed normal impulse
     Vec moment = Vec::Zero();   // summed normal impulse times point
+    bool approximate = false;   // a point's answer was approximate (Response3::approximate)
 };
 
 // What the solve aims at for one contact point.

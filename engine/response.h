@@ -39,6 +39,7 @@ struct Response2 {
     bool separating = false;
     bool sliding = false;                       // coulomb: the sticking impulse left the friction cone
     bool painleve = false;                      // coulomb: no one-step answer with friction (see coulomb())
+    bool approximate = false;                   // routh: see Response3
     Vec2 va = Vec2::Zero(), vb = Vec2::Zero();  // after, m/s
     double wa = 0.0, wb = 0.0;                  // after, rad/s
 };
@@ -49,6 +50,9 @@ struct Response3 {
     bool separating = false;
     bool sliding = false;
     bool painleve = false;
+    // routh: the impact could not be integrated to its end as specified (RouthDetail::settled
+    // false, or jammed): this answer is an approximation, and every output says so.
+    bool approximate = false;
     Vec3 va = Vec3::Zero(), vb = Vec3::Zero();
     Vec3 wa = Vec3::Zero(), wb = Vec3::Zero();
 };

@@ -54,7 +54,7 @@ Quat exp_map(const Vec3& phi) {
     return Quat(half.cos, v.x(), v.y(), v.z());
 }
 
-std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings) {
+std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings, std::uint64_t max_steps) {
     if (body->is_static || dt == 0.0) return 0;
     const Mat3& Ib = body->inertia;
     if (Ib == Mat3::Identity() * Ib(0, 0)) {
@@ -68,13 +68,14 @@ std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settin
     const Vec3 wb = inv_Ib * Lb;
     if (wb.norm() == 0.0) return 0;
     // The count as a double first: a spin of 1e9 rad/s for 0.01 s is 2e9 steps, more than an
-    // int holds (a cast would be undefined; it gave one giant step and NaN). The worlds refuse
-    // such a run before it starts (RunBudget, engine/scene.h); called directly, a count no
-    // 64-bit integer holds exactly is refused here.
+    // int holds (a cast would be undefined; it gave one giant step and NaN). A world passes
+    // what its work budget has left (engine/scene.h, Scene::work_budget); beyond 2^53 no
+    // 64-bit count is exact.
     const double steps = std::max(1.0, std::ceil(wb.norm() * std::abs(dt) / settings.max_angle_per_step));
-    if (!(steps <= 0x1p53))
+    if (!(steps <= 0x1p53) || steps > static_cast<double>(max_steps))
         throw RunError("a free rotation of " + run_number(wb.norm()) + " rad/s for " + run_number(dt) +
-                       " s would take " + run_number(steps) + " steps");
+                       " s would take " + run_number(steps) + " steps" +
+                       (steps <= 0x1p53 ? ", more than the run's work budget has left" : ""));
     const auto n = static_cast<std::uint64_t>(steps);
     const double h = dt / steps;
     // Yoshida's triple jump: symmetric steps of g1 h, g2 h, g1 h (g2 < 0) give fourth order.

@@ -25,7 +25,9 @@ Quat exp_map(const Vec3& phi);
 // Turns the body for dt seconds with no torque: updates orientation and w (world frame), and
 // returns the number of steps taken (each turns the body by at most max_angle_per_step).
 // Static bodies and bodies at rest are left alone (0 steps). Throws RunError
-// (engine/run_error.h) if the steps would number more than 2^53.
-std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings = {});
+// (engine/run_error.h), before taking any, if the steps would number more than max_steps (a
+// world passes what its work budget has left) or 2^53.
+std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings = {},
+                          std::uint64_t max_steps = UINT64_MAX);
 
 }  // namespace collide

@@ -195,6 +195,8 @@ void Impact<D>::finish() {
         detail->jammed = jammed;
         detail->slip_steps = slip_steps;
         detail->slip_end_in_closed_form = slip_end_closed;
+        detail->slip_end_on_ray = slip_end_on_ray;
+        detail->settled = settled;
     }
 }
 
@@ -296,13 +298,17 @@ Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, doubl
     R.col(2) = n.cross(R.col(1));
     const Impact<3> s = integrate<3>(R, collision_matrix(a, b), u, e, mu, law, how, detail);
     if (s.jammed) {
-        // The turning slip neither stopped nor let compression end within kMaxSteps steps (a
-        // Painleve-like jam the integration does not resolve): the frictionless impulse, flagged.
+        // A straight stretch on which compression cannot end (u_n falling as P_n grows: a
+        // Painleve-like jam, which the stretches the integration takes never are, see
+        // no_slip_direction() and finish_on_ray()): the frictionless impulse, flagged
+        // `approximate` and said so wherever the answer is shown.
         Response3 r = frictionless(a, b, n, e);
         r.painleve = true;
+        r.approximate = true;
         return r;
     }
     Response3 r;
+    r.approximate = !s.settled;
     r.P = R * s.P;
     r.sliding = s.kind != Kind::stick && s.u.tail<2>().norm() > 0.0;
     apply_impulse(a, b, &r);

@@ -55,6 +55,11 @@ struct RouthDetail {
     bool jammed = false;                   // 3D only: integration gave up (see routh.cpp)
     int slip_steps = 0;                    // 3D only: Taylor steps taken on the turning slip
     bool slip_end_in_closed_form = false;  // 3D only: the slip's end taken from its series
+    bool slip_end_on_ray = false;          // 3D only: the slip's end taken on its ray (near the stick threshold)
+    // 3D only: false if the turning slip could not be followed to its end (20000 steps) and was
+    // finished along the direction it had then: the answer is then approximate, and says so
+    // (collide solve's JSON "settled": false and a line in the text; the world's event).
+    bool settled = true;
 };
 
 // Impact with Coulomb friction mu and restitution e by the given law. Separating or resting
@@ -71,6 +76,10 @@ Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, doubl
 struct RouthIntegration {
     double tolerance = 1e-11;
     bool closed_form_end = true;
+    // Taylor steps of the first pass, and of the second (near the stick threshold, see
+    // routh_slip.cpp): beyond the second's, the slip is finished along its direction and the
+    // answer flagged (RouthDetail::settled = false).
+    int first_pass_steps = 500, last_step = 20000;
 };
 Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu, RestitutionLaw law,
                 const RouthIntegration& how, RouthDetail* detail = nullptr);

@@ -36,6 +36,7 @@ struct Impact {
     double W = 0.0;                  // work of the normal impulse so far, integral u_n dP_n
     double Pc = 0.0, Wc = 0.0;       // P_n and W at the end of compression
     bool compressing = true, jammed = false;
+    bool settled = true;      // 3D: the turning slip was integrated to its end (see finish_on_ray())
     bool compressed = false;  // compression has ended at least once
     RouthDetail* detail = nullptr;
     RouthIntegration how;    // 3D: the slip's step tolerance and closed-form end
@@ -46,6 +47,7 @@ struct Impact {
     Eigen::Matrix<double, 2, 1> missed_at = Eigen::Matrix<double, 2, 1>::Zero();
     int slip_steps = 0;
     bool slip_end_closed = false;
+    bool slip_end_on_ray = false;
     Kind kind = Kind::slip;
     double from = 0.0;  // P_n where the current phase began
 
@@ -139,6 +141,8 @@ struct Impact {
     const double* event_series(const Series& s, double* g) const;
     double restitution_end(const Series& s, double h);
     bool run_slip_3d();
+    int follow_slip(double tolerance, int max_steps, bool on_ray);
+    int finish_on_ray(double tolP, bool anyway);
 
     // ---- 3D slip: its end in closed form (routh_slip_end.cpp) ----
     struct SlipEnd;  // the series of the rest of the slip

@@ -5,6 +5,13 @@
 
 namespace collide {
 
+namespace {
+double the_default_work_budget = kDefaultWorkBudget;
+}  // namespace
+
+double default_work_budget() { return the_default_work_budget; }
+void set_default_work_budget(double units) { the_default_work_budget = units; }
+
 const char* policy_name(Policy p) { return p == Policy::sequential ? "sequential" : "simultaneous"; }
 
 const char* step_mode_name(StepMode s) {

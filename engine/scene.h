@@ -42,7 +42,21 @@ struct SceneBody {
     bool is_static() const { return body1.is_static || body2.is_static || body3.is_static; }
 };
 
+// The work a run may take before the world refuses it (RunError: exit 2), in units of about a
+// microsecond (docs/stepping.md, "Work budget"): each moving body's share of a substep, each
+// free-rotation step, each time-of-impact prediction, each collision (1D: each event and each
+// motion between them). The worlds estimate it before they start (what the scene costs if
+// nothing but its free motion happens) and count it while they run, refusing as soon as the
+// estimate or the count passes the budget. The default is kDefaultWorkBudget (about a
+// minute); the commands take --max-work, the Python module max_work=, and the WebAssembly
+// module gives each call kWasmWorkBudget (a few seconds: a page never freezes).
+constexpr double kDefaultWorkBudget = 1e8;
+constexpr double kWasmWorkBudget = 5e6;
+double default_work_budget();                // kDefaultWorkBudget unless set below
+void set_default_work_budget(double units);  // process-wide: every Scene made after takes it
+
 struct Scene {
+    std::string file;  // where it was read from ("<stdin>", a lesson's file), for messages; may be ""
     std::string title;
     int dimension = 2;
     Vec3 gravity = Vec3::Zero();  // m/s^2 (2D: z = 0; 1D: along x)
@@ -56,6 +70,7 @@ struct Scene {
     double restitution = 1.0;  // for bodies that set none
     double friction = 0.0;
     std::vector<SceneBody> bodies;
+    double work_budget = default_work_budget();  // see kDefaultWorkBudget
 
     // Pair rules: e = min(ea, eb) (the less bouncy body decides: clay on rubber does not
     // bounce); mu = sqrt(mua mub) (either surface being frictionless makes the pair so).

@@ -35,21 +35,27 @@ bool is_round(const Shape3& s) { return s.kind == Shape3::Kind::sphere; }
 bool is_plane(const Shape2& s) { return s.kind == Shape2::Kind::half_plane; }
 bool is_plane(const Shape3& s) { return s.kind == Shape3::Kind::half_space; }
 
-// Turning for dt seconds with a constant angular acceleration alpha (resting forces; 0 when free).
-void turn(Body2* b, double dt, double alpha) {
+// Turning for dt seconds with a constant angular acceleration alpha (resting forces; 0 when
+// free); returns the rotation steps taken (3D), refusing (RunError) a turn of more than
+// `limit` steps before taking any.
+std::uint64_t turn(Body2* b, double dt, double alpha, std::uint64_t) {
     b->angle += b->w * dt + 0.5 * alpha * dt * dt;
     b->w += alpha * dt;
+    return 0;
 }
-void turn(Body3* b, double dt, const Vec3& alpha) {
+[[noreturn]] void refuse_turn(double steps, double dt) {
+    throw RunError("a turn of " + run_number(steps) + " rotation steps in " + run_number(dt) +
+                   " s, more than the run's work budget has left");
+}
+std::uint64_t turn(Body3* b, double dt, const Vec3& alpha, std::uint64_t limit) {
     if (alpha.isZero(0.0)) {
-        rotate_free(b, dt);  // torque-free: L kept, gyroscopic term included
-        return;
+        return rotate_free(b, dt, {}, limit);  // torque-free: L kept, gyroscopic term included
     }
     // Under the (small, constant) torque of resting forces: w(t) = w + alpha t, the orientation
     // turned by the midpoint spin of short steps.
     const double turned = (b->w.norm() + alpha.norm() * dt) * dt;
     const double steps = std::max(1.0, std::ceil(turned / 0.005));  // (as in rotate_free: no int)
-    if (!(steps <= 0x1p53)) throw RunError("a turn of " + run_number(turned) + " rad in one step");
+    if (!(steps <= static_cast<double>(limit))) refuse_turn(steps, dt);
     const auto n = static_cast<std::uint64_t>(steps);
     const double h = dt / steps;
     for (std::uint64_t k = 0; k < n; ++k) {
@@ -57,6 +63,7 @@ void turn(Body3* b, double dt, const Vec3& alpha) {
         if (phi.squaredNorm() > 0.0) b->orientation = (exp_map(phi) * b->orientation).normalized();
     }
     b->w += alpha * dt;
+    return n;
 }
 
 // The gap between two bodies' bounding circles (spheres), or between one's and a plane (m): no
@@ -113,6 +120,60 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     narrow_.rest_smooth = 0.5 * kZenoTime * g;
     narrow_.rest_cornered = std::max(narrow_.rest_smooth, std::sqrt(4.0 * g * kTouch));
     for (std::size_t i = 0; i < n; ++i) set_free(i);
+    estimate_ = estimate_work();
+    if (estimate_ > static_cast<double>(work_budget()))
+        throw RunError(run_source(scene.file) + "the scene would take about " + run_number(estimate_) +
+                       " units of work (" + run_duration(estimate_) + ") to run its " + run_number(scene.duration) +
+                       " s, more than its budget of " + run_number(scene.work_budget) +
+                       " (--max-work raises it; see docs/stepping.md, \"Work budget\")");
+}
+
+template <int D>
+std::uint64_t World<D>::work_done() const {
+    return work_.body_substeps + work_.rotation_steps + counters_.predictions + counters_.events;
+}
+
+template <int D>
+std::uint64_t World<D>::work_budget() const {
+    const double b = scene_.work_budget;
+    return b >= 0x1p63 ? UINT64_MAX : b > 0.0 ? static_cast<std::uint64_t>(b) : 0;
+}
+
+// What the scene costs if nothing but its free motion happens, without gravity (under gravity
+// bodies may come to rest and sleep, costing nothing: only the count while running decides):
+// every moving body in every substep, each substep as long as begin_substep() makes it from
+// the bodies' speeds now (free flight keeps them), and each 3D body's free rotation, whose
+// speed is at least 2E/|L| (E and L kept: 2E = w.L <= |w| |L|), at 0.005 rad a step.
+template <int D>
+double World<D>::estimate_work() const {
+    if (gravity().norm() > 0.0) return 0.0;
+    double speed = 0.0, size = 0.0, turns = 0.0;
+    std::size_t moving = 0;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        const Body& b = bodies_[i];
+        if (b.is_static) continue;
+        ++moving;
+        speed += b.v.norm();
+        size += shapes_.radius[i];
+        if constexpr (D == 3) {
+            const Vec3 L = b.inertia_world() * b.w;
+            if (!shapes_.round[i] && L.norm() > 0.0) turns += b.w.dot(L) / L.norm();
+        }
+    }
+    if (moving == 0) return 0.0;
+    double h = kLongestSubstep;
+    if (speed > 0.0) h = std::min(h, std::max(kShortestSubstep, 4.0 * size / speed));
+    return static_cast<double>(moving) * (scene_.duration / h) + scene_.duration * turns / 0.005;
+}
+
+template <int D>
+void World<D>::refuse_work(double t) const {
+    const double done = static_cast<double>(work_done());
+    const double all = t > 0.0 ? done * scene_.duration / t : done;
+    throw RunError(run_source(scene_.file) + "the scene has taken " + run_number(done) + " units of work by t = " +
+                   run_number(t) + " s of its " + run_number(scene_.duration) + " s (at this rate about " +
+                   run_number(all) + " in all, " + run_duration(all) + "), more than its budget of " +
+                   run_number(scene_.work_budget) + " (--max-work raises it; see docs/stepping.md, \"Work budget\")");
 }
 
 template <int D>
@@ -131,11 +192,17 @@ void World<D>::set_free(std::size_t i) {
 }
 
 template <int D>
-void World<D>::move(Body* b, const Track& k, double dt) {
+void World<D>::move(Body* b, const Track& k, double dt) const {
     if (b->is_static || dt == 0.0) return;
     b->position += b->v * dt + 0.5 * dt * dt * k.a;
     b->v += k.a * dt;
-    turn(b, dt, k.alpha);
+    const std::uint64_t spent = work_done(), budget = work_budget();
+    try {
+        work_.rotation_steps += turn(b, dt, k.alpha, spent < budget ? budget - spent : 0);
+    } catch (const RunError& e) {  // named as every other refusal of the run
+        throw RunError(run_source(scene_.file) + e.what() +
+                       " (--max-work raises it; see docs/stepping.md, \"Work budget\")");
+    }
 }
 
 template <int D>
@@ -255,8 +322,9 @@ void World<D>::build_grid(double t0, double t1) {
         // A box beyond the doubles (a body about to overflow them) would size a grid without
         // end: the run stops here, as at a state that is no longer finite (check_finite).
         if (!a.allFinite() || !b.allFinite())
-            throw RunError("'" + scene_.bodies[i].name + "' moves beyond the range of numbers after t = " +
-                           run_number(t0) + " s (the scene's speeds or distances are beyond what the run can follow)");
+            throw RunError(run_source(scene_.file) + "'" + scene_.bodies[i].name +
+                           "' moves beyond the range of numbers after t = " + run_number(t0) +
+                           " s (the scene's speeds or distances are beyond what the run can follow)");
         moving.push_back({a, b});
     }
     grid_.build(moving);
@@ -386,6 +454,7 @@ bool World<D>::resolve_point(Contact* c, int k) {
     moved(c->a);
     moved(c->b);
     c->impulse += r.P;
+    c->approximate = c->approximate || r.approximate;
     c->weight += std::max(0.0, r.P.dot(n));
     c->moment += std::max(0.0, r.P.dot(n)) * p;
     return true;
@@ -519,6 +588,7 @@ bool World<D>::resolve(std::size_t i, std::size_t j, double t, std::vector<Event
         record(c.a, c.b, t, c.m.normal, c.impulse, c.weight > 0.0 ? Vec(c.moment / c.weight) : c.m.points[0],
                scratch_.mark[c.a] == reached ? scratch_.before[c.a] : vel(c.a),
                scratch_.mark[c.b] == reached ? scratch_.before[c.b] : vel(c.b), events);
+        events->back().approximate = c.approximate;
     }
     settle(group, t);  // (stepped bodies are left out)
     for (std::size_t k : group) {

@@ -48,6 +48,9 @@ struct Event {
     // scene's masses, shapes and the velocities above, the collision can be rebuilt from the
     // event alone (teach/event_problem.h). (A welded body's pose is its own, not its compound's.)
     typename Space<D>::Pose pose_a, pose_b;
+    // The model's answer was an approximation (Response3::approximate: Routh's integration
+    // could not be finished as specified); `collide step --events` says so.
+    bool approximate = false;
 };
 
 // Where, when and how hard one collision struck, in 3D form whatever its dimension (as
@@ -123,6 +126,14 @@ public:
     };
     const Counters& counters() const { return counters_; }
 
+    // The work done so far, in the units of Scene::work_budget (engine/scene.h): each moving
+    // body's share of each substep, each free-rotation step, each time-of-impact prediction,
+    // each collision. The world refuses (RunError) to start a scene whose estimate
+    // (work_estimate(): its free motion alone, without gravity, over its duration) is beyond
+    // the budget, and stops a run whose work passes it.
+    std::uint64_t work_done() const;
+    double work_estimate() const { return estimate_; }
+
     static constexpr double kTouch = 1e-10;     // m: a gap this small is contact
     static constexpr double kZenoTime = 1e-12;  // s: see "Resting contact"
     static constexpr double kRestStep = 1e-3;   // s: longest substep while anything rests
@@ -172,8 +183,13 @@ private:
     // else throws RunError naming the first body that is not and the instant.
     void check_finite(const std::vector<Body>& bodies, double t) const;
 
+    // The work budget (see work_done()).
+    std::uint64_t work_budget() const;
+    double estimate_work() const;
+    [[noreturn]] void refuse_work(double t) const;
+
     // Motion.
-    static void move(Body* b, const Track& k, double dt);
+    void move(Body* b, const Track& k, double dt) const;
     Mover mover(std::size_t i) const;
     void step(Mover* m, double dt) const;
     void drift(std::size_t i, double t);  // bodies_[i] to time t along its motion
@@ -249,6 +265,13 @@ private:
 
     RunCount runs_;  // counts this world among every run (run_count.h)
     Scene scene_;
+    // Work beyond the counters (work_done()): bodies times substeps, rotation steps (turned in
+    // const functions too: bodies_at(), the time of impact's copies).
+    struct Work {
+        std::uint64_t body_substeps = 0, rotation_steps = 0;
+    };
+    mutable Work work_;
+    double estimate_ = 0.0;
     std::vector<Body> bodies_;
     std::vector<Track> track_;
     Counters counters_;

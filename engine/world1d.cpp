@@ -107,6 +107,8 @@ void World1::advance_to(double target, std::vector<Event1>* events, const Impact
         if (events->size() - start > kMaxEventsPerAdvance)
             throw std::runtime_error("more than 10^6 impacts in one output step at t = " + std::to_string(time_) +
                                      " s");
+        work_ += 1 + (events->size() - recorded);
+        if (static_cast<double>(work_) > scene_.work_budget) refuse_work();
         const double horizon = target - time_;
         if (horizon <= 0.0) return check_finite();
         double earliest = kNever;
@@ -124,11 +126,21 @@ void World1::advance_to(double target, std::vector<Event1>* events, const Impact
     }
 }
 
+// As the 2D and 3D worlds (World<D>::refuse_work).
+void World1::refuse_work() const {
+    const double done = static_cast<double>(work_);
+    const double all = time_ > 0.0 ? done * scene_.duration / time_ : done;
+    throw RunError(run_source(scene_.file) + "the scene has taken " + run_number(done) + " units of work by t = " +
+                   run_number(time_) + " s of its " + run_number(scene_.duration) + " s (at this rate about " +
+                   run_number(all) + " in all, " + run_duration(all) + "), more than its budget of " +
+                   run_number(scene_.work_budget) + " (--max-work raises it; see docs/stepping.md, \"Work budget\")");
+}
+
 // As the 2D and 3D worlds (World<D>::check_finite): no state that is not finite leaves.
 void World1::check_finite() const {
     for (std::size_t i = 0; i < bodies_.size(); ++i)
         if (!bodies_[i].state_finite())
-            throw RunError("the state of '" + scene_.bodies[i].name +
+            throw RunError(run_source(scene_.file) + "the state of '" + scene_.bodies[i].name +
                            "' is no longer finite by t = " + run_number(time_) + " s (a number overflowed)");
 }
 

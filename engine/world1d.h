@@ -21,6 +21,7 @@
 // e = 1 bounces forever, and every bounce longer than kZenoTime is simulated exactly.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
 
@@ -66,12 +67,18 @@ public:
 
     bool resting(std::size_t i) const { return supported_[i]; }
 
+    // The work done so far (Scene::work_budget, engine/scene.h): each motion between events
+    // and each event. A run whose work passes the budget is stopped (RunError).
+    std::uint64_t work_done() const { return work_; }
+
 private:
     double right_face(std::size_t i) const;          // m: where a block meets its right neighbour
     double gap(std::size_t i, std::size_t j) const;  // right i's face to left j's face
     double first_contact(std::size_t i, std::size_t j, double horizon) const;
     void drift(double dt);
-    void check_finite() const;                       // every body finite at time_; else RunError
+    void check_finite() const;  // every body finite at time_; else RunError
+    [[noreturn]] void refuse_work() const;
+    std::uint64_t work_ = 0;
     void update_support();                           // sets supported_ (see above)
     double acceleration(std::size_t i) const;        // m/s^2 along x
     std::vector<std::size_t> left_to_right() const;  // block indices by position

@@ -385,11 +385,15 @@ void write_lesson(const std::string& dir, const Loaded& in, const Ran& ran, cons
 }
 
 // animation.mp4 or .gif from the frames; returns its file name.
-std::string write_video(const RenderRequest& rq, std::ostream& err) {
+// Interrupted while ffmpeg runs: ffmpeg is ended with the command and no video is left (the
+// frames are complete).
+std::string write_video(const RenderRequest& rq, long frames, std::ostream& err, const StopRequested& stop) {
     const VideoRequest& video = *rq.video;
     const std::string name = video.file_name();
     if (!rq.quiet) err << "encoding " << name << " with ffmpeg ...\n";
-    render::encode_video(video.ffmpeg, rq.out_dir + "/frames", rq.frame.fps, video.format, rq.out_dir + "/" + name);
+    if (!render::encode_video(video.ffmpeg, rq.out_dir + "/frames", rq.frame.fps, video.format, rq.out_dir + "/" + name,
+                              stop))
+        throw Interrupted(frames);
     return name;
 }
 
@@ -404,7 +408,7 @@ Written write_stage(const RenderRequest& rq, const Loaded& in, const Ran& ran, c
     Written out;
     out.seconds = write_pictures(rq, in, ran.run, a, err, stop);
     if (in.lesson) write_lesson(rq.out_dir, in, ran, a);
-    if (rq.video) out.video = write_video(rq, err);
+    if (rq.video) out.video = write_video(rq, static_cast<long>(ran.run.frames.size()), err, stop);
     return out;
 }
 

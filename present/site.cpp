@@ -60,6 +60,9 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
             (lesson_dir / "momentum.svg").string(),
             svg_plot("Momentum (kg m/s)", r.plot_t, momentum, r.collision_times, L.scene.duration));
         built.push_back(std::move(b));
+        // Between lessons too: an interrupt during a lesson's figures or plots (no frame left
+        // to ask) is honoured here, not lost.
+        if (stop && stop()) throw Interrupted(0);
         if (progress)
             progress({k + 1, rq.lessons.size(), L.id,
                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
@@ -79,6 +82,7 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         fs::copy_file(rq.engine_js, dir / "collide-engine.js", fs::copy_options::overwrite_existing);
         render::write_file_atomic((dir / "try-it.js").string(), std::string(assets::site_try_it_js));
     }
+    if (stop && stop()) throw Interrupted(0);  // the last chance before the command renames it into place
 }
 
 }  // namespace collide

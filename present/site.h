@@ -38,7 +38,8 @@ struct SiteProgress {
 };
 
 // Writes the site into `dir` (an empty directory: the command stages it, present/staged_dir.h).
-// `progress` (if given) after each lesson; `stop` between frames (Interrupted). Throws
+// `progress` (if given) after each lesson; `stop` between frames, while ffmpeg runs, between
+// lessons and once at the end (Interrupted: nothing asked after is lost). Throws
 // InputError for a lesson that cannot be rendered as written, std::runtime_error otherwise.
 void build_site(const SiteRequest& request, const std::filesystem::path& dir,
                 const std::function<void(const SiteProgress&)>& progress = nullptr,

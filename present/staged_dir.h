@@ -12,19 +12,24 @@ namespace collide {
 class StagedDirectory {
 public:
     // Refuses `out_dir` when it exists and is not a directory, or is a directory that is not
-    // empty without `force` (InputError naming it). Nothing is created yet.
+    // empty without `force`, when it is the root or holds the current directory ("-o ."), when
+    // it is a symbolic link that leads nowhere (a loop), and when its staging directory cannot
+    // be created (InputError naming it): all before any work. "DIR/" is DIR; a symbolic link
+    // to a directory is written through (its target is replaced). Creates the staging
+    // directory.
     StagedDirectory(const std::string& out_dir, bool force);
     // Removes the staging directory when commit() did not run.
     ~StagedDirectory();
     StagedDirectory(const StagedDirectory&) = delete;
     StagedDirectory& operator=(const StagedDirectory&) = delete;
 
-    // Creates the (empty) staging directory and returns it: write everything under it.
+    // The (empty) staging directory: write everything under it.
     const std::filesystem::path& begin();
     // Into place: an old DIR (forced) goes aside first, then away.
     void commit();
 
 private:
+    std::string name_;  // as given, for messages
     std::filesystem::path dir_, tmp_;
 };
 

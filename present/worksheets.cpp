@@ -290,9 +290,12 @@ void write_file(const fs::path& path, const std::string& text) {
 }
 
 // `weasyprint IN.html OUT.pdf`, its messages in a log kept only when it fails.
-void to_pdf(const std::string& weasyprint, const fs::path& html_file, const fs::path& pdf) {
+void to_pdf(const std::string& weasyprint, const fs::path& html_file, const fs::path& pdf, const StopRequested& stop) {
     const std::string log = pdf.string() + ".log";
-    if (!render::run_program({weasyprint, "--quiet", html_file.string(), pdf.string()}, log).ok()) {
+    const render::ProgramRun run =
+        render::run_program({weasyprint, "--quiet", html_file.string(), pdf.string()}, log, stop);
+    if (run.stopped) throw Interrupted(0);
+    if (!run.ok()) {
         std::ifstream in(log);
         std::string first;
         std::getline(in, first);
@@ -316,15 +319,16 @@ std::string index_page(const std::vector<Lesson>& lessons, int students) {
 }  // namespace
 
 std::vector<std::string> write_worksheets(const Lesson& L, const std::vector<StudentSheet>& sheets, std::uint64_t seed,
-                                          const fs::path& dir, const std::string& weasyprint) {
+                                          const fs::path& dir, const std::string& weasyprint,
+                                          const StopRequested& stop) {
     fs::create_directories(dir);
     write_file(dir / "sheets.html", sheets_page(L, sheets));
     write_file(dir / "key.html", key_page(L, sheets, seed));
     write_file(dir / "key.json", key_json(L, sheets, seed));
     std::vector<std::string> files = {"sheets.html", "key.html", "key.json"};
     if (!weasyprint.empty()) {
-        to_pdf(weasyprint, dir / "sheets.html", dir / "sheets.pdf");
-        to_pdf(weasyprint, dir / "key.html", dir / "key.pdf");
+        to_pdf(weasyprint, dir / "sheets.html", dir / "sheets.pdf", stop);
+        to_pdf(weasyprint, dir / "key.html", dir / "key.pdf", stop);
         files.insert(files.end(), {"sheets.pdf", "key.pdf"});
     }
     return files;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "present/stop.h"
 #include "scenario/lesson.h"
 #include "teach/worksheet.h"
 
@@ -21,10 +22,11 @@ namespace collide {
 
 // One lesson's worksheets into `dir` (created); `weasyprint`: its path, or "" for no PDFs.
 // Returns the files written, for the summary. Throws std::runtime_error when a file cannot be
-// written or weasyprint fails.
+// written or weasyprint fails, and Interrupted when `stop` says so while weasyprint runs
+// (weasyprint is ended first: render/video.h run_program).
 std::vector<std::string> write_worksheets(const Lesson& lesson, const std::vector<StudentSheet>& sheets,
                                           std::uint64_t seed, const std::filesystem::path& dir,
-                                          const std::string& weasyprint);
+                                          const std::string& weasyprint, const StopRequested& stop = nullptr);
 
 // DIR/index.html for several lessons: each lesson's sheets, key and key.json.
 void write_worksheet_index(const std::filesystem::path& dir, const std::vector<Lesson>& lessons, int students);

@@ -6,6 +6,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -32,7 +34,8 @@ std::string find_program(const std::string& program) {
     return "";
 }
 
-ProgramRun run_program(const std::vector<std::string>& args, const std::string& log) {
+ProgramRun run_program(const std::vector<std::string>& args, const std::string& log,
+                       const std::function<bool()>& stop) {
     std::vector<std::string> copy = args;
     std::vector<char*> argv;
     for (std::string& a : copy) argv.push_back(a.data());
@@ -45,13 +48,38 @@ ProgramRun run_program(const std::vector<std::string>& args, const std::string& 
     ProgramRun run;
     run.started = posix_spawn(&pid, copy.front().c_str(), &actions, nullptr, argv.data(), environ) == 0;
     posix_spawn_file_actions_destroy(&actions);
+    if (!run.started) return run;
     int status = 0;
-    if (run.started && ::waitpid(pid, &status, 0) == pid && WIFEXITED(status)) run.exit = WEXITSTATUS(status);
+    // Waits for the child without losing it to a signal (EINTR: the command's handler ran).
+    const auto reaped = [&](int options) {
+        for (;;) {
+            const pid_t r = ::waitpid(pid, &status, options);
+            if (r == pid) return true;
+            if (r == 0) return false;         // WNOHANG: still running
+            if (errno != EINTR) return true;  // (no such child: nothing left to wait for)
+        }
+    };
+    if (!stop) {
+        reaped(0);
+    } else {
+        bool done = false;
+        while (!(done = reaped(WNOHANG)) && !stop()) ::usleep(20000);
+        if (!done) {
+            ::kill(pid, SIGTERM);
+            for (int k = 0; k < 100 && !(done = reaped(WNOHANG)); ++k) ::usleep(20000);
+            if (!done) {
+                ::kill(pid, SIGKILL);
+                reaped(0);
+            }
+        }
+        run.stopped = stop();
+    }
+    if (WIFEXITED(status)) run.exit = WEXITSTATUS(status);
     return run;
 }
 
-void encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps, VideoFormat format,
-                  const std::string& out_path) {
+bool encode_video(const std::string& ffmpeg, const std::string& frames_dir, double fps, VideoFormat format,
+                  const std::string& out_path, const std::function<bool()>& stop) {
     char rate[32];
     std::snprintf(rate, sizeof rate, "%.6g", fps);
     const std::string tmp = out_path + ".tmp-" + std::to_string(::getpid());
@@ -73,7 +101,7 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
     }
     args.push_back(tmp);
 
-    const ProgramRun run = run_program(args, log);
+    const ProgramRun run = run_program(args, log, stop);
     std::string message;
     {
         std::ifstream in(log);
@@ -83,6 +111,10 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
     }
     std::error_code ec;
     fs::remove(log, ec);
+    if (run.stopped) {
+        fs::remove(tmp, ec);
+        return false;
+    }
     if (!run.ok()) {
         fs::remove(tmp, ec);
         while (!message.empty() && (message.back() == '\n' || message.back() == '\r')) message.pop_back();
@@ -96,6 +128,7 @@ void encode_video(const std::string& ffmpeg, const std::string& frames_dir, doub
         fs::remove(tmp, ec);
         throw std::runtime_error(out_path + ": cannot write: " + ec.message());
     }
+    return true;
 }
 
 }  // namespace collide::render

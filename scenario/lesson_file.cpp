@@ -65,9 +65,9 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
         if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '-'))
             lt->fail("id", "a lesson id has letters, digits and - only, got '" + L.id + "'");
     L.order = static_cast<int>(lt->integer("order", "the lesson's position in the list").value_or(0));
-    L.title = lt->string("title", "the lesson's title").value_or("");
+    L.title = lt->line("title", "the lesson's title").value_or("");
     if (L.title.empty()) lt->fail("title", "missing key 'title'");
-    L.section = lt->string("section", "the page's section it teaches").value_or("");
+    L.section = lt->line("section", "the page's section it teaches").value_or("");
     L.goals = strings(*lt, "goals", "a list of learning goals (strings)");
     L.setup = lt->string("setup", "the set-up: the givens (text)").value_or("");
     L.explanation = lt->string("explanation", "the explanation (text)").value_or("");

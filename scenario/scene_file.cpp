@@ -253,7 +253,8 @@ Scene parse_scene_table(const toml::table& table, const std::string& name, Scene
     sc->allow_only({"title", "dimension", "gravity", "duration", "output_dt", "model", "restitution_law", "policy",
                     "stepping", "restitution", "friction"});
     Scene s;
-    s.title = sc->string("title", "a title").value_or("");
+    s.file = name;
+    s.title = sc->line("title", "a title").value_or("");
     s.dimension = read_dimension(*sc);
     s.gravity = read_vec(*sc, "gravity", s.dimension, "m/s^2").value_or(Vec3::Zero());
     s.duration = read_positive(*sc, "duration", "the simulated time in s");

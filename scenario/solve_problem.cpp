@@ -190,7 +190,7 @@ SolveProblem parse_solve_table(const toml::table& table, const std::string& name
                      "about", "a", "b"});
     SolveProblem P;
     P.file = name;
-    P.title = root.string("title", "a title").value_or("");
+    P.title = root.line("title", "a title").value_or("");
     P.dimension = read_dimension(root);
     const int d = P.dimension;
 

@@ -209,7 +209,10 @@ double TableReader::checked_number(const toml::node& n, const std::string& key, 
     if (!n.is_number())
         throw InputError(file_, to_pos(n.source()), full_key(key),
                          "expected " + what + ", " + got(n, "write the number without quotes or units"));
-    const double x = n.value<double>().value_or(std::nan(""));
+    // An integer beyond 2^53 has no exact double, and toml++ gives none: taken as the nearest
+    // (then out of range below), not as NaN ("got nan" puzzled whoever wrote 10^16).
+    const double x =
+        n.is_integer() ? static_cast<double>(n.as_integer()->get()) : n.value<double>().value_or(std::nan(""));
     if (!std::isfinite(x))
         throw InputError(file_, to_pos(n.source()), full_key(key),
                          "expected " + what + ", got " + show(x) + " (values must be finite)");
@@ -258,6 +261,23 @@ std::optional<std::string> TableReader::string(const std::string& key, const std
     if (!n) return std::nullopt;
     if (!n->is_string()) fail(key, "expected " + what + ", got " + type_name(*n));
     return n->value<std::string>();
+}
+
+std::optional<std::string> TableReader::line(const std::string& key, const std::string& what) const {
+    const std::optional<std::string> s = string(key, what);
+    if (!s) return s;
+    for (std::size_t i = 0; i < s->size(); ++i) {
+        const auto c = static_cast<unsigned char>((*s)[i]);
+        // U+0080..U+009F (C1, ESC's 8-bit forms) are C2 80..C2 9F in UTF-8.
+        const bool c1 = c == 0xC2 && i + 1 < s->size() && static_cast<unsigned char>((*s)[i + 1]) >= 0x80 &&
+                        static_cast<unsigned char>((*s)[i + 1]) <= 0x9F;
+        if (c < 0x20 || c == 0x7F || c1)
+            fail(key, "expected " + what +
+                          " on one line, without control characters (line breaks, tabs, escape "
+                          "sequences), got '" +
+                          one_line(*s) + "'");
+    }
+    return s;
 }
 
 std::optional<std::vector<double>> TableReader::numbers(const std::string& key, std::size_t count,

@@ -56,6 +56,9 @@ public:
     std::optional<long long> integer(const std::string& key, const std::string& what) const;
     std::optional<bool> boolean(const std::string& key) const;
     std::optional<std::string> string(const std::string& key, const std::string& what) const;
+    // A string shown as one line (a title): no line breaks, tabs or other control characters
+    // (C0, DEL, C1: an ESC or OSC sequence would act on the terminal it is printed to).
+    std::optional<std::string> line(const std::string& key, const std::string& what) const;
     // Array of exactly n numbers (n = 0: of any length but empty).
     std::optional<std::vector<double>> numbers(const std::string& key, std::size_t n, const std::string& what) const;
     // 3x3 array of arrays of numbers.

@@ -81,7 +81,10 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
         const auto r = respond(P.model, a, b, n, e, mu, P.restitution_law, &s->routh);
         s->separating = r.separating;
         s->sliding = r.sliding;
-        if constexpr (!std::is_same_v<decltype(r), Response1>) s->painleve = r.painleve;
+        if constexpr (!std::is_same_v<decltype(r), Response1>) {
+            s->painleve = r.painleve;
+            s->approximate = r.approximate;
+        }
         s->P = embed(r.P);
         s->couple = embed(r.couple);
         s->va = embed(r.va);

@@ -39,6 +39,7 @@ struct Solution {
     page::Listing3 listing;                // page-listing (1D: rotational parts zero)
     // The outcome.
     bool separating = false, sliding = false, painleve = false;
+    bool approximate = false;  // routh: Response3::approximate (the JSON's "approximate", a line in the text)
     Vec3 P = Vec3::Zero(), couple = Vec3::Zero();
     Vec3 va = Vec3::Zero(), wa = Vec3::Zero(), vb = Vec3::Zero(), wb = Vec3::Zero();
     Vec3 u_after = Vec3::Zero();
@@ -80,5 +81,9 @@ void write_json(const SolveProblem& problem, const Solution& s, std::ostream& ou
 // The line the worked example adds when a model left the pair with more kinetic energy than
 // it had (engine/diagnostics.h gains_energy): it names Kane's paradox and what avoids it.
 std::string energy_gain_note(Model model);
+
+// What an approximate routh answer (Solution::approximate) did instead of the integration:
+// the JSON's "approximate" and a note of the text.
+std::string routh_approximation(const Solution& s);
 
 }  // namespace collide

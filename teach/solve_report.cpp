@@ -34,6 +34,14 @@ std::string energy_gain_note(Model model) {
            "(the impact integrated over the normal impulse) with Stronge's energetic restitution never does.";
 }
 
+std::string routh_approximation(const Solution& s) {
+    if (s.painleve)
+        return "Routh's integration could not end the compression (the approach kept speeding up, a Painleve-like "
+               "jam): this is the frictionless impulse, not Routh's answer.";
+    return "Routh's integration could not be finished: the slip's direction was still turning after 20000 steps, "
+           "and the rest of the impact was taken along its last direction. This impulse is an approximation.";
+}
+
 namespace {
 
 std::string headline(const SolveProblem& P) {
@@ -111,6 +119,8 @@ void write_json(const SolveProblem& P, const Solution& s, std::ostream& out) {
         j["phases"] = phases;
         j["compression_impulse"] = s.routh.compression_impulse;
         j["work"] = {{"compression", s.routh.compression_work}, {"restitution", s.routh.restitution_work}};
+        // Only when it happens (every other answer prints as before): what was not integrated.
+        if (s.approximate) j["approximate"] = routh_approximation(s);
     }
     j["a"] = body(s.va, s.wa);
     j["b"] = body(s.vb, s.wb);

@@ -19,6 +19,10 @@ namespace collide {
 
 namespace {
 
+// What an event flagged `approximate` (engine/world.h Event) says, in its JSON and its text.
+const char* const kApproximate =
+    "Routh's integration of this impact could not be finished as specified; this impulse is an approximation";
+
 // The end of an event's text line when its instant gained energy (energy_gains).
 std::string gain_warning(bool energy_gain) {
     return energy_gain ? "  [kinetic energy gained, which no real impact can do: Kane's paradox of a one-step "
@@ -136,7 +140,7 @@ ordered_json velocity_json(const typename Event<D>::Velocity& u) {
 // numbers in 1D, arrays in 2D and 3D; each body's velocities before and after).
 std::string event_json_with(double t, const std::string& a, const std::string& b, ordered_json point,
                             ordered_json normal, ordered_json impulse, ordered_json before_a, ordered_json before_b,
-                            ordered_json after_a, ordered_json after_b, bool energy_gain) {
+                            ordered_json after_a, ordered_json after_b, bool energy_gain, bool approximate = false) {
     ordered_json j;
     j["t"] = t;
     j["a"] = a;
@@ -147,6 +151,7 @@ std::string event_json_with(double t, const std::string& a, const std::string& b
     j["before"] = {{a, std::move(before_a)}, {b, std::move(before_b)}};
     j["after"] = {{a, std::move(after_a)}, {b, std::move(after_b)}};
     j["energy_gain"] = energy_gain;
+    if (approximate) j["approximate"] = kApproximate;  // only then: other runs print as before
     return j.dump();
 }
 
@@ -154,7 +159,7 @@ template <int D>
 std::string event_json_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     return event_json_with(e.t, s.bodies[e.a].name, s.bodies[e.b].name, arr(e.point), arr(e.normal), arr(e.impulse),
                            velocity_json<D>(e.before_a), velocity_json<D>(e.before_b), velocity_json<D>(e.after_a),
-                           velocity_json<D>(e.after_b), energy_gain);
+                           velocity_json<D>(e.after_b), energy_gain, e.approximate);
 }
 
 template <int D>
@@ -168,7 +173,8 @@ std::string event_text_of(const Scene& s, const Event<D>& e, bool energy_gain) {
     };
     return "t = " + txt(e.t) + " s: " + a + " hits " + b + " at " + txt(e.point) + " m, normal " + txt(e.normal) +
            ", impulse on " + b + " " + txt(e.impulse) + " N s; " + change(a, e.before_a, e.after_a) + "; " +
-           change(b, e.before_b, e.after_b) + gain_warning(energy_gain);
+           change(b, e.before_b, e.after_b) + gain_warning(energy_gain) +
+           (e.approximate ? std::string("  [approximate: ") + kApproximate + "]" : "");
 }
 
 // ---- The table ----

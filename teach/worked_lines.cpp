@@ -515,6 +515,7 @@ private:
             notes.push_back("Kinetic energy changed by " + std::string(dke == 0.0 ? "0" : percent) + " %.");
         }
         if (gains_energy(s.ke_before, s.ke_after)) notes.push_back(energy_gain_note(P.model));
+        if (s.approximate) notes.push_back(routh_approximation(s));
         notes.push_back(d >= 2 ? "Kinetic energy counts 1/2 m v·v + 1/2 ω·I ω (the full inertia tensor); "
                                  "angular momentum is Σ (I ω + m (x − o) × v), all about one fixed point."
                                : "Kinetic energy is Σ 1/2 m v².");

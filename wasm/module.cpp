@@ -13,7 +13,9 @@
 //                 `collide solve --format json` gives it, and what the page needs to draw
 //                 the bodies
 // Each returns {ok, text}: the JSON, or the reader's message without a file name
-// ("LINE:COL: key: message"); api.js turns a refusal into a thrown Error.
+// ("LINE:COL: key: message"); api.js turns a refusal into a thrown Error. Each run has the
+// work budget kWasmWorkBudget (engine/scene.h: a few seconds), beyond which it is refused with
+// its estimate (engine/run_error.h) rather than freezing the page.
 #include <exception>
 #include <map>
 #include <optional>
@@ -76,7 +78,10 @@ Answer solve_answer(const std::string& text) {
 
 Answer run_answer(const std::string& text) {
     return answering([&] {
-        const StepJson run = step_json(parse_scenario_text(text, kTextName, ""));
+        Scene scene = parse_scenario_text(text, kTextName, "");
+        scene.work_budget = kWasmWorkBudget;  // a page never waits long: refused beyond (RunError)
+        scene.file.clear();                   // its refusals without a file name, as every other
+        const StepJson run = step_json(scene);
         return "{\"states\":" + join(run.states) + ",\"events\":" + join(run.events) + "}";
     });
 }
@@ -126,7 +131,9 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
         if (!x.is_number()) throw InputError("", {}, name, "expected a number");
         changed[name] = x.get<double>();
     }
-    const Lesson lesson = changed.empty() ? original : lesson_with_inputs(original, changed);
+    Lesson lesson = changed.empty() ? original : lesson_with_inputs(original, changed);
+    lesson.scene.work_budget = kWasmWorkBudget;  // a page never waits long: refused beyond (RunError)
+    lesson.scene.file.clear();
     const Scene& scene = lesson.scene;
     if (!(fps > 0 && fps <= 1000)) throw InputError("", {}, "fps", "expected 0 < fps <= 1000");
     RecordOptions options;

@@ -31,12 +31,27 @@ def _installed_lessons():
     return os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), LESSONS_FROM_PACKAGE))
 
 
-def _plain(value):
-    """A dict, list or value with NumPy arrays and scalars turned into lists and numbers."""
-    if isinstance(value, dict):
-        return {k: _plain(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [_plain(v) for v in value]
+# How deep a dict may nest (the formats need 4), as the C++ side checks it (python/module.cpp).
+_MAX_DEPTH = 64
+
+
+def _plain(value, where="", depth=0, open_ids=frozenset()):
+    """A dict, list or value with NumPy arrays and scalars turned into lists and numbers.
+
+    A dict or list that contains itself, or nests more than _MAX_DEPTH deep, raises ValueError
+    naming where ("<dict>: body[0].v: ..."), never RecursionError or a crash."""
+    if isinstance(value, (dict, list, tuple)):
+        here = where or "(the dict itself)"
+        if id(value) in open_ids:
+            raise ValueError(f"<dict>: {here}: contains itself (a dict or list inside its own value)")
+        if depth >= _MAX_DEPTH:
+            raise ValueError(f"<dict>: {here}: nested more than {_MAX_DEPTH} deep (the formats need 4)")
+        inner = open_ids | {id(value)}
+        if isinstance(value, dict):
+            return {
+                k: _plain(v, f"{where}.{k}" if where else str(k), depth + 1, inner) for k, v in value.items()
+            }
+        return [_plain(v, f"{where}[{i}]", depth + 1, inner) for i, v in enumerate(value)]
     if isinstance(value, np.ndarray):
         return value.tolist()
     if isinstance(value, np.generic):
@@ -73,7 +88,12 @@ def _columns(states):
     return np.array(states, dtype=float)
 
 
-def run(scene):
+def _budget(max_work):
+    """max_work as the module takes it: None (the default budget) or a float (checked there)."""
+    return None if max_work is None else float(max_work)
+
+
+def run(scene, max_work=None):
     """A scene run once: the record of `collide step --json` with its `--events --json`.
 
     scene: a scenario file, a lesson file, a lesson id, or a dict of a scenario's tables
@@ -84,24 +104,27 @@ def run(scene):
     "kinetic_energy", "potential_energy", "momentum" and (2D, 3D) "angular_momentum"; and
     "events": the `--events --json` objects (time, bodies, point, normal, impulse, velocities
     before and after, energy_gain), a list of dicts.
+    max_work: the run's work budget, in units of about a microsecond (`collide step --max-work`;
+        default 1e8, docs/stepping.md "Work budget"); a run beyond it raises ValueError.
     """
-    states, events = _collide.run_json(_source(scene), _installed_lessons())
+    states, events = _collide.run_json(_source(scene), _installed_lessons(), _budget(max_work))
     record = _columns([json.loads(line) for line in states])
     record["events"] = [json.loads(line) for line in events]
     return record
 
 
-def render_figure(scene, size="720p", view=None, quality="medium", fps=30.0, backend="osmesa"):
+def render_figure(scene, size="720p", view=None, quality="medium", fps=30.0, backend="osmesa", max_work=None):
     """The before / at / after figure of the scene's first collision (a lesson's first
     [[figure]]), as `collide render` writes it to figure.png: the PNG's bytes. In Jupyter:
     IPython.display.Image(collide.render_figure(...)).
 
     size: "WxH", or "480p", "720p", "1080p", "1440p" (the frames' size; the figure is laid
         out from it, as --size). view: "2d" or "3d" (default: 2d for 1D and 2D scenes).
-    quality, fps, backend: as `collide render`'s options.
+    quality, fps, backend, max_work: as `collide render`'s options (max_work: --max-work).
     Raises ValueError when the scene has no collision to show.
     """
-    png = _collide.figure_png(_source(scene), _installed_lessons(), size, view or "", quality, backend, float(fps))
+    png = _collide.figure_png(_source(scene), _installed_lessons(), size, view or "", quality, backend, float(fps),
+                              _budget(max_work))
     if png is None:
         raise ValueError(f"{scene if not isinstance(scene, dict) else '<dict>'}: no collision in the run, so no figure")
     return png

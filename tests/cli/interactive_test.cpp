@@ -202,6 +202,19 @@ TEST(Interactive, StepStopsAtTheEnd) {
     EXPECT_NE(r.errors[0].find("ends"), std::string::npos);
 }
 
+// A count above the 9 digits once read was refused as "not a whole number" (issue 34): any
+// whole number goes to the end (step) or the start (back), however many digits it has.
+TEST(Interactive, AnyWholeNumberOfStepsGoesToTheEndOrTheStart) {
+    const Reply r = run(kThrow2d, "step 2000000000\nback 99999999999999999999999\nstep 0002\nstep 00\n");
+    const auto states = parse(r.lines);
+    ASSERT_EQ(states.size(), 3u);
+    expect_thrown(states[0], 1.0);
+    expect_thrown(states[1], 0.0);
+    expect_thrown(states[2], 0.25);
+    ASSERT_EQ(r.errors.size(), 1u);  // 00 is not >= 1
+    EXPECT_NE(r.errors[0].find("n must be a whole number >= 1, not '00'"), std::string::npos) << r.errors[0];
+}
+
 TEST(Interactive, NextShowsBeforeAtAndAfter) {
     const double te = 0.8 / 3.0;
     const Reply r = run(kHeadOn, "next\nevents\nstep\nback\nevents\n");

@@ -295,5 +295,85 @@ TEST(NumericalEdges, AFreeRotationOfTooManyStepsIsRefusedNotNaN) {
     EXPECT_TRUE(c.state_finite());
 }
 
+// ---- Runs without end are refused: the work budget -------------------------------------------
+
+// A free box spinning at 2.2e9 rad/s (the spin that once printed NaN) and one at 1e6 rad/s for
+// 1 s (92 s of work): each world refuses before it starts, from its estimate. Free rotation
+// keeps E and L, so |w| >= 2E/|L|; at 0.005 rad a step the estimate for the second is 2e8.
+TEST(NumericalEdges, AFreeSpinBeyondTheWorkBudgetIsRefusedBeforeItStarts) {
+    Scene s = empty_scene(3);
+    s.duration = 0.01;
+    s.bodies.push_back(scenes::box("box", Vec3(0.5, 1.0, 1.5), 1.0, Vec3::Zero(), Quat::Identity(), Vec3::Zero(),
+                                   Vec3(2e9, 1e9, 0.0)));
+    expect_run_error([&] { World3 w(s); }, {"units of work", "budget of 1e+08", "--max-work"});
+    s.duration = 1.0;
+    s.bodies[0].body3.w = Vec3(1e6, 1.0, 0.0);
+    expect_run_error([&] { World3 w(s); }, {"about 2e+08 units of work"});
+    s.work_budget = 1e9;
+    const World3 allowed(s);
+    EXPECT_NEAR(allowed.work_estimate(), 2e8, 1e-6 * 2e8);  // (100 substeps of 0.01 s: 100 more)
+}
+
+// A ball bouncing for ever (e = 1) under gravity may not be estimated before it runs (under
+// gravity bodies may come to rest and cost nothing): each world counts its work and stops the
+// run once it passes the budget, naming the instant and the rate. 2D, 3D and 1D; the budget
+// is passed by at most one substep's work.
+TEST(NumericalEdges, ABounceWithoutEndIsStoppedAtItsWorkBudget) {
+    const Vec3 g(0.0, -9.81, 0.0);
+    {
+        Scene s = empty_scene(2, Policy::sequential, 1.0, g);
+        s.duration = 1e9;
+        s.work_budget = 1e5;
+        s.bodies.push_back(scenes::half_plane("ground", Vec2(0, 1), 0.0));
+        s.bodies.push_back(disc("ball", 0.1, 1.0, Vec2(0.0, 1.0)));
+        World2 w(s);
+        std::vector<Event2> events;
+        expect_run_error([&] { w.advance_to(s.duration, &events); }, {"units of work by t = ", "budget of 100000"});
+        EXPECT_LE(w.work_done(), 100010u);
+        EXPECT_GT(events.size(), 30u);  // it did bounce (every 0.9 s; about 2 units a 1 ms substep)
+    }
+    {
+        Scene s = empty_scene(3, Policy::sequential, 1.0, g);
+        s.duration = 1e9;
+        s.work_budget = 1e5;
+        s.bodies.push_back(scenes::half_space("ground", Vec3(0, 1, 0), 0.0));
+        s.bodies.push_back(scenes::sphere("ball", 0.1, 1.0, Vec3(0.0, 1.0, 0.0)));
+        World3 w(s);
+        std::vector<Event3> events;
+        expect_run_error([&] { w.advance_to(s.duration, &events); }, {"units of work by t = "});
+        EXPECT_LE(w.work_done(), 100010u);
+    }
+    {
+        Scene s = empty_scene(1, Policy::sequential, 1.0, Vec3(-9.81, 0.0, 0.0));  // 1D: along x
+        s.duration = 1e9;
+        s.work_budget = 1e4;
+        SceneBody ground, ball;
+        ground.name = "ground", ball.name = "ball";
+        ground.shape = ball.shape = "block";
+        ground.length = 1.0, ball.length = 0.2;
+        ground.body1 = Body1{1.0, true, -0.5, 0.0};
+        ball.body1 = Body1{1.0, false, 1.0, 0.0};
+        s.bodies = {ground, ball};
+        World1 w(s);
+        std::vector<Event1> events;
+        expect_run_error([&] { w.advance_to(s.duration, &events); }, {"units of work by t = "});
+        EXPECT_LE(w.work_done(), 10001u + 2u);
+    }
+}
+
+// Under gravity the estimate is not made; a spin of 3e9 rad/s would turn 6e8 steps in its
+// first millisecond substep: refused before the first of them, not after minutes.
+TEST(NumericalEdges, ATurnBeyondWhatTheBudgetHasLeftIsRefusedBeforeItIsTaken) {
+    Scene s = empty_scene(3, Policy::sequential, 1.0, Vec3(0.0, -9.81, 0.0));
+    s.file = "spin.toml";
+    s.bodies.push_back(scenes::box("box", Vec3(0.5, 1.0, 1.5), 1.0, Vec3::Zero(), Quat::Identity(), Vec3::Zero(),
+                                   Vec3(3e9, 0.0, 1.0)));
+    World3 w(s);
+    EXPECT_EQ(w.work_estimate(), 0.0);
+    std::vector<Event3> events;
+    expect_run_error([&] { w.advance_to(0.1, &events); }, {"spin.toml: ", "work budget"});
+    EXPECT_LT(w.work_done(), 1000u);
+}
+
 }  // namespace
 }  // namespace collide

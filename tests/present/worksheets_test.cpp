@@ -195,6 +195,22 @@ TEST(Worksheet, SheetsShowNoAnswerAndNoWorkedExample) {
     }
 }
 
+// A seed outside 0 .. 2^64 - 1 ("-1", 2^64) quietly became the largest seed (issue 34): now
+// refused (exit 2) naming the range, before anything is written; the largest seed itself is
+// taken as written.
+TEST(Worksheet, ASeedOutsideItsRangeIsRefusedNotMadeTheLargest) {
+    const fs::path out = scratch("seed-range");
+    for (const char* seed : {"-1", "18446744073709551616", "1e3", "7x", "''"}) {
+        std::string err;
+        EXPECT_EQ(worksheet("catch-up -o " + out.string() + " --students 2 --seed " + seed, &err), 2) << seed;
+        EXPECT_NE(err.find("expected a whole number from 0 to 18446744073709551615"), std::string::npos) << err;
+        EXPECT_FALSE(fs::exists(out)) << seed;
+    }
+    ASSERT_EQ(worksheet("catch-up -o " + out.string() + " --students 2 --seed 18446744073709551615"), 0);
+    EXPECT_EQ(json::parse(slurp(out / "key.json"))["seed"].get<std::uint64_t>(), 18446744073709551615ULL);
+    fs::remove_all(out);
+}
+
 TEST(Worksheet, TheSameSeedGivesTheSameFilesAnotherSeedOtherValues) {
     const fs::path a = scratch("seed-a"), b = scratch("seed-b"), c = scratch("seed-c");
     ASSERT_EQ(worksheet("catch-up rotation-directions -o " + a.string() + " --students 4 --seed 7"), 0);
@@ -287,6 +303,48 @@ TEST(Worksheet, ANonEmptyDirectoryNeedsForce) {
     EXPECT_FALSE(fs::exists(out / "sheets.pdf"));
     EXPECT_NE(err.find("PDFs skipped: weasyprint is not installed"), std::string::npos) << err;
     fs::remove_all(out);
+}
+
+// Output paths (issue 34): "-o DIR/" is DIR (it used to stage inside DIR and fail after all
+// the work with "cannot rename: Invalid argument", leaving an empty DIR); "-o ." and a
+// symbolic link that loops are refused at once, before any sheet is drawn, and leave nothing.
+// A symbolic link to a directory is written through.
+TEST(Worksheet, OutputPathsAreCheckedBeforeAnyWork) {
+    const fs::path out = scratch("slash");
+    std::string err;
+    EXPECT_EQ(worksheet("catch-up -o " + out.string() + "/ --students 2", &err), 0) << err;
+    EXPECT_TRUE(fs::exists(out / "key.json"));
+    for (const fs::directory_entry& e : fs::directory_iterator(out))
+        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos);
+    fs::remove_all(out);
+
+    const fs::path here = scratch("here");
+    fs::create_directories(here);
+    const std::string in_here = "cd " + here.string() + " && ";
+    const fs::path e = scratch("here-err");
+    const auto in = [&](const std::string& args) {
+        const int status = std::system(
+            (in_here + "PATH=/nonexistent " + COLLIDE_BIN + " worksheet " + args + " >/dev/null 2>" + e.string())
+                .c_str());
+        err = slurp(e);
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    EXPECT_EQ(in("catch-up -o . --students 2 --force"), 2);
+    EXPECT_NE(err.find("holds the current directory"), std::string::npos) << err;
+    EXPECT_EQ(in("catch-up -o .. --students 2 --force"), 2);
+    EXPECT_TRUE(fs::is_empty(here));
+    fs::create_symlink("loop", here / "loop");
+    EXPECT_EQ(in("catch-up -o loop --students 2"), 2);
+    EXPECT_NE(err.find("loop: is a symbolic link that leads nowhere"), std::string::npos) << err;
+    EXPECT_EQ(in("catch-up -o loop/inner --students 2"), 2);
+    EXPECT_NE(err.find("loop/inner: cannot be"), std::string::npos) << err;
+    fs::create_directories(here / "real");
+    fs::create_directory_symlink("real", here / "link");
+    EXPECT_EQ(in("catch-up -o link --students 2"), 0) << err;
+    EXPECT_TRUE(fs::exists(here / "real/key.json"));
+    EXPECT_TRUE(fs::is_symlink(here / "link"));
+    fs::remove(e);
+    fs::remove_all(here);
 }
 
 TEST(Worksheet, PdfsWhenWeasyprintIsInstalled) {

@@ -81,6 +81,49 @@ def test_a_dicts_mistake_names_the_key():
         collide.solve(42)
 
 
+def test_a_dict_nested_too_deep_or_containing_itself_raises_valueerror_never_a_crash():
+    # Lists nested 20 000 deep crashed the interpreter (exit 139) or raised RecursionError; a
+    # dict that contains itself crashed _collide.solve_json. Both sides check: the package's
+    # own conversion (_plain) and the C++ one, called here directly too.
+    deep = [1.0]
+    for _ in range(20000):
+        deep = [deep]
+    carts = {"dimension": 1, "restitution": 0.5, "normal": 1,
+             "a": {"mass": 2.0, "v": deep}, "b": {"mass": 1.0, "v": 0.0}}
+    with pytest.raises(ValueError, match=r"^<dict>: a\.v(\[0\])+: nested more than 64 deep"):
+        collide.solve(carts)
+    with pytest.raises(ValueError, match=r"^<dict>: a\.v(\[0\])+: nested more than 64 deep"):
+        collide._collide.solve_json(carts, "")
+    me = {"dimension": 1, "restitution": 0.5}
+    me["a"] = me
+    with pytest.raises(ValueError, match=r"^<dict>: a: contains itself"):
+        collide.solve(me)
+    with pytest.raises(ValueError, match=r"^<dict>: a: contains itself"):
+        collide._collide.solve_json(me, "")
+    loop = [0.0]
+    loop.append(loop)
+    scene = {"scene": {"dimension": 1, "duration": 1.0}, "body": [{"name": "x", "mass": 1.0, "v": loop}]}
+    with pytest.raises(ValueError, match=r"^<dict>: body\[0\]\.v\[1\]: contains itself"):
+        collide.run(scene)
+    with pytest.raises(ValueError, match=r"contains itself"):
+        collide._collide.run_json(scene, "")
+    # The same list in two places is not a cycle.
+    shared = [0.0, -1.0]
+    two = {"scene": {"dimension": 2, "duration": 0.1},
+           "body": [{"name": "a", "shape": "disc", "radius": 0.1, "mass": 1.0, "v": shared},
+                    {"name": "b", "shape": "disc", "radius": 0.1, "mass": 1.0, "position": [1.0, 0.0], "v": shared}]}
+    assert len(collide.run(two)["t"]) > 1
+
+
+def test_a_run_beyond_its_work_budget_raises_valueerror():
+    with pytest.raises(ValueError, match=r"units of work by t = .* more than its budget of 1000 "):
+        collide.run("bouncing-ball", max_work=1000)
+    assert len(collide.run("bouncing-ball", max_work=1e6)["t"]) > 1
+    for wrong in (-1, 0, float("nan"), float("inf")):
+        with pytest.raises(ValueError, match="max_work: expected a number > 0"):
+            collide.run("bouncing-ball", max_work=wrong)
+
+
 # ---- The bad-input catalogue: the command's message, word for word ----
 
 def bad_cases(kind, command):

@@ -277,6 +277,25 @@ TEST(SolveJson, RouthAddsItsLawAndPhases) {
     EXPECT_LE(Pt, 0.5 * Pn + 1e-12);
 }
 
+// An approximate routh answer (engine Response3::approximate: the integration could not be
+// finished, routh_test.cpp forces one) is said in the JSON ("approximate", only then) and in a
+// line of the text; a finished one prints as before, without the key.
+TEST(SolveJson, AnApproximateRouthAnswerSaysSo) {
+    const SolveProblem P = parse_solve_file(example("kane-rod.toml"));
+    Solution s = solve(P);
+    std::ostringstream exact;
+    write_json(P, s, exact);
+    EXPECT_FALSE(nlohmann::json::parse(exact.str()).contains("approximate"));
+    s.approximate = true;
+    std::ostringstream json, text;
+    write_json(P, s, json);
+    write_text(P, s, text);
+    const auto j = nlohmann::json::parse(json.str());
+    ASSERT_TRUE(j.contains("approximate"));
+    EXPECT_NE(j["approximate"].get<std::string>().find("could not be finished"), std::string::npos);
+    EXPECT_NE(text.str().find("Routh's integration could not be finished"), std::string::npos) << text.str();
+}
+
 TEST(SolveJson, OneDimensionalValuesAreNumbers) {
     const SolveProblem P = parse_solve_file(example("carts-1d.toml"));
     std::ostringstream out;

@@ -270,6 +270,21 @@ TEST(Step, EventText2dNamesBodiesAndVectors) {
         EXPECT_NE(text.find(part), std::string::npos) << part << " in " << text;
 }
 
+// An event flagged approximate by the world (a Routh answer that could not be finished) says
+// so in its JSON and its text line; others carry no such key or note.
+TEST(Step, AnApproximateEventSaysSo) {
+    const Scene s = parse_scene_text(head_on(1.0), "head-on.toml");
+    Event2 e;
+    e.a = 0, e.b = 1;
+    e.point = e.normal = e.impulse = Vec2(1, 0);
+    e.before_a = e.before_b = e.after_a = e.after_b = {Vec2::Zero(), 0.0};
+    EXPECT_FALSE(nlohmann::json::parse(event_json(s, e, false)).contains("approximate"));
+    EXPECT_EQ(event_text(s, e, false).find("approximate"), std::string::npos);
+    e.approximate = true;
+    EXPECT_TRUE(nlohmann::json::parse(event_json(s, e, false)).contains("approximate"));
+    EXPECT_NE(event_text(s, e, false).find("[approximate: "), std::string::npos);
+}
+
 // A rough rod struck at its lower end (1 kg, 1 m, 50 degrees above the ground, v = (-0.2, -1)
 // m/s, w = 6 rad/s, mu = 0.5, e = 0.9): the one-step Coulomb model sticks the contact and then
 // reverses u_n by e, which leaves the rod with more kinetic energy than it had (Kane's paradox).

@@ -9,6 +9,9 @@
 #   equals the first collision of `collide step --events --json` on the lesson with v = [2, 0],
 #   to 1e-9 relative: the page samples the run at its frame rate), and the name the lesson has
 #   no input for shown on the page.
+# - a run beyond the module's work budget per call (a free box at 1e5 rad/s for 1 s: about
+#   2e7 units, which `collide step` runs in seconds) answers with the refusal and its estimate
+#   at once instead of freezing the page (issue 34).
 # Screenshots of the panels stay in WORK/ to be looked at.
 # Usage: browser.sh COLLIDE CHROMIUM WORK
 set -euo pipefail
@@ -75,5 +78,55 @@ awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (b
   exit 1
 }
 [[ -s $work/general-2d.png ]] || { echo "browser.sh: no general-2d.png" >&2; exit 1; }
+# A run beyond the module's budget: an Error with the estimate, within seconds, not a frozen page.
+cp "$COLLIDE_ENGINE_JS" "$work/collide-engine.js"
+cat >"$work/refused.html" <<'HTML'
+<!doctype html><meta charset="utf-8"><title>refused</title><p id="out">waiting</p>
+<script src="collide-engine.js"></script>
+<script>
+const spin = `[scene]
+dimension = 3
+duration = 1
+output_dt = 0.1
+
+[[body]]
+name = "box"
+shape = "box"
+size = [1, 2, 3]
+mass = 1
+w = [1e5, 1, 0]
+`;
+CollideEngine().then(m => {
+  const t0 = performance.now();
+  let said;
+  try { m.run(spin); said = 'answered'; } catch (e) { said = 'refused: ' + e.message; }
+  document.getElementById('out').textContent = said + ' [' + (performance.now() - t0).toFixed(0) + ' ms]';
+});
+</script>
+HTML
+t0=$(date +%s)
+timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --virtual-time-budget=15000 \
+  --dump-dom "file://$work/refused.html" >"$work/refused.dom" 2>"$work/chromium.log" || true
+said=$(grep -o '<p id="out">[^<]*' "$work/refused.dom" | sed 's/.*>//' || true)
+echo "browser.sh: a run beyond the module's budget: $said ($(($(date +%s) - t0)) s with Chromium's start)"
+[[ $said == "refused: the scene would take about 2"*"e+07 units of work"*"more than its budget of 5e+06"* ]] || {
+  echo "browser.sh: FAIL: the page did not answer with the refusal" >&2
+  exit 1
+}
+ms=$(sed 's/.*\[\([0-9]*\) ms\]/\1/' <<<"$said")
+((ms < 1000)) || { echo "browser.sh: FAIL: the refusal took $ms ms" >&2; exit 1; }
+"$collide" step - --events >/dev/null <<'TOML' || { echo "browser.sh: FAIL: collide step refuses the spin" >&2; exit 1; }
+[scene]
+dimension = 3
+duration = 1
+output_dt = 0.1
+
+[[body]]
+name = "box"
+shape = "box"
+size = [1, 2, 3]
+mass = 1
+w = [1e5, 1, 0]
+TOML
 end=$(date +%s.%N)
 printf 'browser.sh: equal; screenshots %s/before.png, after.png and general-2d.png (Chromium: %.1f s)\n' "$work" "$(awk -v a="$start" -v b="$end" 'BEGIN { print b - a }')"
