@@ -13,6 +13,7 @@
 #include <regex>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -505,6 +506,60 @@ TEST(Material, APredictedNumberIsTypedOrWrittenAndCheckedAgainstTheEngine) {
     EXPECT_EQ(before.find("1.5 m/s"), std::string::npos);  // not answered where it is asked
     // v_bf = v_bi + J / m_b = 0.3 + 1.2 / 1 (the lesson's worked numbers)
     EXPECT_NE(page.find("<span class=\"answer\">1.5 m/s</span><br>B receives +J.", check), std::string::npos);
+}
+
+// Issue 33, "The lesson's point as a plot": each [[plot]] of the four lessons that declare one is
+// on its page under "Watch" (plot-K.svg, drawn with its units), with an alt text that says what
+// the run shows and the numbers behind it in a folded table.
+TEST(Material, EachDeclaredPlotIsOnItsPageWithAltTextAndTable) {
+    render::test::TempDir dir;
+    std::ostringstream out, err;
+    MaterialOptions o = tiny(dir / "site");
+    o.lessons = {"bouncing-ball", "dominoes", "tower", "restitution"};
+    ASSERT_EQ(run_material(o, out, err), 0) << err.str();
+    // {lesson, plot number, words its alt text must hold}
+    const std::vector<std::tuple<std::string, int, std::string>> expected = {
+        {"bouncing-ball", 1, "Height of the ball's centre against time: "},
+        {"bouncing-ball", 2, "times the one before"},
+        {"bouncing-ball", 2, "and e = 0.5"},
+        {"dominoes", 1, "Strike time against domino number: a straight line"},
+        {"dominoes", 1, " s per domino"},
+        {"dominoes", 1, "a wave speed of "},
+        {"dominoes", 2, "Time between strikes"},
+        {"tower", 1, "Impulse of each collision: "},
+        {"restitution", 1, "B (e=1).touching point.v.x from "},
+    };
+    for (const auto& [id, k, words] : expected) {
+        SCOPED_TRACE(id + " plot " + std::to_string(k));
+        const fs::path d = fs::path(dir / "site") / id;
+        const std::string page = read(d / "index.html");
+        const std::string file = "plot-" + std::to_string(k) + ".svg";
+        ASSERT_TRUE(fs::exists(d / file));
+        const std::string svg = read(d / file);
+        EXPECT_NE(svg.find("<svg"), std::string::npos);
+        const std::size_t img = page.find("<img src=\"" + file + "\" alt=\"");
+        ASSERT_NE(img, std::string::npos);
+        // Under "Watch", before the explanation.
+        EXPECT_GT(img, page.find("<h2>Watch</h2>"));
+        EXPECT_LT(img, page.find("<section class=\"explain\">"));
+        const std::size_t a0 = img + file.size() + 17, a1 = page.find('"', a0);
+        const std::string alt = page.substr(a0, a1 - a0);
+        EXPECT_NE(alt.find(html::escape(words)), std::string::npos) << alt;
+        // The table behind it, folded.
+        const std::size_t table = page.find("<details class=\"plot-data\">", img);
+        ASSERT_NE(table, std::string::npos);
+        EXPECT_LT(table, page.find("<img src=\"plot-" + std::to_string(k + 1) + ".svg\"", img));
+        EXPECT_NE(page.find("<table>", table), std::string::npos);
+        // The axes carry units.
+        if (id == "bouncing-ball" && k == 1) {
+            EXPECT_NE(svg.find(">t (s)<"), std::string::npos);
+            EXPECT_NE(svg.find(">ball.position.y (m)<"), std::string::npos);
+        }
+        if (id == "dominoes" && k == 1) {
+            EXPECT_NE(svg.find(">time (s)<"), std::string::npos);
+            EXPECT_NE(svg.find("s per domino"), std::string::npos);
+        }
+    }
 }
 
 TEST(Material, BadInputWritesNothing) {
