@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <variant>
 
 #include "render/frame_state.h"
@@ -22,8 +23,7 @@ std::string with_unit(const std::string& name, const std::string& unit) {
 // One sample quantity at one sampled instant.
 double sample_value(const PlotQuantity& q, const Lesson& lesson, const Scene& scene, const render::FrameState& f) {
     if (q.kind == Kind::time) return f.t;
-    if (q.kind == Kind::kinetic || q.kind == Kind::potential || q.kind == Kind::energy ||
-        q.kind == Kind::momentum) {
+    if (q.kind == Kind::kinetic || q.kind == Kind::potential || q.kind == Kind::energy || q.kind == Kind::momentum) {
         const render::FrameTotals s = render::frame_totals(scene, f);
         if (q.kind == Kind::kinetic) return s.kinetic;
         if (q.kind == Kind::potential) return s.potential;
@@ -55,8 +55,7 @@ std::vector<Hit> hits_of(const SceneRun& run) {
             for (const auto& e : rec.events) {
                 if constexpr (std::is_same_v<std::decay_t<decltype(e)>, Event1>)
                     out.push_back({e.t, e.a, e.b, std::abs(e.impulse)});
-                else
-                    out.push_back({e.t, e.a, e.b, lift(e.impulse).norm()});
+                else out.push_back({e.t, e.a, e.b, lift(e.impulse).norm()});
             }
         },
         run.record);
@@ -72,6 +71,7 @@ std::string hit_words(const Scene& s, const Hit& h) { return s.bodies[h.a].name 
 
 std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, const SceneRun& run) {
     std::vector<PlotData> out;
+    std::vector<render::FrameState> states;  // the per-sample plots' instants (plot_states)
     for (const LessonPlot& P : lesson.plots) {
         PlotData D;
         D.title = P.title;
@@ -81,9 +81,10 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
             D.y_unit = P.y.front().unit;
             D.x_label = with_unit(P.x.name, P.x.unit);
             D.y_label = P.y.size() == 1 ? with_unit(P.y.front().name, D.y_unit) : D.y_unit;
+            if (states.empty()) states = plot_states(scene, run);
             for (const PlotQuantity& q : P.y) {
                 PlotSeriesData S{q.name, {}, {}, {}};
-                for (const render::FrameState& f : run.frames) {
+                for (const render::FrameState& f : states) {
                     S.x.push_back(sample_value(P.x, lesson, scene, f));
                     S.y.push_back(sample_value(q, lesson, scene, f));
                 }
@@ -91,7 +92,7 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
             }
             if (P.fit == PlotFit::none) {
                 // What it shows in words: each series' range and its last value.
-                std::string what = P.title + ": " + std::to_string(run.frames.size()) + " samples of the run.";
+                std::string what = P.title + ": " + std::to_string(states.size()) + " instants of the run.";
                 for (const PlotSeriesData& S : D.series) {
                     if (S.y.empty()) continue;
                     const auto [lo, hi] = std::minmax_element(S.y.begin(), S.y.end());
@@ -125,8 +126,18 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
                     D.row_names.push_back(P.chain[k] + " strikes " + P.chain[k + 1]);
                 }
             } else {
+                // instant: the time of the first collision of its two bodies (none: no rows).
+                std::optional<double> when;
+                if (P.instant_index.size() == 2) {
+                    const auto it = std::find_if(hits.begin(), hits.end(), [&](const Hit& h) {
+                        return same_pair(h, P.instant_index[0], P.instant_index[1]);
+                    });
+                    if (it == hits.end()) D.missing.push_back(P.instant[0] + " never collides with " + P.instant[1]);
+                    else when = it->t;
+                }
                 for (const Hit& h : hits) {
                     if (P.pair_index.size() == 2 && !same_pair(h, P.pair_index[0], P.pair_index[1])) continue;
+                    if (P.instant_index.size() == 2 && !(when && h.t == *when)) continue;
                     rows.push_back(h);
                     numbers.push_back(static_cast<int>(rows.size()));
                     D.row_numbers.push_back(numbers.back());
@@ -189,8 +200,8 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
                         d += (b0[P.chain_index[k + 1]].x - b0[P.chain_index[k]].x).norm();
                     L.spacing = d / static_cast<double>(P.chain_index.size() - 1);
                     L.speed = L.spacing / L.slope;
-                    what += "; with " + sig3(L.spacing) + " m between neighbours, a wave speed of " +
-                            sig3(*L.speed) + " m/s";
+                    what += "; with " + sig3(L.spacing) + " m between neighbours, a wave speed of " + sig3(*L.speed) +
+                            " m/s";
                 }
                 what += ".";
                 D.line = L;
@@ -210,14 +221,28 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
                 for (double r : finite) R.mean += r / static_cast<double>(finite.size());
             }
             if (P.pair_index.size() == 2) R.restitution = scene.pair_restitution(P.pair_index[0], P.pair_index[1]);
-            what += std::to_string(S.y.size()) + " values; each is " +
-                    (finite.empty() ? std::string("(too few to compare)")
-                                      : sig3(R.mean) + " times the one before (from " + sig3(R.lo) + " to " +
-                                            sig3(R.hi) + ")") +
-                    (R.restitution ? ", and e = " + sig3(*R.restitution) : std::string()) + ".";
+            what +=
+                std::to_string(S.y.size()) + " values; each is " +
+                (finite.empty() ? std::string("(too few to compare)")
+                                : sig3(R.mean) + " times the one before" +
+                                      (sig3(R.lo) == sig3(R.hi) ? " (every one of them, to 3 figures)"
+                                                                : " (from " + sig3(R.lo) + " to " + sig3(R.hi) + ")")) +
+                (R.restitution ? ", and e = " + sig3(*R.restitution) : std::string()) + ".";
             D.ratio = R;
+        } else if (!S.y.empty()) {
+            // The largest and the smallest, with the collisions they belong to.
+            const auto name_of = [&](std::size_t i) {
+                for (std::size_t r = 0; r < numbers.size(); ++r)
+                    if (numbers[r] == S.number[i]) return D.row_names[r];
+                return std::string();
+            };
+            const auto lo = static_cast<std::size_t>(std::min_element(S.y.begin(), S.y.end()) - S.y.begin());
+            const auto hi = static_cast<std::size_t>(std::max_element(S.y.begin(), S.y.end()) - S.y.begin());
+            what += std::to_string(S.y.size()) + " values of " + P.y.front().name + ", the largest " + sig3(S.y[hi]) +
+                    " " + D.y_unit + " (" + name_of(hi) + "), the smallest " + sig3(S.y[lo]) + " " + D.y_unit + " (" +
+                    name_of(lo) + ").";
         } else {
-            what += std::to_string(rows.size()) + " collisions.";
+            what += "no collision of these in the run.";
         }
         if (!D.missing.empty()) {
             what += " Not in the run:";

@@ -26,17 +26,17 @@ struct PlotData {
     std::vector<PlotSeriesData> series;
     // Per collision: one row per collision shown, with its words ("domino 3 strikes domino 4").
     std::vector<std::string> row_names;
-    std::vector<int> row_numbers;     // each row's number (x = "collision")
-    std::vector<double> row_times;    // each row's instant (s)
+    std::vector<int> row_numbers;      // each row's number (x = "collision")
+    std::vector<double> row_times;     // each row's instant (s)
     std::vector<std::string> missing;  // chain: the strikes the run does not have ("domino 9 -> 10")
     // fit = "line": y = intercept + slope x over the points from fit_from on.
     struct Line {
         double slope = 0, intercept = 0;
         double x0 = 0, x1 = 0;  // the fitted points' x range
         int points = 0;
-        std::string slope_unit;        // "s per domino"
-        std::optional<double> speed;   // chain along x = "collision" with y = "t": spacing / slope (m/s)
-        double spacing = 0;            // m: the mean distance between neighbouring chain bodies at the start
+        std::string slope_unit;       // "s per domino"
+        std::optional<double> speed;  // chain along x = "collision" with y = "t": spacing / slope (m/s)
+        double spacing = 0;           // m: the mean distance between neighbouring chain bodies at the start
     };
     std::optional<Line> line;
     // fit = "ratio": each value over the one before.

@@ -43,16 +43,19 @@ std::string plots_html(const std::vector<PlotData>& plots) {
     for (std::size_t k = 0; k < plots.size(); ++k) {
         const PlotData& p = plots[k];
         const std::string file = "plot-" + std::to_string(k + 1) + ".svg";
-        o << "<section class=\"lesson-plot\">\n<h3>" << escape(p.title) << "</h3>\n<figure><img src=\"" << file
-          << "\" alt=\"" << escape(plot_alt(p)) << "\"><figcaption>From the simulation: the run the figures above "
+        o << "<section class=\"lesson-plot\" id=\"plot-" << k + 1 << "\">\n<h3>" << escape(p.title)
+          << "</h3>\n<figure><img src=\"" << file << "\" alt=\"" << escape(plot_alt(p))
+          << "\"><figcaption>From the simulation: the run the figures above "
           << "show.</figcaption></figure>\n";
         // What it shows in numbers stays folded with the table: the questions below ask them.
         o << "<details class=\"plot-data\"><summary>What the plot shows, and the numbers behind it</summary>\n<p>"
           << escape(p.summary) << "</p>\n<table>\n<thead><tr>";
         if (p.per_collision) {
-            o << "<th>" << escape(p.x_unit.empty() ? p.x_label : std::string("number")) << "</th><th>collision</th><th>t (s)</th>";
+            o << "<th>" << escape(p.x_unit.empty() ? p.x_label : std::string("number"))
+              << "</th><th>collision</th><th>t (s)</th>";
             for (const PlotSeriesData& s : p.series)
-                if (s.label != "t") o << "<th>" << escape(s.label + (p.y_unit.empty() ? "" : " (" + p.y_unit + ")")) << "</th>";
+                if (s.label != "t")
+                    o << "<th>" << escape(s.label + (p.y_unit.empty() ? "" : " (" + p.y_unit + ")")) << "</th>";
             if (p.ratio) o << "<th>ratio to the one before</th>";
             o << "</tr></thead>\n<tbody>\n";
             // One row per collision shown: its number, its words, its instant and each y.
@@ -92,9 +95,9 @@ std::string plots_html(const std::vector<PlotData>& plots) {
         }
         o << "</tbody>\n</table>\n";
         if (p.line)
-            o << "<p class=\"note\">The dashed line: least squares over " << p.line->points << " points, y = "
-              << escape(num(p.line->intercept)) << " + " << escape(num(p.line->slope)) << " x; slope "
-              << escape(num(p.line->slope) + " " + p.line->slope_unit) << ".</p>\n";
+            o << "<p class=\"note\">The dashed line: least squares over " << p.line->points
+              << " points, y = " << escape(num(p.line->intercept)) << " + " << escape(num(p.line->slope))
+              << " x; slope " << escape(num(p.line->slope) + " " + p.line->slope_unit) << ".</p>\n";
         o << "</details>\n</section>\n";
     }
     return o.str();

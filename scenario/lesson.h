@@ -152,7 +152,8 @@ struct LessonVary {
 // against another, drawn on its page with a table of the numbers. Per sample: every sampled
 // instant, x and each y a sample quantity (PlotQuantity). Per collision: the collisions
 // `pair` has (every one of those two bodies), or `chain` has (the first of each neighbouring
-// pair, chain[k] striking chain[k+1]), or every collision of the run; x is "collision" (its
+// pair, chain[k] striking chain[k+1]), or `instant` has (every collision of the instant its two
+// bodies first collide), or every collision of the run; x is "collision" (its
 // number among them, from 1) or "t", each y "t", "interval" (from the one before) or "impulse".
 struct PlotQuantity {
     std::string name;  // as written: "ball.position.y", "energy", "t", "B.touching point.v.x"
@@ -174,7 +175,10 @@ struct LessonPlot {
     PlotQuantity x;
     std::vector<PlotQuantity> y;
     std::vector<std::string> pair, chain;  // per collision: which collisions (body names)
-    std::vector<std::size_t> pair_index, chain_index;
+    // Or every collision of one instant: the first at which instant[0] and instant[1] collide
+    // (a resting stack struck: each contact's impulse, solved together).
+    std::vector<std::string> instant;
+    std::vector<std::size_t> pair_index, chain_index, instant_index;
     std::string counting = "collision";  // per collision with x = "collision": what one step of x is
     PlotFit fit = PlotFit::none;
     int fit_from = 1;  // fit = "line" per collision: only the collisions numbered from here

@@ -129,7 +129,7 @@ PlotQuantity collision_quantity(const std::string& name, bool is_x, const TableR
 
 void parse_plots(const TableReader& root, Lesson& L) {
     for (const TableReader& p : root.tables("plot")) {
-        p.allow_only({"title", "per", "x", "y", "pair", "chain", "counting", "fit", "fit_from"});
+        p.allow_only({"title", "per", "x", "y", "pair", "chain", "instant", "counting", "fit", "fit_from"});
         LessonPlot P;
         P.where = p.prefix();
         P.pos = p.table_pos();
@@ -152,13 +152,17 @@ void parse_plots(const TableReader& root, Lesson& L) {
                 if (y.unit != P.y.front().unit)
                     p.fail("y", "'" + y.name + "' is in " + y.unit + ", '" + P.y.front().name + "' in " +
                                     P.y.front().unit + ": one plot has one unit along y");
-        for (const char* k : {"pair", "chain", "counting", "fit_from"})
-            if (per_sample && p.has(k))
-                p.fail(k, std::string("'") + k + "' is for per = \"collision\"");
+        for (const char* k : {"pair", "chain", "instant", "counting", "fit_from"})
+            if (per_sample && p.has(k)) p.fail(k, std::string("'") + k + "' is for per = \"collision\"");
         P.pair = strings(p, "pair", "two body names");
         P.chain = strings(p, "chain", "a list of body names");
-        if (!P.pair.empty() && !P.chain.empty()) p.fail("chain", "give 'pair' or 'chain', not both");
+        P.instant = strings(p, "instant", "two body names");
+        if ((!P.pair.empty()) + (!P.chain.empty()) + (!P.instant.empty()) > 1)
+            p.fail(P.instant.empty() ? "chain" : "instant", "give one of 'pair', 'chain' and 'instant'");
         if (p.has("pair") && P.pair.size() != 2) p.fail("pair", "expected two body names");
+        if (p.has("instant") && P.instant.size() != 2) p.fail("instant", "expected two body names");
+        for (const std::string& b : P.instant) P.instant_index.push_back(body_named(L.scene, b, p, "instant"));
+        if (P.instant.size() == 2 && P.instant_index[0] == P.instant_index[1]) p.fail("instant", "the same body twice");
         if (p.has("chain") && P.chain.size() < 2) p.fail("chain", "expected at least two body names");
         for (const std::string& b : P.pair) P.pair_index.push_back(body_named(L.scene, b, p, "pair"));
         for (const std::string& b : P.chain) P.chain_index.push_back(body_named(L.scene, b, p, "chain"));
@@ -171,13 +175,13 @@ void parse_plots(const TableReader& root, Lesson& L) {
             p.fail("counting", "names what x = \"collision\" counts (\"bounce\", \"domino\")");
         const std::string fit = read_choice(p, "fit", {"none", "line", "ratio"}, "fit", "none");
         P.fit = fit == "line" ? PlotFit::line : fit == "ratio" ? PlotFit::ratio : PlotFit::none;
-        if (P.fit != PlotFit::none && P.y.size() != 1)
-            p.fail("fit", "a fit is of one quantity: give one y");
+        if (P.fit != PlotFit::none && P.y.size() != 1) p.fail("fit", "a fit is of one quantity: give one y");
         if (P.fit == PlotFit::ratio && (per_sample || P.x.name != "collision"))
             p.fail("fit", "\"ratio\" (of each value to the one before) is per collision with x = \"collision\"");
         const long long from = p.integer("fit_from", "the first collision number the line fits").value_or(1);
         if (p.has("fit_from") && P.fit != PlotFit::line) p.fail("fit_from", "applies to fit = \"line\"");
-        if (from < 1 || from > 1000000) p.fail("fit_from", "expected a collision number from 1, got " + std::to_string(from));
+        if (from < 1 || from > 1000000)
+            p.fail("fit_from", "expected a collision number from 1, got " + std::to_string(from));
         P.fit_from = static_cast<int>(from);
         L.plots.push_back(std::move(P));
     }

@@ -526,7 +526,7 @@ TEST(Material, EachDeclaredPlotIsOnItsPageWithAltTextAndTable) {
         {"dominoes", 1, " s per domino"},
         {"dominoes", 1, "a wave speed of "},
         {"dominoes", 2, "Time between strikes"},
-        {"tower", 1, "Impulse of each collision: "},
+        {"tower", 1, "Impulse at each contact of the tower when the ball strikes: "},
         {"restitution", 1, "B (e=1).touching point.v.x from "},
     };
     for (const auto& [id, k, words] : expected) {

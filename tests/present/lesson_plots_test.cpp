@@ -147,7 +147,9 @@ TEST(LessonPlots, BouncingBallFollowsTheParabolasAndTheGeometricSeries) {
     // Height: y(t) = R + H - g t^2 / 2 before the first bounce; after bounce k,
     // R + e^(k+1) v0 s - g s^2 / 2 with s = t - t_k; R after the last.
     const PlotSeriesData& h = plots[0].series.at(0);
-    ASSERT_EQ(h.x.size(), run.frames.size());
+    // Every sample, and the first recorded bounces twice (just before and just after).
+    ASSERT_GT(h.x.size(), run.frames.size());
+    ASSERT_EQ(h.x.size(), plot_states(L.scene, run).size());
     EXPECT_EQ(plots[0].x_unit, "s");
     EXPECT_EQ(plots[0].y_unit, "m");
     int checked = 0;
@@ -212,8 +214,35 @@ TEST(LessonPlots, RestitutionCentresAfterTheHitAreTheClosedForm) {
         ++after;
         EXPECT_NEAR(A.y[i], 2.0 - j / 0.5, 1e-9);
         EXPECT_NEAR(B.y[i], j / 1.0, 1e-9);
+        // Just after the hit (the instant's second point: the bar still upright) the touching
+        // points separate at e times the 2 m/s they met at: Newton's law on the points.
+        if (after == 1) {
+            EXPECT_EQ(A.x[i], A.x[i - 1]);
+            EXPECT_NEAR(point.y[i] - A.y[i], e * 2.0, 1e-9);
+            EXPECT_GT(point.y[i], B.y[i] + 0.5);  // the point leaves faster than the centre
+        }
     }
     EXPECT_GT(after, 10);
+}
+
+// Tower: every contact solved at the ball's impact instant, each with its impulse; the ball's
+// and the ground's among them.
+TEST(LessonPlots, TowerImpulsePerContactIsOneInstant) {
+    const Lesson L = load_lesson(kLessons + "21-tower.toml");
+    const SceneRun run = run_scene(L.scene, frame_times(L.scene, 30));
+    const std::vector<PlotData> plots = lesson_plots(L, L.scene, run);
+    ASSERT_EQ(plots.size(), 1u);
+    const PlotData& p = plots[0];
+    ASSERT_GE(p.row_times.size(), 6u);  // ball-box 4, box 4-box 3, ..., box 1-ground, box 4-box 5, ...
+    for (double t : p.row_times) EXPECT_EQ(t, p.row_times.front());
+    // The ball reaches the tower's left faces at x = -0.18 m: t = (0.8 - 0.18) / 4 s.
+    EXPECT_NEAR(p.row_times.front(), 0.62 / 4, 1e-9);
+    const auto has = [&](const std::string& words) {
+        return std::find(p.row_names.begin(), p.row_names.end(), words) != p.row_names.end();
+    };
+    EXPECT_TRUE(has("box 4 and ball") || has("ball and box 4"));
+    EXPECT_TRUE(has("ground and box 1") || has("box 1 and ground"));
+    for (double y : p.series.at(0).y) EXPECT_GT(y, 0.0);
 }
 
 // Dominoes: the strike times along the row, the line fitted from domino 9 on, and the wave
