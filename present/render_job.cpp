@@ -460,6 +460,7 @@ RenderReport report_of(const RenderRequest& rq, Loaded in, Ran ran, Analysis a, 
     PlotTotals plot = plot_totals(r.scene, ran.run);
     r.plot_t = std::move(plot.t);
     r.plot_totals = std::move(plot.totals);
+    if (r.lesson) r.plots = lesson_plots(*r.lesson, r.scene, ran.run);
     r.frames = static_cast<long>(in.times.size());
     r.width = rq.frame.width;
     r.height = rq.frame.height;

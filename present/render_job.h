@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "present/frame_spec.h"
+#include "present/lesson_plots.h"
 #include "present/scene_run.h"
 #include "present/stop.h"
 #include "render/frame_state.h"
@@ -89,6 +90,7 @@ struct RenderReport {
     // recorded collision instant inserted (two points at its time), in time order.
     std::vector<double> plot_t;
     std::vector<render::FrameTotals> plot_totals;
+    std::vector<PlotData> plots;  // a lesson's [[plot]] entries, on this run
     long frames = 0;
     int width = 0, height = 0;
     double seconds = 0.0;  // rendering and writing the frames

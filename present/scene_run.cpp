@@ -328,6 +328,32 @@ PlotTotals plot_totals(const Scene& scene, const SceneRun& run) {
     return out;
 }
 
+std::vector<FrameState> plot_states(const Scene& scene, const SceneRun& run) {
+    std::vector<FrameState> out;
+    visit_record(run, [&](const auto& rec) {
+        std::size_t next = 0;
+        for (const FrameState& f : run.frames) {
+            while (next < rec.instants.size() && rec.instants[next].t <= f.t) {
+                std::vector<BodyState> pre, post;
+                instant_velocities(scene, rec, next, &pre, &post);
+                FrameState s;
+                s.t = rec.instants[next].t;
+                s.bodies = std::move(pre);
+                out.push_back(s);
+                s.bodies = std::move(post);
+                out.push_back(std::move(s));
+                ++next;
+            }
+            if (!out.empty() && out.back().t == f.t) continue;
+            FrameState s;
+            s.t = f.t;
+            s.bodies = f.bodies;
+            out.push_back(std::move(s));
+        }
+    });
+    return out;
+}
+
 std::optional<Moments> page_moments(const Scene& scene, const SceneRun& run, const std::vector<CollisionPick>& picks) {
     return visit_record(run, [&](const auto& rec) -> std::optional<Moments> {
         const std::optional<CollisionPick> pick = page_pick(picks, rec);

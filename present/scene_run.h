@@ -89,4 +89,9 @@ struct PlotTotals {
 };
 PlotTotals plot_totals(const Scene& scene, const SceneRun& run);
 
+// The same instants as plot_totals, with the bodies (no impacts, no trails): every sample, and
+// at each recorded collision instant the bodies just before and just after its impulses (a
+// lesson's per-sample [[plot]], present/lesson_plots.h).
+std::vector<render::FrameState> plot_states(const Scene& scene, const SceneRun& run);
+
 }  // namespace collide

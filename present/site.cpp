@@ -5,6 +5,7 @@
 
 #include "assets/site.h"
 #include "present/site_pages.h"
+#include "present/site_plots.h"
 #include "render/png.h"
 #include "teach/html.h"
 
@@ -59,6 +60,8 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         render::write_file_atomic(
             (lesson_dir / "momentum.svg").string(),
             svg_plot("Momentum (kg m/s)", r.plot_t, momentum, r.collision_times, L.scene.duration));
+        // The lesson's own [[plot]] entries (present/site_plots.h).
+        for (const auto& [file, svg] : plot_svgs(r.plots)) render::write_file_atomic((lesson_dir / file).string(), svg);
         built.push_back(std::move(b));
         // Between lessons too: an interrupt during a lesson's figures or plots (no frame left
         // to ask) is honoured here, not lost.

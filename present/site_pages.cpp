@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "present/figures.h"  // kColumnWidth, kWideFigureWidth
+#include "present/site_plots.h"
 #include "present/site_questions.h"
 #include "render/style.h"
 #include "teach/html.h"
@@ -432,7 +433,7 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
     // the answers of the questions below; the student's print leaves them out).
     o << "<section class=\"watch\">\n<h2>Watch</h2>\n<div class=\"noprint\">\n";
     for (const RenderReport::Shown& f : r.figures) o << shown.figure(f);
-    o << shown.animation() << shown.variants_figure() << shown.plots() << "</div>\n"
+    o << shown.animation() << plots_html(r.plots) << shown.variants_figure() << shown.plots() << "</div>\n"
       << "<p class=\"printonly\">Watch the figures and the animation of this lesson on its page before you go "
          "on.</p>\n</section>\n";
     if (!predict.empty()) o << check_html(L, r.answers, predict);

@@ -148,6 +148,44 @@ struct LessonVary {
     double value(std::size_t k) const;
 };
 
+// [[plot]] (docs/formats/lesson-files.md, "Plots"): a recorded quantity of the lesson's run
+// against another, drawn on its page with a table of the numbers. Per sample: every sampled
+// instant, x and each y a sample quantity (PlotQuantity). Per collision: the collisions
+// `pair` has (every one of those two bodies), or `chain` has (the first of each neighbouring
+// pair, chain[k] striking chain[k+1]), or `instant` has (every collision of the instant its two
+// bodies first collide), or every collision of the run; x is "collision" (its
+// number among them, from 1) or "t", each y "t", "interval" (from the one before) or "impulse".
+struct PlotQuantity {
+    std::string name;  // as written: "ball.position.y", "energy", "t", "B.touching point.v.x"
+    // Per sample: what it reads.
+    enum class Kind { time, position, velocity, spin, angle, kinetic, potential, energy, momentum };
+    Kind kind = Kind::time;
+    int body = -1;      // a body's scene index, or -1 (time and the totals)
+    int mark = -1;      // an index into the lesson's [[mark]] list (view.marks), or -1
+    int component = 0;  // 0, 1, 2: x, y, z (a number without component: 0)
+    std::string unit;   // "m", "m/s", "rad/s", "rad", "J", "kg m/s", "s"
+};
+enum class PlotPer { sample, collision };
+enum class PlotFit { none, line, ratio };
+struct LessonPlot {
+    std::string title;
+    PlotPer per = PlotPer::sample;
+    // Per sample: x and the y series. Per collision: x is "collision" or "t"; each y is a
+    // PlotQuantity with name "t", "interval" or "impulse" (kind time; unit "s" or "N s").
+    PlotQuantity x;
+    std::vector<PlotQuantity> y;
+    std::vector<std::string> pair, chain;  // per collision: which collisions (body names)
+    // Or every collision of one instant: the first at which instant[0] and instant[1] collide
+    // (a resting stack struck: each contact's impulse, solved together).
+    std::vector<std::string> instant;
+    std::vector<std::size_t> pair_index, chain_index, instant_index;
+    std::string counting = "collision";  // per collision with x = "collision": what one step of x is
+    PlotFit fit = PlotFit::none;
+    int fit_from = 1;  // fit = "line" per collision: only the collisions numbered from here
+    SourcePos pos;
+    std::string where;  // "plot[K]"
+};
+
 // The most values a [[vary]] grid may have.
 constexpr std::size_t kMaxVaryValues = 1000000;
 
@@ -175,6 +213,7 @@ struct Lesson {
     std::optional<LessonPenalty> penalty;
     std::vector<LessonFigure> figures;  // [[figure]] entries, in order (may be empty)
     std::vector<LessonVary> vary;       // [[vary]] entries, in order (may be empty)
+    std::vector<LessonPlot> plots;      // [[plot]] entries, in order (may be empty)
     SceneView view;
 };
 

@@ -35,7 +35,7 @@ using lesson_parse::strings;
 
 const std::vector<std::string>& lesson_tables() {
     static const std::vector<std::string> tables = {"lesson", "question", "variant", "penalty",
-                                                    "figure", "vary",     "teacher"};
+                                                    "figure", "vary",     "teacher", "plot"};
     return tables;
 }
 
@@ -178,6 +178,7 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     }
 
     parse_vary(root, table, L);
+    lesson_parse::parse_plots(root, L);
 
     constexpr int kMaxWhatIfs = 20;
     int what_ifs = 0;

@@ -22,6 +22,10 @@ LessonQuestion parse_question(const TableReader& q, const Lesson& L);
 // tables of the file they change (scenario/lesson_values.cpp).
 void parse_vary(const TableReader& root, const toml::table& file, Lesson& L);
 
+// [[plot]]: the lesson's plots, checked against its scene and [[mark]] list
+// (scenario/lesson_plot.cpp).
+void parse_plots(const TableReader& root, Lesson& L);
+
 // [teacher]: the teacher's page's content (scenario/lesson_teacher.cpp); none when absent.
 std::optional<LessonTeacher> parse_teacher(const TableReader& root);
 

@@ -238,6 +238,123 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
     return o.str();
 }
 
+namespace {
+// Tick marks at 1, 2 or 5 times a power of ten, about five across [lo, hi].
+std::vector<double> ticks(double lo, double hi) {
+    std::vector<double> out;
+    const double span = hi - lo;
+    if (!(span > 0)) return out;
+    const double raw = span / 5, p = std::pow(10.0, std::floor(std::log10(raw)));
+    const double step = raw / p < 1.5 ? p : raw / p < 3.5 ? 2 * p : raw / p < 7.5 ? 5 * p : 10 * p;
+    for (double v = std::ceil(lo / step) * step; v <= hi + 1e-9 * step; v += step)
+        out.push_back(std::abs(v) < 1e-9 * step ? 0.0 : v);
+    return out;
+}
+std::string tick_text(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return notation::true_minus(buf);
+}
+}  // namespace
+
+std::string svg_xy_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
+                        const std::vector<XYSeries>& series, const std::optional<XYLine>& line) {
+    const double W = 560, H = 280, left = 72, right = 16, top = 40, bottom = 46;
+    double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
+    bool first = true;
+    for (const XYSeries& s : series)
+        for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+            xlo = first ? s.x[k] : std::min(xlo, s.x[k]);
+            xhi = first ? s.x[k] : std::max(xhi, s.x[k]);
+            ylo = first ? s.y[k] : std::min(ylo, s.y[k]);
+            yhi = first ? s.y[k] : std::max(yhi, s.y[k]);
+            first = false;
+        }
+    if (ylo > 0 && ylo < 0.5 * yhi) ylo = 0;
+    if (yhi < 0 && yhi > 0.5 * ylo) yhi = 0;
+    if (xlo > 0 && xlo < 0.5 * xhi) xlo = 0;
+    const auto widen = [](double& lo, double& hi) {
+        const double span = hi - lo;
+        const double pad =
+            span > 1e-12 * std::max(1.0, std::abs(hi)) ? 0.06 * span : std::max(0.05 * std::abs(hi), 1e-3);
+        lo -= pad;
+        hi += pad;
+    };
+    widen(xlo, xhi);
+    widen(ylo, yhi);
+    const auto X = [&](double x) { return left + (W - left - right) * (x - xlo) / (xhi - xlo); };
+    const auto Y = [&](double y) { return top + (H - top - bottom) * (yhi - y) / (yhi - ylo); };
+    char buf[256];
+    std::ostringstream o;
+    o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
+      << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title)
+      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
+    o << "<text x=\"" << left << "\" y=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
+    // Keys (plain text: no HTML inside SVG text).
+    double kx = left;
+    for (const XYSeries& s : series) {
+        std::snprintf(buf, sizeof buf,
+                      "<line x1=\"%.1f\" y1=\"30\" x2=\"%.1f\" y2=\"30\" stroke=\"%s\" stroke-width=\"3\"/>", kx,
+                      kx + 18, s.colour.c_str());
+        o << buf << "<text x=\"" << kx + 22 << "\" y=\"34\">" << escape(s.label) << "</text>\n";
+        kx += 40 + 7.0 * static_cast<double>(s.label.size());
+    }
+    if (line) {
+        std::snprintf(buf, sizeof buf,
+                      "<line x1=\"%.1f\" y1=\"30\" x2=\"%.1f\" y2=\"30\" stroke=\"#555\" stroke-width=\"1.5\" "
+                      "stroke-dasharray=\"6 4\"/>",
+                      kx, kx + 18);
+        o << buf << "<text x=\"" << kx + 22 << "\" y=\"34\">" << escape(line->label) << "</text>\n";
+    }
+    // Grid, ticks and axes.
+    for (double v : ticks(ylo, yhi)) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#e5e5e5\"/>",
+                      left, Y(v), W - right, Y(v));
+        o << buf << "<text x=\"" << left - 6 << "\" y=\"" << Y(v) + 4 << "\" text-anchor=\"end\" fill=\"#555\">"
+          << escape(tick_text(v)) << "</text>\n";
+    }
+    for (double v : ticks(xlo, xhi)) {
+        std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#e5e5e5\"/>",
+                      X(v), top, X(v), H - bottom);
+        o << buf << "<text x=\"" << X(v) << "\" y=\"" << H - bottom + 16 << "\" text-anchor=\"middle\" fill=\"#555\">"
+          << escape(tick_text(v)) << "</text>\n";
+    }
+    std::snprintf(buf, sizeof buf, "<path d=\"M%.1f %.1f V%.1f H%.1f\" fill=\"none\" stroke=\"#777\"/>\n", left, top,
+                  H - bottom, W - right);
+    o << buf;
+    o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 8 << "\" text-anchor=\"middle\" fill=\"#333\">"
+      << escape(x_label) << "</text>\n";
+    o << "<text transform=\"translate(14 " << 0.5 * (top + H - bottom) << ") rotate(-90)\" text-anchor=\"middle\" "
+      << "fill=\"#333\">" << escape(y_label) << "</text>\n";
+    if (line) {
+        std::snprintf(buf, sizeof buf,
+                      "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#555\" stroke-width=\"1.5\" "
+                      "stroke-dasharray=\"6 4\"/>\n",
+                      X(line->x0), Y(line->intercept + line->slope * line->x0), X(line->x1),
+                      Y(line->intercept + line->slope * line->x1));
+        o << buf;
+    }
+    for (const XYSeries& s : series) {
+        const std::size_t n = std::min(s.x.size(), s.y.size());
+        if (s.points) {
+            for (std::size_t k = 0; k < n; ++k) {
+                std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/>\n", X(s.x[k]),
+                              Y(s.y[k]), s.colour.c_str());
+                o << buf;
+            }
+        } else {
+            o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
+            for (std::size_t k = 0; k < n; ++k) {
+                std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(s.x[k]), Y(s.y[k]));
+                o << buf;
+            }
+            o << "\"/>\n";
+        }
+    }
+    o << "</svg>\n";
+    return o.str();
+}
+
 std::string worked_html(const SolveProblem& P, const Solution& S, const std::string& world_note) {
     const notation::StudentNumbers student;  // 4 figures, no floating-point noise
     std::ostringstream o;

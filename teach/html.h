@@ -2,6 +2,7 @@
 // writes beside the frames: text in our notation as HTML, and line plots as SVG.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,23 @@ struct Series {
 // faint red vertical lines at `collisions`, the largest and smallest values labelled.
 std::string svg_plot(const std::string& title, const std::vector<double>& t, const std::vector<Series>& series,
                      const std::vector<double>& collisions, double duration, const std::string& x_unit = "s");
+
+// A plot of y against x (560 x 280, white): a lesson's [[plot]] (present/lesson_plots.h). Each
+// series as a line (per sample) or as points (per collision); `line`, when given, the fitted
+// straight line, dashed, over its x range. Ticks at round numbers; the axes' labels carry the
+// units ("t (s)"). Labels are plain text.
+struct XYSeries {
+    std::string label;
+    std::string colour;
+    std::vector<double> x, y;
+    bool points = false;
+};
+struct XYLine {
+    double slope = 0, intercept = 0, x0 = 0, x1 = 0;
+    std::string label;  // its key: "fit: 0.0378 s per domino"
+};
+std::string svg_xy_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
+                        const std::vector<XYSeries>& series, const std::optional<XYLine>& line);
 
 // The "Try it" panel of a lesson page (collide material, when the site has the WebAssembly
 // module collide-engine.js; docs/commands/material.md, "The Try-it panel"): a slider for each of the lesson's

@@ -596,6 +596,57 @@ TEST(Material, AManyBodyPageGivesTheRunsNumbersAndLabelsTheTwoBodyCalculation) {
     }
 }
 
+// Issue 33, "The lesson's point as a plot": each [[plot]] of the four lessons that declare one is
+// on its page under "Watch" (plot-K.svg, drawn with its units), with an alt text that says what
+// the run shows and the numbers behind it in a folded table.
+TEST(Material, EachDeclaredPlotIsOnItsPageWithAltTextAndTable) {
+    render::test::TempDir dir;
+    const fs::path site = every_lesson_site(dir);
+    // {lesson, plot number, words its alt text must hold}
+    const std::vector<std::tuple<std::string, int, std::string>> expected = {
+        {"bouncing-ball", 1, "Height of the ball's centre against time: "},
+        {"bouncing-ball", 2, "times the one before"},
+        {"bouncing-ball", 2, "and e = 0.5"},
+        {"dominoes", 1, "Strike time against domino number: a straight line"},
+        {"dominoes", 1, " s per domino"},
+        {"dominoes", 1, "a wave speed of "},
+        {"dominoes", 2, "Time between strikes"},
+        {"tower", 1, "Impulse at each contact of the tower when the ball strikes: "},
+        {"restitution", 1, "B (e=1).touching point.v.x from "},
+    };
+    for (const auto& [id, k, words] : expected) {
+        SCOPED_TRACE(id + " plot " + std::to_string(k));
+        const fs::path d = site / id;
+        const std::string page = read(d / "index.html");
+        const std::string file = "plot-" + std::to_string(k) + ".svg";
+        ASSERT_TRUE(fs::exists(d / file));
+        const std::string svg = read(d / file);
+        EXPECT_NE(svg.find("<svg"), std::string::npos);
+        const std::size_t img = page.find("<img src=\"" + file + "\" alt=\"");
+        ASSERT_NE(img, std::string::npos);
+        // Under "Watch", before the explanation.
+        EXPECT_GT(img, page.find("<h2>Watch</h2>"));
+        EXPECT_LT(img, page.find("<section class=\"explain\">"));
+        const std::size_t a0 = img + file.size() + 17, a1 = page.find('"', a0);
+        const std::string alt = page.substr(a0, a1 - a0);
+        EXPECT_NE(alt.find(html::escape(words)), std::string::npos) << alt;
+        // The table behind it, folded.
+        const std::size_t table = page.find("<details class=\"plot-data\">", img);
+        ASSERT_NE(table, std::string::npos);
+        EXPECT_LT(table, page.find("<img src=\"plot-" + std::to_string(k + 1) + ".svg\"", img));
+        EXPECT_NE(page.find("<table>", table), std::string::npos);
+        // The axes carry units.
+        if (id == "bouncing-ball" && k == 1) {
+            EXPECT_NE(svg.find(">t (s)<"), std::string::npos);
+            EXPECT_NE(svg.find(">ball.position.y (m)<"), std::string::npos);
+        }
+        if (id == "dominoes" && k == 1) {
+            EXPECT_NE(svg.find(">time (s)<"), std::string::npos);
+            EXPECT_NE(svg.find("s per domino"), std::string::npos);
+        }
+    }
+}
+
 TEST(Material, BadInputWritesNothing) {
     render::test::TempDir dir;
     std::ostringstream out, err;
