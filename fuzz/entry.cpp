@@ -7,9 +7,11 @@
 #include <stdexcept>
 #include <vector>
 
+#include "engine/run_error.h"
 #include "scenario/input_error.h"
 #include "teach/answers.h"
 #include "scenario/scene_file.h"
+#include "scenario/toml_reader.h"
 #include "teach/solve.h"
 #include "teach/step_output.h"
 
@@ -64,9 +66,24 @@ void run(const Scene& scene) {
     for (std::size_t k = 0; k < events.size(); ++k) (void)event_json(scene, events[k], gains[k]);
 }
 
+// The bytes read as the commands read a file, stdin or a FIFO (read_bounded: in chunks,
+// refused at a NUL byte or beyond 1 MiB): what it accepts must be the bytes themselves. The
+// entry points parse the bytes whatever it says (the Python and WebAssembly modules hand the
+// parsers text from memory).
+void read_as_the_commands_do(const std::string& bytes) {
+    std::istringstream in(bytes);
+    try {
+        if (read_bounded(in, kName) != bytes) throw std::logic_error("read_bounded changed the bytes it accepted");
+    } catch (const InputError&) {
+        if (bytes.size() <= kMaxInputBytes && bytes.find('\0') == std::string::npos)
+            throw std::logic_error("read_bounded refused a text file under the limit");
+    }
+}
+
 }  // namespace
 
 void scene(const std::string& text) {
+    read_as_the_commands_do(text);
     try {
         SceneView view;
         (void)parse_scene_text(text, kName, &view);
@@ -75,6 +92,7 @@ void scene(const std::string& text) {
 }
 
 void solve(const std::string& text) {
+    read_as_the_commands_do(text);
     SolveProblem problem;
     try {
         problem = parse_solve_text(text, kName);
@@ -89,6 +107,7 @@ void solve(const std::string& text) {
 }
 
 void lesson(const std::string& text) {
+    read_as_the_commands_do(text);
     try {
         (void)parse_lesson_text(text, kName, kName);
     } catch (const InputError&) {
@@ -108,6 +127,8 @@ void step(const std::string& text) {
         else if (s.dimension == 2) run<2>(s);
         else run<3>(s);
     } catch (const InputError&) {
+    } catch (const RunError&) {
+        // The scene's own: beyond its work budget, or a state no longer finite (named, exit 2).
     } catch (const std::runtime_error& e) {
         // The world's documented refusals (step.h): a run it cannot continue.
         const std::string what = e.what();
