@@ -244,27 +244,6 @@ struct Shown {
         return o.str();
     }
 
-    // One collision worked out. Where the run resolved it with other contacts of the same
-    // instant, the two-body calculation is labelled a simplified one and the run's numbers
-    // stand beside its results (one truth per page: the figure, the table and the answers
-    // give the run's).
-    std::string worked_with_run(const SolveProblem& P, const Solution& alone, const Solution& run,
-                                const std::string& world_note) const {
-        if (!resolved_differs(P, alone, run)) return worked_html(P, alone, world_note);
-        std::ostringstream o;
-        o << "<p class=\"simplified\"><strong>A simplified calculation: " << escape(P.a.name) << " and "
-          << escape(P.b.name)
-          << " alone.</strong> In the run other contacts act at the same instant, and the world solves them "
-             "together; the numbers of the run follow the calculation.</p>\n"
-          << worked_html(P, alone, "");
-        o << "<table class=\"beside\">\n<tr><th></th><th>the two alone (above)</th><th>the run</th></tr>\n";
-        for (const ResultBeside& r : results_beside(P, alone, run))
-            o << "<tr><td>" << escape(r.what) << " (" << escape(r.unit) << ")</td><td>" << escape(r.alone)
-              << "</td><td>" << escape(r.run) << "</td></tr>\n";
-        o << "</table>\n";
-        return o.str();
-    }
-
     // Every collision of the lesson worked out: the figures' (the first, then the others with
     // their figures when `with_figures`), the run's later ones folded (printed: one line each),
     // the tables of the bodies before and after and of the variants.
@@ -287,12 +266,13 @@ struct Shown {
              "units. Model: "
           << escape(model_name(P.model)) << ".</p>\n";
         const Solution run = R.figures.empty() ? S : as_resolved(P, S, R.figures.front().instant);
-        o << worked_with_run(P, S, run, R.world_note);
+        o << html::worked_html_beside_run(P, S, run, R.world_note);
         for (std::size_t k = 1; k < R.figures.size(); ++k) {
             const RenderReport::Shown& f = R.figures[k];
             o << "<h3>The collision of " << escape(f.problem.a.name) << " and " << escape(f.problem.b.name) << "</h3>\n"
               << (with_figures ? figure(f, true) : "")
-              << worked_with_run(f.problem, f.solution, as_resolved(f.problem, f.solution, f.instant), f.world_note);
+              << html::worked_html_beside_run(f.problem, f.solution, as_resolved(f.problem, f.solution, f.instant),
+                                              f.world_note);
         }
         if (!R.later.empty()) {
             const std::size_t worked = R.later.size() + R.figures.size();
@@ -307,7 +287,7 @@ struct Shown {
                   << escape(c.problem.b.name) << " at t = " << escape(sig3(c.instant.t)) << " s, impulse on "
                   << escape(c.problem.b.name) << " " << escape(dc == 1 ? sig3(ran.P.x()) : sig3(ran.P.norm()))
                   << " N s in the run</summary>\n"
-                  << worked_with_run(c.problem, c.solution, ran, c.world_note) << "</details>\n";
+                  << html::worked_html_beside_run(c.problem, c.solution, ran, c.world_note) << "</details>\n";
             }
         }
         // The table: the two bodies before and after, as the run resolved them.

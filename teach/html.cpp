@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "scenario/lesson.h"
+#include "teach/event_problem.h"
 #include "teach/notation.h"
 #include "teach/solve.h"
 
@@ -367,6 +368,22 @@ std::string worked_html(const SolveProblem& P, const Solution& S, const std::str
         for (const std::string& note : st.notes) o << "<p class=\"note\">" << math(note) << "</p>\n";
     }
     if (!world_note.empty()) o << "<p class=\"note\">" << math(world_note) << "</p>\n";
+    return o.str();
+}
+
+std::string worked_html_beside_run(const SolveProblem& P, const Solution& alone, const Solution& run,
+                                   const std::string& world_note) {
+    if (!resolved_differs(P, alone, run)) return worked_html(P, alone, world_note);
+    std::ostringstream o;
+    o << "<p class=\"simplified\"><strong>A simplified calculation: " << escape(P.a.name) << " and " << escape(P.b.name)
+      << " alone.</strong> In the run other contacts act at the same instant, and the world solves them "
+         "together; the numbers of the run follow the calculation.</p>\n"
+      << worked_html(P, alone, "");
+    o << "<table class=\"beside\">\n<tr><th></th><th>the two alone (above)</th><th>the run</th></tr>\n";
+    for (const ResultBeside& r : results_beside(P, alone, run))
+        o << "<tr><td>" << escape(r.what) << " (" << escape(r.unit) << ")</td><td>" << escape(r.alone) << "</td><td>"
+          << escape(r.run) << "</td></tr>\n";
+    o << "</table>\n";
     return o.str();
 }
 

@@ -31,6 +31,13 @@ std::string paragraphs(const std::string& text);
 // result), its notes, and `world_note` (the world's note when it resolved several points; ""
 // for none).
 std::string worked_html(const SolveProblem& problem, const Solution& solution, const std::string& world_note);
+// One collision worked out where the run may have resolved it with other contacts of the same
+// instant: `alone` is solve()'s (the two bodies alone), `run` the run's outcome (as_resolved in
+// teach/event_problem.h). Where they differ (resolved_differs), the calculation is labelled "A
+// simplified calculation: a and b alone" and a table sets its results beside the run's; else
+// worked_html(problem, alone, world_note). The site's pages and the Try-it panel show it.
+std::string worked_html_beside_run(const SolveProblem& problem, const Solution& alone, const Solution& run,
+                                   const std::string& world_note);
 
 struct Series {
     std::string label;           // in our notation (p_x)

@@ -120,6 +120,22 @@ ordered_json bodies_json(const Scene& scene) {
     return out;
 }
 
+// The run's outcome of a collision where it differs from the two bodies alone (resolved_differs:
+// other contacts at the same instant), in the solve JSON's shape and with its fields that the run
+// gives: dimension, impulse, normal_impulse, a and b (v, w after), momentum, angular_momentum,
+// kinetic_energy (before and after); "null" where the two alone are the run.
+std::string run_json(const SolveProblem& problem, const Solution& alone, const Solution& run) {
+    if (!resolved_differs(problem, alone, run)) return "null";
+    std::ostringstream json;
+    write_json(problem, run, json);
+    const ordered_json full = ordered_json::parse(json.str());
+    ordered_json out;
+    for (const char* key :
+         {"dimension", "impulse", "normal_impulse", "a", "b", "momentum", "angular_momentum", "kinetic_energy"})
+        if (full.contains(key)) out[key] = full[key];
+    return out.dump();
+}
+
 // `values`: a JSON object {"A.mass": 3, ...} (the [[vary]] inputs' names, lesson_with_inputs); `fps`: the
 // page's frame rate (the states are sampled at 1/fps, as the site's frames).
 std::string lesson_json(const std::string& text, const std::string& values, double fps) {
@@ -173,30 +189,35 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     if (collision) {
         const SolveProblem problem = collision_problem(scene, *collision);
         const Solution solution = solve(problem);
+        const Solution run = as_resolved(problem, solution, *collision);
         std::ostringstream json;
         write_json(problem, solution, json);
         std::string html;
         {
             const notation::StudentNumbers student;  // as on the lesson page: 4 figures, no noise
-            html = html::worked_html(problem, solution, world_note(scene, *collision, solution.P));
+            html = html::worked_html_beside_run(problem, solution, run, world_note(scene, *collision, solution.P));
         }
         ordered_json w{{"t", collision->t}, {"a", problem.a.name}, {"b", problem.b.name}, {"html", html}};
-        // The solve JSON as `collide solve --format json` prints it, spliced in unchanged.
+        // The solve JSON as `collide solve --format json` prints it, spliced in unchanged; and
+        // where the run resolved the collision with other contacts of its instant, its outcome.
         worked = w.dump();
         worked.pop_back();
-        worked += ",\"solve\":" + json.str() + "}";
+        worked += ",\"solve\":" + json.str() + ",\"run\":" + run_json(problem, solution, run) + "}";
     }
     // Each collision the lesson's figures show (a lesson of several, such as two bats hit at
     // two points): who, when, and `collide solve --format json`'s numbers for it.
     std::string figures = "[";
     for (std::size_t k = 0; k < figure_collisions.size(); ++k) {
         const SolveProblem problem = collision_problem(scene, figure_collisions[k]);
+        const Solution solution = solve(problem);
         std::ostringstream json;
-        write_json(problem, solve(problem), json);
+        write_json(problem, solution, json);
         std::string f =
             ordered_json{{"t", figure_collisions[k].t}, {"a", problem.a.name}, {"b", problem.b.name}}.dump();
         f.pop_back();
-        figures += (k ? "," : "") + f + ",\"solve\":" + json.str() + "}";
+        figures += (k ? "," : "") + f + ",\"solve\":" + json.str() +
+                   ",\"run\":" + run_json(problem, solution, as_resolved(problem, solution, figure_collisions[k])) +
+                   "}";
     }
     figures += "]";
     std::string s = out.dump();

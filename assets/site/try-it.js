@@ -152,9 +152,13 @@
       numbers.innerHTML = '<p>No collision in this run: change the inputs.</p>';
       return;
     }
-    var s = w.solve, d = s.dimension;
+    // The run's numbers: where other contacts act at the same instant (a tower, a row of
+    // dominoes) the world's outcome (w.run), not the two bodies alone (w.solve) that the
+    // worked example below calculates as a simplified case.
+    var s = w.run || w.solve, d = s.dimension;
     var h = '<p>The collision of ' + escapeHtml(w.a) + ' (a) and ' + escapeHtml(w.b) + ' (b) at t = ' + num(w.t) +
-            ' s. Impulse on ' + escapeHtml(w.b) + ': <output class="tryit-impulse" data-value="' +
+            ' s' + (w.run ? ', as the run resolved it with the other contacts of that instant' : '') +
+            '. Impulse on ' + escapeHtml(w.b) + ': <output class="tryit-impulse" data-value="' +
             escapeHtml(JSON.stringify(s.impulse)) + '">P = ' + vec(s.impulse) + ' N\u00b7s</output>' +
             (d > 1 ? ', j = P\u00b7n = <output class="tryit-normal-impulse" data-value="' + s.normal_impulse + '">' +
                      num(s.normal_impulse) + ' N\u00b7s</output>' : '') + '.</p>\n';
@@ -178,11 +182,12 @@
            '<tr><th>collision</th><th>t (s)</th><th>impulse on b (N\u00b7s)</th><th>body</th><th>v after (m/s)</th>' +
            (d > 1 ? '<th>\u03c9 after (rad/s)</th>' : '') + '</tr>';
       figs.forEach(function (f) {
+        var r = f.run || f.solve;  // the run's outcome, as above
         [['a', f.a], ['b', f.b]].forEach(function (p, k) {
           h += '<tr>' + (k === 0 ? '<td rowspan="2">' + escapeHtml(f.a) + ' (a) and ' + escapeHtml(f.b) + ' (b)</td>' +
-                                   '<td rowspan="2">' + num(f.t) + '</td><td rowspan="2">' + vec(f.solve.impulse) + '</td>' : '') +
-               '<td>' + escapeHtml(p[1]) + '</td><td>' + vec(f.solve[p[0]].v) + '</td>' +
-               (d > 1 ? '<td>' + spin(f.solve[p[0]].w) + '</td>' : '') + '</tr>';
+                                   '<td rowspan="2">' + num(f.t) + '</td><td rowspan="2">' + vec(r.impulse) + '</td>' : '') +
+               '<td>' + escapeHtml(p[1]) + '</td><td>' + vec(r[p[0]].v) + '</td>' +
+               (d > 1 ? '<td>' + spin(r[p[0]].w) + '</td>' : '') + '</tr>';
         });
       });
       h += '</table>';
@@ -220,7 +225,9 @@
       lo[0] = Math.min(lo[0], p[0]); hi[0] = Math.max(hi[0], p[0]);
       lo[1] = Math.min(lo[1], p[1]); hi[1] = Math.max(hi[1], p[1]);
     });
-    var W = scene.width, H = scene.height, top = 70, margin = 40;
+    // Above the scene: the legend, at most three rows (drawScene).
+    var moving = run.bodies.filter(function (b) { return !b.static; }).length;
+    var W = scene.width, H = scene.height, top = moving > 2 ? 84 : 70, margin = 40;
     var w = Math.max(hi[0] - lo[0], 1e-3), h = Math.max(hi[1] - lo[1], 1e-3);
     var scale = run.dimension === 1 ? (W - 2 * margin) / w : Math.min((W - 2 * margin) / w, (H - top - margin) / h);
     var ox = W / 2 - scale * (lo[0] + hi[0]) / 2;
@@ -263,6 +270,9 @@
     return palette.fills[order % palette.fills.length];
   }
 
+  // The bodies named in the scene: all of them, or in a row of many (dominoes, whose names
+  // would run into each other) the first, the last and the latest collision's two (drawScene).
+  var named = null;
   function drawBody(ctx, i, s) {
     var b = run.bodies[i], d = run.dimension;
     ctx.fillStyle = fillOf(i); ctx.strokeStyle = palette.ink; ctx.lineWidth = 2;
@@ -305,7 +315,7 @@
     }
     ctx.fillStyle = palette.ink;
     ctx.beginPath(); ctx.arc(centre[0], centre[1], 4, 0, 2 * Math.PI); ctx.fill();
-    label(ctx, b.name, [centre[0] + 8, centre[1] + 14], palette.ink);
+    if (!named || named[b.name]) label(ctx, b.name, [centre[0] + 8, centre[1] + 14], palette.ink);
     if (Math.abs(s.w) > 1e-9) {  // the spin: an amber arc, its head in the turning direction
       var rr = Math.max(16, extentOf(b) * view.scale * 0.55), ccw = s.w > 0;
       ctx.strokeStyle = palette.spin; ctx.fillStyle = palette.spin; ctx.lineWidth = 2.5;
@@ -335,7 +345,16 @@
       arrow(ctx, [W - 40, view.oy], [W - 10, view.oy], palette.ink, 2);
       label(ctx, 'x', [W - 18, view.oy + 16], palette.ink, 'center');
     }
-    var legend = [];
+    var legend = [], last = null;
+    run.events.forEach(function (e) { if (e.t <= st.t + 1e-12) last = e; });
+    var moving = run.bodies.filter(function (b) { return !b.static; });
+    named = null;
+    if (moving.length > 3) {
+      named = {};
+      named[moving[0].name] = named[moving[moving.length - 1].name] = true;
+      if (last) named[last.a] = named[last.b] = true;
+      else named[moving[1].name] = true;  // the legend's first two
+    }
     run.bodies.forEach(function (b, i) {
       var s = st.bodies[b.name];
       if (!s && b.kind !== 'half_plane') return;
@@ -355,11 +374,26 @@
       arrow(ctx, p, [p[0] + P[0] * view.pscale, p[1] - P[1] * view.pscale], palette.impulse, 3.5);
       label(ctx, 'P = ' + vec(e.impulse) + ' N\u00b7s on ' + e.b, [p[0] + 10, p[1] - 20], palette.impulse);
     });
-    legend.forEach(function (l, k) {
+    // The legend above the scene, three rows at most (a row of dominoes would cover them): with
+    // more moving bodies, the two of the latest collision so far (else the first two) and a
+    // row that says how many are left out.
+    var rows = legend, others = 0;
+    if (legend.length > 3) {
+      rows = legend.filter(function (l) {
+        var n = run.bodies[l.i].name;
+        return last ? n === last.a || n === last.b : false;
+      });
+      if (rows.length === 0) rows = legend.slice(0, 2);
+      others = legend.length - rows.length;
+    }
+    rows.forEach(function (l, k) {
       ctx.fillStyle = fillOf(l.i); ctx.fillRect(12, 12 + k * 22, 14, 14);
       ctx.strokeStyle = palette.ink; ctx.lineWidth = 1; ctx.strokeRect(12, 12 + k * 22, 14, 14);
       label(ctx, l.text, [32, 19 + k * 22], palette.ink);
     });
+    if (others > 0)
+      label(ctx, '+ ' + others + ' other moving bodies (listed: ' + (last ? 'the latest collision\u2019s two)' : 'the first two)'),
+            [32, 19 + rows.length * 22], palette.muted);
     label(ctx, 't = ' + st.t.toFixed(3) + ' s', [W - 12, 19], palette.muted, 'right');
   }
 

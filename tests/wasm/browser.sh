@@ -23,7 +23,7 @@ rm -rf "$work"
 mkdir -p "$work"
 [[ -f ${COLLIDE_ENGINE_JS:-} ]] || { echo "browser.sh: COLLIDE_ENGINE_JS=${COLLIDE_ENGINE_JS:-} is not a file" >&2; exit 1; }
 
-"$collide" material -o "$work/site" --size 640x360 --quiet catch-up general-2d
+"$collide" material -o "$work/site" --size 640x360 --quiet catch-up general-2d dominoes
 [[ -f $work/site/collide-engine.js && -f $work/site/try-it.js ]] || { echo "browser.sh: the site has no module" >&2; exit 1; }
 page="file://$work/site/catch-up/index.html"
 
@@ -78,6 +78,25 @@ awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (b
   exit 1
 }
 [[ -s $work/general-2d.png ]] || { echo "browser.sh: no general-2d.png" >&2; exit 1; }
+
+# One truth per page: in dominoes the world resolves the first strike with domino 2's contact
+# with the floor, so the panel's impulse is the run's (the first domino 1 / domino 2 event of
+# `collide step`), not the two dominoes alone of the worked example below it.
+page3="file://$work/site/dominoes/index.html"
+browse --dump-dom "$page3" >"$work/dominoes.html"
+browse --screenshot="$work/dominoes.png" "$page3?show=try-it"
+grep -q 'as the run resolved it with the other contacts of that instant' "$work/dominoes.html" || {
+  echo "browser.sh: FAIL: dominoes' panel does not say it shows the run's numbers" >&2
+  exit 1
+}
+shown=$(grep -o 'class="tryit-impulse" data-value="[^"]*"' "$work/dominoes.html" | sed 's/.*data-value="\[\([^,]*\),.*/\1/' || true)
+expected=$("$collide" step dominoes --events --json | grep -m1 '"a":"domino 1","b":"domino 2"' | sed 's/.*"impulse":\[\([^,]*\),.*/\1/')
+echo "browser.sh: dominoes' panel shows P_x = $shown N s; the run (collide step) gives $expected N s"
+[[ -n $shown ]] || { echo "browser.sh: FAIL: dominoes shows no impulse" >&2; exit 1; }
+awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (b < 0 ? -b : b); exit !(d <= 1e-9 * m) }' || {
+  echo "browser.sh: FAIL: they differ" >&2
+  exit 1
+}
 # A run beyond the module's budget: an Error with the estimate, within seconds, not a frozen page.
 cp "$COLLIDE_ENGINE_JS" "$work/collide-engine.js"
 cat >"$work/refused.html" <<'HTML'
