@@ -516,6 +516,9 @@ std::string teacher_page(const SitePage& b) {
         o << "<section class=\"explain\">\n<h2>The explanation (as the students read it)</h2>\n"
           << paragraphs(L.explanation) << "</section>\n";
     o << "<section class=\"worked\">\n<h2>The worked example</h2>\n" << shown.worked(true) << "</section>\n";
+    // The lesson's plots, with their numbers (the student's page shows them under "Watch").
+    if (!r.plots.empty())
+        o << "<section class=\"plots\">\n<h2>The lesson's plots</h2>\n" << plots_html(r.plots) << "</section>\n";
     o << "<nav class=\"pager\"><a href=\"index.html\">The student's page</a><a href=\"../index.html\">All "
          "lessons</a><span></span></nav>\n"
       << kPageTail;

@@ -481,14 +481,17 @@ TEST(Material, EveryLessonHasATeachersPageWithEveryAnswer) {
             for (const std::string& r : q.reasons) EXPECT_NE(teacher.find(html::math(r)), std::string::npos);
         }
         // Every worked line of the student's folded worked example, unfolded: no <details>
-        // but the run's later collisions (one line each when printed).
+        // but the run's later collisions (one line each when printed) and the numbers behind a
+        // plot (its table, folded under it as on the student's page).
         std::size_t lines = 0;
         for (std::sregex_iterator m(student.begin(), student.end(), math_line), end; m != end; ++m, ++lines)
             EXPECT_NE(teacher.find((*m)[0].str()), std::string::npos) << (*m)[0];
         EXPECT_GT(lines, 5u);
         EXPECT_EQ(teacher.find("<details class=\"worked\""), std::string::npos);
         for (std::size_t at = 0; (at = teacher.find("<details", at)) != std::string::npos; ++at)
-            EXPECT_EQ(teacher.compare(at, 23, "<details class=\"later\">"), 0) << teacher.substr(at, 40);
+            EXPECT_TRUE(teacher.compare(at, 23, "<details class=\"later\">") == 0 ||
+                        teacher.compare(at, 27, "<details class=\"plot-data\">") == 0)
+                << teacher.substr(at, 40);
         // The teacher's notes (commands, files) are on the teacher's page, not the student's.
         if (!L.teacher_notes.empty()) {
             EXPECT_NE(teacher.find(html::paragraphs(L.teacher_notes)), std::string::npos);
@@ -624,6 +627,8 @@ TEST(Material, EachDeclaredPlotIsOnItsPageWithAltTextAndTable) {
         EXPECT_NE(svg.find("<svg"), std::string::npos);
         const std::size_t img = page.find("<img src=\"" + file + "\" alt=\"");
         ASSERT_NE(img, std::string::npos);
+        // The teacher's page has it too.
+        EXPECT_NE(read(d / "teacher.html").find("<img src=\"" + file + "\" alt=\""), std::string::npos);
         // Under "Watch", before the explanation.
         EXPECT_GT(img, page.find("<h2>Watch</h2>"));
         EXPECT_LT(img, page.find("<section class=\"explain\">"));
