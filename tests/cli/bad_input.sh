@@ -75,6 +75,10 @@ head -c $((10 * 1024 * 1024)) /dev/zero | tr '\0' '#' >"$tmp/ten-megabytes.toml"
 check "$tmp/ten-megabytes.toml" "too large" solve "$tmp/ten-megabytes.toml"
 check "$tmp/ten-megabytes.toml" "too large" step "$tmp/ten-megabytes.toml"
 check "$tmp/ten-megabytes.toml" "too large" render "$tmp/ten-megabytes.toml" -o "$tmp/render" --quiet
+# A scene beyond the work budget that --max-work sets (issue 34): refused before it runs.
+scenes=$dir/../../lessons/scenes
+check "$scenes/billiards-2d.toml" "more than its budget of 10" compare "$scenes/billiards-2d.toml" --max-work 10
+check "$scenes/billiards-2d.toml" "more than its budget of 10" step "$scenes/billiards-2d.toml" --max-work 10
 check "$tmp/missing.toml" "cannot open" solve "$tmp/missing.toml"
 check "$tmp/missing.toml" "no such file" step "$tmp/missing.toml"
 check "$tmp/missing.toml" "no such file" render "$tmp/missing.toml" -o "$tmp/render" --quiet
