@@ -15,6 +15,7 @@
 # Screenshots of the panels stay in WORK/ to be looked at.
 # Usage: browser.sh COLLIDE CHROMIUM WORK
 set -euo pipefail
+trap 'echo "browser.sh: line $LINENO: a command failed (exit $?)" >&2' ERR
 collide=$1
 chromium=$2
 work=$3
@@ -29,11 +30,11 @@ page="file://$work/site/catch-up/index.html"
 
 # As root (CI's containers) Chromium needs --no-sandbox. The virtual time budget lets the page
 # load the module and answer before the DOM is dumped or the picture taken.
-# Each run with a profile of its own (a second Chromium on the default profile may hand its page
-# to the first and return at once).
+# Each run with a profile of its own (a Chromium still ending may hold a profile's lock, and a
+# second one on a profile in use hands its page to the first and returns at once).
 browse() {
   "$chromium" --headless --no-sandbox --disable-gpu --hide-scrollbars --virtual-time-budget=15000 \
-    --user-data-dir="$work/profile" --window-size=1100,1400 "$@" 2>"$work/chromium.log"
+    --user-data-dir="$(mktemp -d "$work/profile.XXXXXX")" --window-size=1100,1400 "$@" 2>"$work/chromium.log"
 }
 # The page's DOM once the module has answered. The module compiles on a thread of its own, in
 # real time, while the virtual time budget runs on: on a loaded machine the budget can end
@@ -103,7 +104,10 @@ grep -q 'as the run resolved it with the other contacts of that instant' "$work/
   exit 1
 }
 shown=$(grep -o 'class="tryit-impulse" data-value="[^"]*"' "$work/dominoes.html" | sed 's/.*data-value="\[\([^,]*\),.*/\1/' || true)
-expected=$("$collide" step dominoes --events --json | grep -m1 '"a":"domino 1","b":"domino 2"' | sed 's/.*"impulse":\[\([^,]*\),.*/\1/')
+# (into a file first: the events are more than a pipe holds, and grep -m1 would leave the
+# command writing into a closed pipe)
+"$collide" step dominoes --events --json >"$work/dominoes-events.jsonl"
+expected=$(grep -m1 '"a":"domino 1","b":"domino 2"' "$work/dominoes-events.jsonl" | sed 's/.*"impulse":\[\([^,]*\),.*/\1/')
 echo "browser.sh: dominoes' panel shows P_x = $shown N s; the run (collide step) gives $expected N s"
 [[ -n $shown ]] || { echo "browser.sh: FAIL: dominoes shows no impulse" >&2; exit 1; }
 awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (b < 0 ? -b : b); exit !(d <= 1e-9 * m) }' || {
@@ -138,7 +142,7 @@ CollideEngine().then(m => {
 HTML
 t0=$(date +%s)
 timeout 120 "$chromium" --headless --no-sandbox --disable-gpu --virtual-time-budget=15000 \
-  --user-data-dir="$work/profile" --dump-dom "file://$work/refused.html" >"$work/refused.dom" 2>"$work/chromium.log" || true
+  --user-data-dir="$(mktemp -d "$work/profile.XXXXXX")" --dump-dom "file://$work/refused.html" >"$work/refused.dom" 2>"$work/chromium.log" || true
 said=$(grep -o '<p id="out">[^<]*' "$work/refused.dom" | sed 's/.*>//' || true)
 echo "browser.sh: a run beyond the module's budget: $said ($(($(date +%s) - t0)) s with Chromium's start)"
 [[ $said == "refused: the scene would take about 2"*"e+07 units of work"*"more than its budget of 5e+06"* ]] || {
