@@ -281,25 +281,21 @@ void write_data_files(const RenderRequest& rq, const Scene& scene, const SceneRu
 void write_worked_example(const std::string& dir, const WorkedExample& worked, const CollisionInstant* instant) {
     const notation::StudentNumbers student;  // a lesson's: 4 figures, no floating-point noise
     std::ostringstream md;
-    const Solution run = instant ? as_resolved(worked.problem, worked.solution, *instant) : worked.solution;
-    const bool differs = resolved_differs(worked.problem, worked.solution, run);
     write_markdown(worked.problem, worked.solution, md);
-    if (differs) {  // under the title
-        std::string text = md.str();
-        const std::size_t title_end = text.find('\n') + 1;
-        text.insert(title_end, "\n**A simplified calculation: " + worked.problem.a.name + " and " +
-                                   worked.problem.b.name +
-                                   " alone.** In the run other contacts act at the same instant, and the world "
-                                   "solves them together; the numbers of the run follow the calculation.\n");
-        md.str(text);
-        md.seekp(0, std::ios_base::end);
-    }
-    if (differs) {
-        md << "\n## The two alone and the run\n\n| | the two alone (above) | the run |\n|---|---|---|\n";
+    std::string text = md.str();
+    const Solution run = instant ? as_resolved(worked.problem, worked.solution, *instant) : worked.solution;
+    if (resolved_differs(worked.problem, worked.solution, run)) {
+        // The label under the title, the table at the end.
+        text.insert(text.find('\n') + 1, "\n**A simplified calculation: " + worked.problem.a.name + " and " +
+                                             worked.problem.b.name +
+                                             " alone.** In the run other contacts act at the same instant, and the "
+                                             "world solves them together; the numbers of the run follow the "
+                                             "calculation.\n");
+        text += "\n## The two alone and the run\n\n| | the two alone (above) | the run |\n|---|---|---|\n";
         for (const ResultBeside& r : results_beside(worked.problem, worked.solution, run))
-            md << "| " << r.what << " (" << r.unit << ") | " << r.alone << " | " << r.run << " |\n";
+            text += "| " + r.what + " (" + r.unit + ") | " + r.alone + " | " + r.run + " |\n";
     }
-    render::write_file_atomic(dir + "/worked-example.md", md.str());
+    render::write_file_atomic(dir + "/worked-example.md", text);
 }
 
 // frames/frame_00000.png ...: rendering here, PNG encoding beside it. Returns the seconds it
