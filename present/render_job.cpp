@@ -286,11 +286,8 @@ void write_worked_example(const std::string& dir, const WorkedExample& worked, c
     const Solution run = instant ? as_resolved(worked.problem, worked.solution, *instant) : worked.solution;
     if (resolved_differs(worked.problem, worked.solution, run)) {
         // The label under the title, the table at the end.
-        text.insert(text.find('\n') + 1, "\n**A simplified calculation: " + worked.problem.a.name + " and " +
-                                             worked.problem.b.name +
-                                             " alone.** In the run other contacts act at the same instant, and the "
-                                             "world solves them together; the numbers of the run follow the "
-                                             "calculation.\n");
+        const SimplifiedLabel label = simplified_label(worked.problem);
+        text.insert(text.find('\n') + 1, "\n**" + label.lead + "** " + label.rest + "\n");
         text += "\n## The two alone and the run\n\n| | the two alone (above) | the run |\n|---|---|---|\n";
         for (const ResultBeside& r : results_beside(worked.problem, worked.solution, run))
             text += "| " + r.what + " (" + r.unit + ") | " + r.alone + " | " + r.run + " |\n";

@@ -235,4 +235,10 @@ std::vector<ResultBeside> results_beside(const SolveProblem& P, const Solution& 
     return out;
 }
 
+SimplifiedLabel simplified_label(const SolveProblem& P) {
+    return {"A simplified calculation: " + P.a.name + " and " + P.b.name + " alone.",
+            "In the run other contacts act at the same instant, and the world solves them together; the numbers of "
+            "the run follow the calculation."};
+}
+
 }  // namespace collide

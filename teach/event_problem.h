@@ -91,5 +91,11 @@ struct ResultBeside {
     std::string what, unit, alone, run;
 };
 std::vector<ResultBeside> results_beside(const SolveProblem& problem, const Solution& alone, const Solution& run);
+// The words that label such a worked example, in two parts (the page sets the first in bold):
+// "A simplified calculation: a and b alone." and what it means.
+struct SimplifiedLabel {
+    std::string lead, rest;
+};
+SimplifiedLabel simplified_label(const SolveProblem& problem);
 
 }  // namespace collide

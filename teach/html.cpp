@@ -375,9 +375,8 @@ std::string worked_html_beside_run(const SolveProblem& P, const Solution& alone,
                                    const std::string& world_note) {
     if (!resolved_differs(P, alone, run)) return worked_html(P, alone, world_note);
     std::ostringstream o;
-    o << "<p class=\"simplified\"><strong>A simplified calculation: " << escape(P.a.name) << " and " << escape(P.b.name)
-      << " alone.</strong> In the run other contacts act at the same instant, and the world solves them "
-         "together; the numbers of the run follow the calculation.</p>\n"
+    const SimplifiedLabel label = simplified_label(P);
+    o << "<p class=\"simplified\"><strong>" << escape(label.lead) << "</strong> " << escape(label.rest) << "</p>\n"
       << worked_html(P, alone, "");
     o << "<table class=\"beside\">\n<tr><th></th><th>the two alone (above)</th><th>the run</th></tr>\n";
     for (const ResultBeside& r : results_beside(P, alone, run))
