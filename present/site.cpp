@@ -25,7 +25,10 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         request.scenario = L.file;
         request.out_dir = (dir / L.id).string();
         std::ostringstream notes;  // "no collision" notes: not an error for a lesson page
-        SitePage b{L, !rq.engine_js.empty(), render_scenario(request, notes, stop), false, {}, 0};
+        SitePage b{L, !rq.engine_js.empty(), render_scenario(request, notes, stop), false, {}, 0, std::nullopt};
+        // "Check yourself" asks the lesson's numeric questions with other numbers than the run
+        // its figures show (teach/check_variant.h).
+        if (!L.vary.empty()) b.check = check_variant(L, b.report.answers);
         // The thumbnail: the figure's collision panel (collide render writes it), else the
         // first frame.
         const fs::path lesson_dir = dir / L.id;

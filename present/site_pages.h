@@ -3,11 +3,13 @@
 // panel's markup), from what rendering each lesson made (present/render_job.h).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "present/render_job.h"
 #include "scenario/lesson.h"
+#include "teach/check_variant.h"
 
 namespace collide {
 
@@ -19,6 +21,8 @@ struct SitePage {
     bool thumb = false;
     std::vector<int> figure_widths;  // pixels, of report.figures' PNG files
     int variants_width = 0;          // of variants.png
+    // "Check yourself"'s other numbers (teach/check_variant.h); none for a lesson without [[vary]].
+    std::optional<CheckVariant> check;
 };
 
 // ID/index.html, the student's page: goals, the set-up, predictions, the figures, animation and

@@ -121,9 +121,17 @@ std::string options_html(const LessonQuestion& q) {
     return o.str();
 }
 
+namespace {
+// The full stop a sentence that ends with `text` still needs ("" when it ends with one).
+std::string full_stop(const std::string& text) {
+    const std::size_t end = text.find_last_not_of(" \n");
+    return end != std::string::npos && std::string(".!?").find(text[end]) != std::string::npos ? "" : ".";
+}
+}  // namespace
+
 // A question's answer: the engine's number, the right option with every option's reason, or
 // the model answer; then why.
-std::string answer_html(const LessonQuestion& q, const LessonAnswer* a) {
+std::string answer_html(const LessonQuestion& q, const LessonAnswer* a, const LessonAnswer* own) {
     std::ostringstream o;
     if (q.has_choices()) {
         o << "<p><span class=\"chosen\"></span><span class=\"answer\">Option "
@@ -137,6 +145,12 @@ std::string answer_html(const LessonQuestion& q, const LessonAnswer* a) {
         if (!q.explain.empty()) o << "<p>" << math(q.explain) << "</p>\n";
     } else if (q.kind == QuestionKind::explain) {
         o << paragraphs(q.answer);
+    } else if (own) {
+        // Asked with the check values: the lesson's working is for its own numbers.
+        o << "<p><span class=\"chosen\"></span><span class=\"answer\">" << math(a ? a->text : "?")
+          << "</span> with the numbers above.</p>\n<p class=\"own-working\">With the lesson's own numbers (the run "
+             "you watched) it is "
+          << math(own->text) << (q.explain.empty() ? "" : ": " + math(q.explain)) << full_stop(q.explain) << "</p>\n";
     } else {
         o << "<p><span class=\"chosen\"></span><span class=\"answer\">" << math(a ? a->text : "?") << "</span>";
         if (!q.explain.empty()) o << "<br>" << math(q.explain);
@@ -232,18 +246,21 @@ std::string check_html(const Lesson& L, const std::vector<LessonAnswer>& answers
 // Questions the student answers on the page: each with its place to commit an answer, the
 // answer folded below it, and printed a space to write in.
 std::string questions_html(const Lesson& L, const std::vector<LessonAnswer>& answers,
-                           const std::vector<std::size_t>& asked) {
+                           const std::vector<std::size_t>& asked, const CheckVariant* check) {
     std::ostringstream o;
     o << "<ol class=\"questions\">\n";
     for (std::size_t i : asked) {
         const LessonQuestion& q = L.questions[i];
-        const LessonAnswer* a = i < answers.size() ? &answers[i] : nullptr;
-        o << "<li class=\"" << question_kind_name(q.kind) << "\" data-q=\"" << i + 1 << "\"";
+        const LessonAnswer* own = i < answers.size() ? &answers[i] : nullptr;
+        const bool checked = check && check->answer[i];
+        const LessonAnswer* a = checked ? &*check->answer[i] : own;
+        o << "<li class=\"" << question_kind_name(q.kind) << (checked ? " new-numbers" : "") << "\" data-q=\"" << i + 1
+          << "\"";
         if (q.has_choices()) o << " data-correct=\"" << option_number(static_cast<std::size_t>(q.correct - 1)) << "\"";
         o << marking_attributes(q, a, L.scene.dimension) << ">" << ask_html(q)
           << (q.has_choices() ? choices_html(q, i) : "") << commit_html(q, a, false, L.scene.dimension)
           << "<details class=\"answer\"><summary>Answer</summary>\n"
-          << answer_html(q, a) << "</details>\n"
+          << answer_html(q, a, checked ? own : nullptr) << "</details>\n"
           << write_space(q) << "</li>\n";
     }
     o << "</ol>\n";

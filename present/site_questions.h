@@ -8,6 +8,7 @@
 
 #include "scenario/lesson.h"
 #include "teach/answers.h"
+#include "teach/check_variant.h"
 
 namespace collide::site {
 
@@ -25,7 +26,9 @@ std::string choices_html(const LessonQuestion& q, std::size_t qi);
 // The options, numbered, as printed.
 std::string options_html(const LessonQuestion& q);
 // The answer (and each option's reason), as its folded box shows it; `a` null: none computed.
-std::string answer_html(const LessonQuestion& q, const LessonAnswer* a);
+// `own`: `a` is the answer with "Check yourself"'s other numbers (teach/check_variant.h), and
+// `own` the lesson's, whose working the question's explanation gives.
+std::string answer_html(const LessonQuestion& q, const LessonAnswer* a, const LessonAnswer* own = nullptr);
 // The question as asked, with its tolerance.
 std::string ask_html(const LessonQuestion& q);
 // Room to write the answer, in print.
@@ -41,8 +44,9 @@ std::string predict_html(const Lesson& L, const std::vector<LessonAnswer>& answe
 // "Check your predictions": after the animation, each prediction's answer, folded.
 std::string check_html(const Lesson& L, const std::vector<LessonAnswer>& answers,
                        const std::vector<std::size_t>& predict);
-// Questions the student answers on the page, each with its answer folded below it.
+// Questions the student answers on the page, each with its answer folded below it. `check`:
+// the numeric ones are asked with its values (their answers from it, the lesson's own beside).
 std::string questions_html(const Lesson& L, const std::vector<LessonAnswer>& answers,
-                           const std::vector<std::size_t>& asked);
+                           const std::vector<std::size_t>& asked, const CheckVariant* check = nullptr);
 
 }  // namespace collide::site

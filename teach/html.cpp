@@ -419,6 +419,8 @@ std::string vary_symbol(const LessonVary& v) {
     return symbol;
 }
 
+}  // namespace
+
 // A slider's label in our notation: "m of A (kg)", "v_x of ball (m/s)", "e (restitution)",
 // "x of domino 2 (m), and of domino 3, …, domino 15 in proportion".
 std::string vary_label(const LessonVary& v) {
@@ -449,8 +451,6 @@ std::string number_attr(double x) {
     o << x;
     return o.str();
 }
-
-}  // namespace
 
 std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     const int d = L.scene.dimension;

@@ -10,6 +10,7 @@ namespace collide {
 struct SolveProblem;
 struct Solution;
 struct Lesson;
+struct LessonVary;
 }  // namespace collide
 
 namespace collide::html {
@@ -79,6 +80,12 @@ std::string svg_xy_plot(const std::string& title, const std::string& x_label, co
 // The slider's numbers are written as the shortest decimals that read back exactly, so that a
 // browser's decimal step reaches max.
 std::string try_it_html(const Lesson& lesson, double fps, const std::string& root);
+// A [[vary]] input as a slider labels it, in our notation: "m of A (kg)", "v_x of ball (m/s)",
+// "e (restitution)", "x of domino 2 (m), and of domino 3, …, domino 15 in proportion".
+std::string vary_label(const LessonVary& v);
+// A number as an HTML attribute or a query string's value: the shortest decimal that reads
+// back as the same double.
+std::string number_attr(double x);
 // try-it-lesson.js: the lesson's file as text (the engine reads it as `collide` does) and the
 // figures' colours (`palette`, a JSON object: render/style.h), as `window.collideTryIt`. A
 // script rather than text in the page: a page opened from file:// cannot fetch a file.

@@ -78,6 +78,8 @@ TEST(Material, EveryLessonRendersAndEveryLinkAndImageResolvesOffline) {
         for (std::sregex_iterator m(html.begin(), html.end(), attr), end; m != end; ++m) {
             std::string target = (*m)[1];
             target = target.substr(0, target.find('#'));  // a place in a page: the page
+            target = target.substr(0, target.find('?'));  // the page with its inputs set: the page
+            EXPECT_EQ(target.find(' '), std::string::npos) << e.path() << " -> " << target;
             ++links;
             EXPECT_TRUE(fs::exists(e.path().parent_path() / target)) << e.path() << " -> " << target;
         }
@@ -331,46 +333,98 @@ std::string lower(std::string s) {
     return s;
 }
 
-// The numbers of a text with at least 3 significant digits ("0.501", "4.077", "1.234e-3"): a
-// number written to that precision names a value; "1.5" or "2" may be any given.
-std::vector<double> precise_numbers(const std::string& text) {
-    static const std::regex number(R"re((\d+\.\d+|\d+)(e[-+]?\d+)?)re");
-    std::vector<double> out;
+// Everything a student can read in a piece of a page without committing an answer: its text
+// with every fold opened (the worked example, the plots' tables, the predictions' checks) and
+// the images' alternative texts, but not the answers of questions (each opens once its
+// question is answered) or scripts.
+std::string readable_text(const std::string& html) {
+    static const std::regex answers(R"re(<details class="answer">[\s\S]*?</details>)re");
+    static const std::regex alt(R"re(<img [^>]*alt="([^"]*)")re");
+    std::string s = std::regex_replace(html, answers, " ");
+    s = std::regex_replace(s, alt, " $1 <img ");
+    for (const std::string tag : {"<details", "</details>"})
+        for (std::size_t at; (at = s.find(tag)) != std::string::npos;)
+            s.replace(at, tag.size(), tag[1] == '/' ? "</div>" : "<div");
+    return visible_text(s);
+}
+
+// A number of a text written with at least 3 significant digits ("0.501", "4.077",
+// "1.234e-3"), with how many it has (a number written to that precision names a value; "1.5"
+// or "2" may be any given) and the unit written right after it ("J" in "1.69 J"; "" if none).
+struct Printed {
+    double value = 0;
+    int digits = 0;
+    std::string unit;
+};
+std::vector<Printed> precise_numbers(const std::string& text) {
+    static const std::regex number(
+        R"re((\d+\.\d+|\d+)(e[-+]?\d+)?( (kg m²/s|kg m/s|N s|rad/s|m/s²|m/s|J|kg|s|m)(?![A-Za-z/²]))?)re");
+    std::vector<Printed> out;
     for (std::sregex_iterator k(text.begin(), text.end(), number), end; k != end; ++k) {
         std::string digits;
         for (char ch : (*k)[1].str())
             if (ch != '.' && !(digits.empty() && ch == '0')) digits += ch;
         while (!digits.empty() && digits.back() == '0' && (*k)[1].str().find('.') == std::string::npos)
             digits.pop_back();
-        if (digits.size() >= 3) out.push_back(std::stod((*k)[0].str()));
+        if (digits.size() >= 3)
+            out.push_back({std::stod((*k)[1].str() + (*k)[2].str()), static_cast<int>(digits.size()), (*k)[4].str()});
     }
     return out;
 }
 
-// Issue 33, "Ask before telling": on every lesson's student page, nothing a student sees above a
-// prediction or a numeric question gives its answer, as the page writes it (the right option's
-// text, or the answer's text; and no number to 3 or more digits within 0.5 % of one of the
-// answer's). Answers, the predictions' checks and the worked example are folded until the
-// student commits an answer. An answer that is one of the givens (A's speed before is B's
-// after) may appear in the set-up, and only there: each such case is listed, and must still be
-// one.
+// Whether `x`, written with `digits` significant digits, is `a` as written to that precision
+// (the same number a student would copy).
+bool same_as_written(double a, double x, int digits) {
+    if (a == 0) return x == 0;
+    const double scale = std::pow(10.0, digits - 1 - static_cast<int>(std::floor(std::log10(std::abs(a)))));
+    return std::abs(std::round(std::abs(a) * scale) - std::abs(x) * scale) < 1e-6;
+}
+
+// Issue 33, "Ask before telling": on every lesson's student page, nothing a student can read
+// above a prediction or a numeric question gives its answer, as the page writes it (the right
+// option's text, or the answer's text; and no number to 3 or more digits within 0.5 % of one of
+// the answer's): not the text, not a fold opened by hand (the worked example, a plot's table),
+// not an image's alternative text. "Check yourself" asks its numbers with other values than
+// the run the figures show (teach/check_variant.h), so the figures do not answer them. Two
+// kinds of answer may appear above, each listed and checked to still be one: a given of the
+// set-up (A's speed before is B's after), only there; and an answer that the other values do
+// not change (the first block of a cradle stops whatever its mass), where the page's answer
+// equals the lesson's own run's (computed here). A number with another unit next to it is
+// another quantity; one that has the answer's digits but no unit beside it is listed.
 TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
     render::test::TempDir dir;
     const fs::path site = every_lesson_site(dir);
     const std::vector<Lesson> all = load_lessons(std::string(COLLIDE_SOURCE_DIR) + "/lessons");
     // {lesson, question number from 1}: answers equal to a given of the set-up.
     std::set<std::pair<std::string, int>> givens = {
-        {"catch-up", 3},        // B leaves at 1.5 m/s, A's speed before
-        {"catch-up", 7},        // with the masses swapped A leaves at 0.3 m/s, B's speed before
-        {"reversed", 3},        // B leaves at 0.3 m/s, A's speed before
-        {"restitution", 4},     // e = 1: the points part at the 2 m/s they met at
-        {"newtons-cradle", 5},  // the last block leaves at the first one's 2 m/s
+        {"catch-up", 7},     // with the masses swapped A leaves at 0.3 m/s, B's speed before
+        {"restitution", 4},  // e = 1: the points part at the 2 m/s they met at
     };
-    std::set<std::pair<std::string, int>> used;
+    // {lesson, question number from 1}: answers that "Check yourself"'s other values leave as
+    // in the lesson's own run, which the figures show.
+    std::set<std::pair<std::string, int>> unchanged = {
+        {"restitution", 1},
+        {"restitution", 2},
+        {"restitution", 3},  // -e u_n: the masses do not enter
+        {"superball", 5},    // e = 1, rough: no energy lost
+        {"box2d", 4},        // e = 1: no energy lost
+        {"newtons-cradle", 2},
+        {"newtons-cradle", 3},
+        {"newtons-cradle", 4},        // 2 collisions; the first two stop
+        {"bouncing-ball", 4},         // at rest on the floor at the end
+        {"centre-of-percussion", 2},  // hit at the sweet spot, the handle end stays still
+    };
+    // {lesson, question number from 1}: the same digits as another quantity of the watched run
+    // that the page does not write with a unit next to it.
+    std::set<std::pair<std::string, int>> coincidences = {
+        {"penalty", 6},  // A at 1.688 m/s with the other numbers; the run's kinetic energy after, 1.688 J
+    };
+    std::set<std::pair<std::string, int>> used, used_unchanged, used_coincidences;
     int checked = 0;
     for (const Lesson& L : all) {
         SCOPED_TRACE(L.id);
         const std::string page = read(site / L.id / "index.html");
+        const std::vector<LessonAnswer> own = answer_questions(L);
         const std::size_t setup_at = page.find("<section class=\"setup\">"),
                           setup_end = page.find("</section>", setup_at);
         ASSERT_NE(setup_at, std::string::npos);
@@ -402,13 +456,19 @@ TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
             const bool count = answer.find_first_not_of("0123456789") == std::string::npos;
             const std::regex counted(count ? "(^|[^0-9.])" + answer + " (collision|landing|bounce|contact|time)" : "x");
             const auto spoils = [&](const std::string& html) {
-                const std::string seen = visible_text(html);
+                const std::string seen = readable_text(html);
                 if (count) return std::regex_search(seen, counted) ? "\"" + answer + " ...\"" : std::string();
                 if (lower(seen).find(lower(answer)) != std::string::npos) return "\"" + answer + "\"";
                 if (q.has_choices()) return std::string();
-                for (double a : precise_numbers(answer))
-                    for (double x : precise_numbers(seen))
-                        if (std::abs(x - a) <= 0.005 * a) return std::to_string(x) + " (the answer: " + answer + ")";
+                // A number with another unit is another quantity ("1.69 J" for "1.688 m/s").
+                const std::string unit = answer.substr(answer.find_last_of("0123456789)") + 1);
+                for (const Printed& a : precise_numbers(answer))
+                    for (const Printed& x : precise_numbers(seen)) {
+                        if (!x.unit.empty() && " " + x.unit != unit) continue;
+                        if (x.digits <= a.digits ? same_as_written(a.value, x.value, x.digits)
+                                                 : same_as_written(x.value, a.value, a.digits))
+                            return std::to_string(x.value) + " (the answer: " + answer + ")";
+                    }
                 return std::string();
             };
             const std::string above = page.substr(0, asked);
@@ -416,17 +476,41 @@ TEST(Material, NothingAboveAQuestionGivesItsAnswer) {
             if (givens.count({L.id, number})) {
                 used.insert({L.id, number});
                 EXPECT_FALSE(found.empty()) << "listed as a given but not found above: remove it from the list";
-                // Only the set-up has it.
-                std::string without = above;
-                without.erase(setup_at, setup_end - setup_at);
-                EXPECT_EQ(spoils(without), "") << "outside the set-up";
+                // The set-up has it (the figures' "before" and the worked example's givens repeat it).
                 EXPECT_NE(spoils(page.substr(setup_at, setup_end - setup_at)), "");
+            } else if (coincidences.count({L.id, number})) {
+                used_coincidences.insert({L.id, number});
+                EXPECT_FALSE(found.empty()) << "listed as a coincidence but not found above: remove it from the list";
+            } else if (unchanged.count({L.id, number})) {
+                used_unchanged.insert({L.id, number});
+                EXPECT_FALSE(found.empty()) << "listed as unchanged but not found above: remove it from the list";
+                // The page's answer (what it marks) is the lesson's own run's.
+                const std::size_t tag_end = page.find('>', asked);
+                const std::string tag = page.substr(asked, tag_end - asked);
+                std::smatch m;
+                ASSERT_TRUE(std::regex_search(tag, m, std::regex(R"re(data-value="\[([^\]]*)\]")re"))) << tag;
+                std::vector<double> marked;
+                std::istringstream values(m[1].str());
+                for (std::string x; std::getline(values, x, ',');) marked.push_back(std::stod(x));
+                const LessonAnswer& a = own[i];
+                const std::vector<double> want =
+                    a.is_vector ? std::vector<double>(a.vector.data(), a.vector.data() + marked.size())
+                                : std::vector<double>{a.value};
+                ASSERT_EQ(marked.size(), want.size());
+                double d2 = 0, n2 = 0;
+                for (std::size_t k = 0; k < want.size(); ++k) {
+                    d2 += (marked[k] - want[k]) * (marked[k] - want[k]);
+                    n2 += want[k] * want[k];
+                }
+                EXPECT_LE(std::sqrt(d2), q.tolerance * std::sqrt(n2) + 1e-9) << "listed as unchanged but it changed";
             } else {
                 EXPECT_EQ(found, "") << "the page shows the answer above the question";
             }
             ++checked;
         }
     }
+    EXPECT_EQ(used_unchanged, unchanged);
+    EXPECT_EQ(used_coincidences, coincidences);
     EXPECT_EQ(used, givens);
     EXPECT_GT(checked, 22 * 4);
 }
