@@ -378,7 +378,8 @@ std::string new_numbers_html(const Lesson& L, const CheckVariant& c, bool try_it
     else
         o << "<p><strong>Now with other numbers.</strong> The numeric questions below ask about the same collision "
              "with these values (the figures above show the lesson's own); everything else is as in the set-up. "
-             "Work each answer out the way the worked example does, then check it.</p>\n";
+             "Work each answer out the way the worked example does (where only a run can tell, measure it in the "
+             "Try-it panel with these numbers), then check it.</p>\n";
     if (rows.str().empty()) {
         o << "<p class=\"warning\">No draw of the lesson's ranges gave other values: the questions are about the "
              "run you watched.</p>\n";
@@ -495,7 +496,8 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
         o << questions_html(L, r.answers, check, b.check ? &*b.check : nullptr) << "</section>\n";
     }
     if (!what_if.empty() || b.try_it || r.penalty) {
-        o << "<section class=\"what-if\">\n<h2>What if</h2>\n";
+        // Without what-if questions it holds only the panels, which do not print: nor does it.
+        o << "<section class=\"what-if" << (what_if.empty() ? " noprint" : "") << "\">\n<h2>What if</h2>\n";
         if (!what_if.empty()) o << questions_html(L, r.answers, what_if);
         if (b.try_it) {
             const double fps = r.t.size() > 1 && r.t[1] > r.t[0] ? 1.0 / (r.t[1] - r.t[0]) : 30.0;
