@@ -30,7 +30,8 @@ TEST(CheckVariant, CatchUpsAnswersAreTheClosedFormWithTheOtherValues) {
     const double ma = value("A.mass"), va = value("A.v"), mb = value("B.mass"), vb = value("B.v"),
                  e = value("scene.restitution");
     const double J = (1 + e) * ma * mb * (va - vb) / (ma + mb);
-    const double want[] = {J, va - J / ma, vb + J / mb, (1 - e * e) * ma * mb * (va - vb) * (va - vb) / (2 * (ma + mb))};
+    const double want[] = {J, va - J / ma, vb + J / mb,
+                           (1 - e * e) * ma * mb * (va - vb) * (va - vb) / (2 * (ma + mb))};
     for (std::size_t i = 0; i < 4; ++i) {
         SCOPED_TRACE(L.questions[i].text);
         ASSERT_TRUE(c.answer[i].has_value());
@@ -57,7 +58,7 @@ TEST(CheckVariant, MarkedRightIsThePagesRule) {
     got.value = 2.041;
     EXPECT_FALSE(marked_right(got, want, 0.02));
     want.is_vector = got.is_vector = true;
-    want.vector = Vec3(3, 4, 0);  // length 5: 2 % is 0.1
+    want.vector = Vec3(3, 4, 0);       // length 5: 2 % is 0.1
     got.vector = Vec3(3.06, 4.08, 0);  // 0.1 away
     EXPECT_TRUE(marked_right(got, want, 0.02));
     got.vector = Vec3(3.07, 4.08, 0);
