@@ -362,9 +362,11 @@ Annotations DiagramView::annotate(const FontSet& fonts, const FrameState& frame,
         }
         return false;
     };
-    // Arrows too: a label goes over one only when no free place is near.
+    // Arrows too (the 1D "+v" arrows included): a label goes over one only when no free place is near.
     for (const Annotation& a : items) {
-        if (a.kind != Mark::velocity && a.kind != Mark::impulse && a.kind != Mark::point_velocity) continue;
+        if (a.kind != Mark::velocity && a.kind != Mark::impulse && a.kind != Mark::point_velocity &&
+            a.kind != Mark::direction)
+            continue;
         const ImVec2 p = to_screen(a.from), q = to_screen(a.to);
         if (norm(q - p) < 1.0f) continue;
         const ImVec2 d = unit(q - p), side = ImVec2(-d.y, d.x) * style_.px(4.0f);
