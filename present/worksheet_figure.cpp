@@ -16,8 +16,8 @@ namespace {
 
 // Drawing units: px_per_mm of them to a printed millimetre; the text sizes are in them.
 constexpr double kPxPerMm = 3.5;
-constexpr double kFont = 12.0;   // labels (8.6 pt printed); subscripts 9 (html::svg_math)
-constexpr double kMargin = 30.0;  // round the scene: room for labels and the normal's arrow
+constexpr double kFont = 12.0;      // labels (8.6 pt printed); subscripts 9 (html::svg_math)
+constexpr double kMargin = 30.0;    // round the scene: room for labels and the normal's arrow
 constexpr double kNormalPx = 42.0;  // the unit normal's arrow
 constexpr double kSpinPx = 13.0;    // a spin arc's radius
 
@@ -168,7 +168,7 @@ double nice_length(double extent) {
 
 // "A", "B": a body's name as a subscript when it is short; else none ("v", "ω").
 std::string with_name(const std::string& symbol, const std::string& name) {
-    if (name.size() <= 2 && name.find_first_of(" _{}") == std::string::npos) return symbol + "_{" + name + "}";
+    if (name.size() <= 2 && name.find_first_of(" _{}") == std::string::npos) return symbol + "_" + name;
     return symbol;
 }
 
@@ -225,7 +225,7 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
         if (sc.bodies[h.w->b].shape2.kind != Shape2::Kind::half_plane) grow_outline(h.b);
         grow(flat(h.w->problem.point));
     }
-    // Velocities: one scale, the fastest a third of the scene's larger side.
+    // Velocities: one scale, the fastest a fifth of the scene's larger side (short of the body it will hit).
     double vmax = 0, wmax = 0;
     for (const SceneBody& b : sc.bodies)
         if (!b.is_static()) {
@@ -233,7 +233,7 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
             wmax = std::max(wmax, std::abs(b.body2.w));
         }
     const double extent0 = std::max({hi.x() - lo.x(), hi.y() - lo.y(), 1e-3});
-    const double kv = vmax > 0 ? extent0 / 3 / vmax : 0.0;  // m per (m/s)
+    const double kv = vmax > 0 ? extent0 / 5 / vmax : 0.0;  // m per (m/s)
     for (const SceneBody& b : sc.bodies)
         if (!b.is_static()) grow(b.body2.position + kv * b.body2.v);
     // A half-plane: the scene's nearest point of its edge, and a strip of its solid side.
@@ -300,6 +300,14 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
               << style << "/>\n<line x1=\"" << px(c.x()) << "\" y1=\"" << px(c.y()) << "\" x2=\"" << px(rim.x())
               << "\" y2=\"" << px(rim.y()) << "\" stroke=\"" << css(stroke) << "\" stroke-width=\"1\"/>\n";
         }
+        // The outline, for the labels to keep off.
+        for (std::size_t k = 0; k < ol.corners.size(); ++k)
+            labels.avoid_segment(P(ol.corners[k]), P(ol.corners[(k + 1) % ol.corners.size()]));
+        for (int k = 0; ol.radius > 0 && k < 24; ++k) {
+            const double t0 = 2 * kPi * k / 24, t1 = 2 * kPi * (k + 1) / 24;
+            labels.avoid_segment(P(ol.centre + ol.radius * Vec2(std::cos(t0), std::sin(t0))),
+                                 P(ol.centre + ol.radius * Vec2(std::cos(t1), std::sin(t1))));
+        }
         const Vec2 c = P(ol.centre);
         g << "<circle cx=\"" << px(c.x()) << "\" cy=\"" << px(c.y()) << "\" r=\"2.6\" fill=\"" << css(stroke)
           << "\"/>\n";
@@ -315,11 +323,11 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
         o << "<line x1=\"" << px(ax0) << "\" y1=\"" << px(origin.y()) << "\" x2=\"" << px(ax1 - 6) << "\" y2=\""
           << px(origin.y()) << "\"/>\n<line x1=\"" << px(origin.x()) << "\" y1=\"" << px(ay1) << "\" x2=\""
           << px(origin.x()) << "\" y2=\"" << px(ay0 + 6) << "\"/>\n</g>\n";
-        o << "<polygon points=\"" << px(ax1) << "," << px(origin.y()) << " " << px(ax1 - 7) << ","
-          << px(origin.y() - 3) << " " << px(ax1 - 7) << "," << px(origin.y() + 3) << "\" fill=\""
-          << css(kColours.muted) << "\"/>\n<polygon points=\"" << px(origin.x()) << "," << px(ay0) << " "
-          << px(origin.x() - 3) << "," << px(ay0 + 7) << " " << px(origin.x() + 3) << "," << px(ay0 + 7)
-          << "\" fill=\"" << css(kColours.muted) << "\"/>\n";
+        o << "<polygon points=\"" << px(ax1) << "," << px(origin.y()) << " " << px(ax1 - 7) << "," << px(origin.y() - 3)
+          << " " << px(ax1 - 7) << "," << px(origin.y() + 3) << "\" fill=\"" << css(kColours.muted)
+          << "\"/>\n<polygon points=\"" << px(origin.x()) << "," << px(ay0) << " " << px(origin.x() - 3) << ","
+          << px(ay0 + 7) << " " << px(origin.x() + 3) << "," << px(ay0 + 7) << "\" fill=\"" << css(kColours.muted)
+          << "\"/>\n";
         labels.avoid_segment(Vec2(ax0, origin.y()), Vec2(ax1, origin.y()));
         labels.avoid_segment(Vec2(origin.x(), ay0), Vec2(origin.x(), ay1));
         marks << labels.place("x", Vec2(ax1 - 4, origin.y()), Vec2(0, 1), kColours.muted);
@@ -445,8 +453,11 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
             const Vec2 nrm = b.shape2.normal;
             const Vec2 c = 0.5 * (lo + hi);
             const Vec2 on = c - (nrm.dot(c) - b.shape2.offset) * nrm;
-            marks << labels.place(b.name, P(on - 0.02 * nrm) + Vec2(0.3 * (W - 2 * kMargin), 0),
-                                  Vec2(nrm.x(), nrm.y()), kColours.ink, true);
+            // On its solid side, at the end of its edge nearest the figure's lower right.
+            const Vec2 t(-nrm.y(), nrm.x()), e = P(on), ts(t.x(), -t.y()), ns(nrm.x(), -nrm.y());
+            const Vec2 corner(W - kMargin, H - 20);
+            const double reach = std::clamp((corner - e).dot(ts), -0.5 * W, 0.5 * W);
+            marks << labels.place(b.name, e + reach * ts - 10.0 * ns, -ns, kColours.ink, true);
             continue;
         }
         // Away from where it moves.
@@ -459,14 +470,14 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
         const std::string k = several ? std::to_string(w.event) : "";
         const Vec2 p = flat(w.problem.point), nrm = flat(w.problem.normal);
         const Vec2 pp = P(p), nd(nrm.x(), -nrm.y());
-        marks << labels.place(k.empty() ? "p" : "p_{" + k + "}", pp, -nd, kColours.impulse);
-        marks << labels.place(k.empty() ? "n" : "n_{" + k + "}", pp + kNormalPx * nd, nd, kColours.normal);
+        marks << labels.place("p" + std::string(k.empty() ? "" : "_" + k), pp, -nd, kColours.impulse);
+        marks << labels.place("n" + std::string(k.empty() ? "" : "_" + k), pp + kNormalPx * nd, nd, kColours.normal);
         for (int side = 0; side < 2; ++side) {
             const std::size_t i = side ? w.b : w.a;
             if (sc.bodies[i].shape2.kind == Shape2::Kind::half_plane) continue;
             const Vec2 x = P(side ? w.problem.b.b2.position : w.problem.a.b2.position);
             const Vec2 d = (pp - x).norm() > 0 ? Vec2((pp - x).normalized()) : Vec2(1, 0);
-            marks << labels.place(std::string("r_{") + (side ? "b" : "a") + k + "}", 0.5 * (x + pp), Vec2(-d.y(), d.x()),
+            marks << labels.place(std::string("r_") + (side ? "b" : "a") + k, 0.5 * (x + pp), Vec2(-d.y(), d.x()),
                                   kColours.lever);
         }
     }

@@ -191,14 +191,16 @@ double work_height(const Lesson& L, const std::vector<std::size_t>& asked, doubl
     return std::clamp(room, kWorkMin, 35.0);
 }
 
-// The tallest a sheet's figure may be (mm): what the questions leave with the least room to
-// work, from 40 mm (smaller, its labels would crowd) to 62 mm. A sheet of many questions may
-// then run onto a second page; the figure is never split (break-inside: avoid).
-double figure_room(const Lesson& L, const std::vector<std::size_t>& asked) {
+// A 2D sheet's figure is at most kFigureMm tall (its labels readable in print). It takes its
+// height from the questions' room when the sheet still fits on one page with at least
+// kWorkMin to work each numeric question; else the sheet runs onto a second page (the figure
+// and each question are never split) and the questions keep the room they have without it.
+constexpr double kFigureMm = 70.0;
+double sheet_work_height(const Lesson& L, const std::vector<std::size_t>& asked, double figure_mm) {
     int numeric = 0, other = 0;
     for (std::size_t i : asked) (L.questions[i].has_quantity() ? numeric : other)++;
-    const double left = kQuestionsRoom - kOtherMm * other - (kNumericMm + kWorkMin) * numeric - kFigureGapMm;
-    return std::clamp(left, 40.0, 62.0);
+    const bool fits = kQuestionsRoom - figure_mm - kOtherMm * other - (kNumericMm + kWorkMin) * numeric >= 0;
+    return work_height(L, asked, fits ? figure_mm : 0.0);
 }
 
 // A 2D sheet's figure of this student's set-up, and beside it what its marks mean.
@@ -206,19 +208,20 @@ std::string figure_html(const StudentSheet& s, const WorksheetFigure& f) {
     const Scene& sc = s.lesson.scene;
     std::ostringstream o;
     o << "<div class=\"setup\">\n" << f.svg << "<p class=\"note legend\">Your set-up at the start, to scale. ";
-    bool moved = false;
-    for (const WorkedCollision& w : s.worked)
-        moved = moved || (w.problem.a.b2.position - sc.bodies[w.a].body2.position).norm() > 1e-9 ||
-                (w.problem.b.b2.position - sc.bodies[w.b].body2.position).norm() > 1e-9;
-    if (moved) o << "Dashed: where the bodies are when they collide. ";
+    // Dashed bodies: as the figure draws them.
+    if (f.svg.find("data-body-at-hit=") != std::string::npos) o << "Dashed: where the bodies are when they collide. ";
     const bool several = s.worked.size() > 1;
     for (const WorkedCollision& w : s.worked) {
         const std::string k = several ? "<sub>" + std::to_string(w.event) + "</sub>" : "";
         o << (several ? "Collision " + std::to_string(w.event) + ": " : std::string()) << "p" << k
           << ", the contact point; n" << k << ", the unit normal from " << escape(sc.bodies[w.a].name) << " (a) into "
-          << escape(sc.bodies[w.b].name) << " (b); r<sub>a" << (several ? std::to_string(w.event) : "")
-          << "</sub>, r<sub>b" << (several ? std::to_string(w.event) : "") << "</sub>: from each centre to p" << k
-          << ". ";
+          << escape(sc.bodies[w.b].name) << " (b); ";
+        const std::string ek = several ? std::to_string(w.event) : "";
+        std::string rs;  // a half-plane (ground, wall) has no centre: no r
+        if (sc.bodies[w.a].shape2.kind != Shape2::Kind::half_plane) rs = "r<sub>a" + ek + "</sub>";
+        if (sc.bodies[w.b].shape2.kind != Shape2::Kind::half_plane)
+            rs += (rs.empty() ? "" : ", ") + std::string("r<sub>b") + ek + "</sub>";
+        if (!rs.empty()) o << rs << ": from the body's centre to p" << k << ". ";
     }
     o << "v: the velocities at the start (one scale for all); \u03c9: the spins (counter-clockwise positive).</p>\n"
       << "</div>\n";
@@ -232,10 +235,10 @@ std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets
         o << "<section class=\"sheet\">\n<h1>" << math(L.title) << "</h1>\n<p class=\"student\">Student " << s.student
           << "</p>\n<p>Name: <span class=\"fill\"></span> Class: <span class=\"fill short\"></span></p>\n<h2>Given</h2>\n"
           << givens_html(s.lesson);
-        const WorksheetFigure f = worksheet_figure(s, figure_room(L, s.asked), L.id + "-" + std::to_string(s.student));
+        const WorksheetFigure f = worksheet_figure(s, kFigureMm, L.id + "-" + std::to_string(s.student));
         if (!f.svg.empty()) o << figure_html(s, f);
         o << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
-        const double work = work_height(L, s.asked, f.svg.empty() ? 0.0 : f.height_mm + kFigureGapMm);
+        const double work = sheet_work_height(L, s.asked, f.svg.empty() ? 0.0 : f.height_mm + kFigureGapMm);
         for (std::size_t k = 0; k < s.asked.size(); ++k) o << sheet_question(L, s.asked[k], s.answers[k], work);
         o << "</section>\n";
     }

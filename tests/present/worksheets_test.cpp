@@ -278,7 +278,7 @@ TEST(Worksheet, TwoDimensionalSheetsDrawEachStudentsSetUp) {
                 EXPECT_FALSE(box[0] < o[2] && o[0] < box[2] && box[1] < o[3] && o[1] < box[3]) << t;
             boxes.push_back(box);
         }
-        for (const char* label : {"p", "n", "r_{a}", "r_{b}", "v_{A}", "A", "B", "x", "y"})
+        for (const char* label : {"p", "n", "r_a", "r_b", "v_A", "A", "B", "x", "y"})
             EXPECT_EQ(tags_with(svg, std::string("data-label=\"") + label + "\"").size(), 1u) << label;
     }
     // Other values, another figure.
