@@ -423,11 +423,7 @@ std::string inputs_html(const Lesson& L) {
 // The figures' colours (render/style.h) for the panel's canvas, as CSS colours in JSON.
 std::string palette_json() {
     const render::Palette c;
-    const auto css = [](render::Colour x) {
-        char buf[16];
-        std::snprintf(buf, sizeof buf, "#%02x%02x%02x", x & 0xFFu, (x >> 8) & 0xFFu, (x >> 16) & 0xFFu);
-        return std::string("\"") + buf + "\"";
-    };
+    const auto css = [](render::Colour x) { return "\"" + render::css_colour(x) + "\""; };
     std::string fills, darks;
     for (int k = 0; k < render::Palette::kFills; ++k) {
         fills += (k ? "," : "") + css(c.fills[k]);

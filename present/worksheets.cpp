@@ -12,6 +12,7 @@
 #include "teach/html.h"
 #include "engine/math.h"  // kPi
 #include "teach/notation.h"
+#include "present/worksheet_figure.h"
 
 namespace collide {
 
@@ -78,6 +79,9 @@ ul.choices { list-style: none; padding-left: 4mm; margin: 1mm 0; }
 .math.result { font-weight: bold; }
 .note { color: #444; font-size: 9pt; margin: 1mm 0; }
 .answer { font-weight: bold; }
+.setup { display: flex; align-items: flex-start; gap: 4mm; margin: 2mm 0 0; break-inside: avoid; page-break-inside: avoid; }
+.setup svg { flex: none; }
+.setup .legend { margin: 0; }
 @media screen { body { padding: 8mm; } .sheet { border-bottom: 2px dashed #bbb; padding-bottom: 8mm; margin-bottom: 8mm; } }
 </style>
 )";
@@ -171,16 +175,57 @@ std::string sheet_question(const Lesson& L, std::size_t i, const LessonAnswer& a
     return o.str();
 }
 
+constexpr double kFigureGapMm = 6.0;  // the figure's margins on the page
+
 // The room to work each numeric question gets (mm): the page's space for questions shared
 // out, so that a sheet of few questions has room to write and one of many still fits on its
 // page. Measured on A4 PDFs (weasyprint): about 180 mm below the givens, 17 mm for a numeric
 // question's text and answer line, 30 mm for a choice or explain question.
-double work_height(const Lesson& L, const std::vector<std::size_t>& asked) {
+// `figure_mm`: the height a 2D sheet's figure of the set-up takes (0 without one).
+constexpr double kQuestionsRoom = 180.0, kNumericMm = 17.0, kOtherMm = 30.0, kWorkMin = 8.0;
+double work_height(const Lesson& L, const std::vector<std::size_t>& asked, double figure_mm) {
     int numeric = 0, other = 0;
     for (std::size_t i : asked) (L.questions[i].has_quantity() ? numeric : other)++;
     if (numeric == 0) return 0.0;
-    const double room = (180.0 - 30.0 * other - 17.0 * numeric) / numeric;
-    return std::clamp(room, 8.0, 35.0);
+    const double room = (kQuestionsRoom - figure_mm - kOtherMm * other - kNumericMm * numeric) / numeric;
+    return std::clamp(room, kWorkMin, 35.0);
+}
+
+// A 2D sheet's figure is at most kFigureMm tall (its labels readable in print). It takes its
+// height from the questions' room when the sheet still fits on one page with at least
+// kWorkMin to work each numeric question; else the sheet runs onto a second page (the figure
+// and each question are never split) and the questions keep the room they have without it.
+constexpr double kFigureMm = 70.0;
+double sheet_work_height(const Lesson& L, const std::vector<std::size_t>& asked, double figure_mm) {
+    int numeric = 0, other = 0;
+    for (std::size_t i : asked) (L.questions[i].has_quantity() ? numeric : other)++;
+    const bool fits = kQuestionsRoom - figure_mm - kOtherMm * other - (kNumericMm + kWorkMin) * numeric >= 0;
+    return work_height(L, asked, fits ? figure_mm : 0.0);
+}
+
+// A 2D sheet's figure of this student's set-up, and beside it what its marks mean.
+std::string figure_html(const StudentSheet& s, const WorksheetFigure& f) {
+    const Scene& sc = s.lesson.scene;
+    std::ostringstream o;
+    o << "<div class=\"setup\">\n" << f.svg << "<p class=\"note legend\">Your set-up at the start, to scale. ";
+    // Dashed bodies: as the figure draws them.
+    if (f.svg.find("data-body-at-hit=") != std::string::npos) o << "Dashed: where the bodies are when they collide. ";
+    const bool several = s.worked.size() > 1;
+    for (const WorkedCollision& w : s.worked) {
+        const std::string k = several ? "<sub>" + std::to_string(w.event) + "</sub>" : "";
+        o << (several ? "Collision " + std::to_string(w.event) + ": " : std::string()) << "p" << k
+          << ", the contact point; n" << k << ", the unit normal from " << escape(sc.bodies[w.a].name) << " (a) into "
+          << escape(sc.bodies[w.b].name) << " (b); ";
+        const std::string ek = several ? std::to_string(w.event) : "";
+        std::string rs;  // a half-plane (ground, wall) has no centre: no r
+        if (sc.bodies[w.a].shape2.kind != Shape2::Kind::half_plane) rs = "r<sub>a" + ek + "</sub>";
+        if (sc.bodies[w.b].shape2.kind != Shape2::Kind::half_plane)
+            rs += (rs.empty() ? "" : ", ") + std::string("r<sub>b") + ek + "</sub>";
+        if (!rs.empty()) o << rs << ": from the body's centre to p" << k << ". ";
+    }
+    o << "v: the velocities at the start (one scale for all); \u03c9: the spins (counter-clockwise positive).</p>\n"
+      << "</div>\n";
+    return o.str();
 }
 
 std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets) {
@@ -189,9 +234,11 @@ std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets
     for (const StudentSheet& s : sheets) {
         o << "<section class=\"sheet\">\n<h1>" << math(L.title) << "</h1>\n<p class=\"student\">Student " << s.student
           << "</p>\n<p>Name: <span class=\"fill\"></span> Class: <span class=\"fill short\"></span></p>\n<h2>Given</h2>\n"
-          << givens_html(s.lesson)
-          << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
-        const double work = work_height(L, s.asked);
+          << givens_html(s.lesson);
+        const WorksheetFigure f = worksheet_figure(s, kFigureMm, L.id + "-" + std::to_string(s.student));
+        if (!f.svg.empty()) o << figure_html(s, f);
+        o << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
+        const double work = sheet_work_height(L, s.asked, f.svg.empty() ? 0.0 : f.height_mm + kFigureGapMm);
         for (std::size_t k = 0; k < s.asked.size(); ++k) o << sheet_question(L, s.asked[k], s.answers[k], work);
         o << "</section>\n";
     }

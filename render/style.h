@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
+#include <string>
 
 namespace collide::render {
 
@@ -13,6 +15,13 @@ constexpr Colour rgb(unsigned r, unsigned g, unsigned b, unsigned a = 255) {
 }
 constexpr Colour with_alpha(Colour c, float a) {
     return (c & 0x00FFFFFFu) | (static_cast<std::uint32_t>(a * 255.0f + 0.5f) << 24);
+}
+
+// A colour as CSS writes it, "#rrggbb" (the alpha left out): the site's and the worksheets' figures.
+inline std::string css_colour(Colour c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c & 0xFFu, (c >> 8) & 0xFFu, (c >> 16) & 0xFFu);
+    return buf;
 }
 
 struct Palette {

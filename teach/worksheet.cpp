@@ -74,6 +74,9 @@ void answer_sheet(const Lesson& original, StudentSheet& s) {
                 }
                 WorkedCollision w;
                 w.event = k;
+                w.a = c.a;
+                w.b = c.b;
+                w.t = c.t;
                 w.problem = collision_problem(s.lesson.scene, c);
                 w.solution = solve(w.problem);
                 s.worked.push_back(std::move(w));

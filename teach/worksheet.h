@@ -37,8 +37,10 @@ int question_number(const Lesson& lesson, std::size_t index);
 
 // A collision a student's questions ask about, worked out (teach/solve.h).
 struct WorkedCollision {
-    int event = 1;  // which collision of the run, from 1
-    SolveProblem problem;
+    int event = 1;             // which collision of the run, from 1
+    std::size_t a = 0, b = 0;  // the scene's indices of problem.a and problem.b
+    double t = 0.0;            // s, when it happens
+    SolveProblem problem;      // the bodies as they are at it: the worksheet's figure draws them there
     Solution solution;
 };
 

@@ -7,6 +7,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -164,6 +165,132 @@ TEST(Worksheet, TwoDimensionalAnglesAreInDegrees) {
         std::snprintf(buf, sizeof buf, "%.4g\u00b0 (%g rad)", a * 180.0 / 3.14159265358979323846, a);
         EXPECT_NE(sheets.find(buf), std::string::npos) << buf;
     }
+}
+
+// The tags of `html` that carry `marker` (an attribute and its value), each as its text
+// between '<' and '>'.
+std::vector<std::string> tags_with(const std::string& html, const std::string& marker) {
+    std::vector<std::string> out;
+    for (std::size_t at = html.find(marker); at != std::string::npos; at = html.find(marker, at + 1)) {
+        const std::size_t open = html.rfind('<', at), close = html.find('>', at);
+        out.push_back(html.substr(open, close - open + 1));
+    }
+    return out;
+}
+
+// An attribute's value in a tag; NaN when it has none.
+double attr(const std::string& tag, const std::string& name) {
+    const std::string key = " " + name + "=\"";
+    const std::size_t at = tag.find(key);
+    if (at == std::string::npos) return std::nan("");
+    return std::stod(tag.substr(at + key.size()));
+}
+
+// The one tag of `html` with `marker`; fails the test unless there is exactly one.
+std::string one_tag(const std::string& html, const std::string& marker) {
+    const std::vector<std::string> tags = tags_with(html, marker);
+    EXPECT_EQ(tags.size(), 1u) << marker;
+    return tags.empty() ? std::string() : tags.front();
+}
+
+// Each student's sheet of a 2D lesson draws their own set-up (issue 33, item 7): the contact
+// point p, the normal n and r_a, r_b of the SVG are those of the student's collision as the
+// key works it out (draw_student, 1e-9), and those are the closed forms of general-2d's
+// geometry: A (0.4 x 0.2, turned 45 degrees) meets B's left face (x = 0.2) with its right-most
+// corner, (0.3, 0.1) / sqrt 2 from its centre, whatever the student's values; n = (1, 0).
+// The bodies at the start and the velocities drawn are the student's values; no two labels
+// overlap; students with other values get other figures.
+TEST(Worksheet, TwoDimensionalSheetsDrawEachStudentsSetUp) {
+    const Lesson L = lesson_file("06-general-2d.toml");
+    const fs::path out = scratch("figure");
+    std::string err;
+    ASSERT_EQ(worksheet("general-2d -o " + out.string() + " --students 5 --seed 3", &err), 0) << err;
+    const std::string sheets = slurp(out / "sheets.html");
+    std::vector<std::string> sections;
+    for (std::size_t at = sheets.find("<section class=\"sheet\">"); at != std::string::npos;) {
+        const std::size_t next = sheets.find("<section class=\"sheet\">", at + 1);
+        sections.push_back(sheets.substr(at, next == std::string::npos ? std::string::npos : next - at));
+        at = next;
+    }
+    ASSERT_EQ(sections.size(), 5u);
+    const double c = std::sqrt(0.5);
+    std::vector<std::string> svgs;
+    for (int k = 1; k <= 5; ++k) {
+        const std::string& sec = sections[static_cast<std::size_t>(k - 1)];
+        SCOPED_TRACE("student " + std::to_string(k));
+        ASSERT_EQ(tags_with(sec, "<svg").size(), 1u);
+        const std::size_t s0 = sec.find("<svg"), s1 = sec.find("</svg>");
+        const std::string svg = sec.substr(s0, s1 - s0);
+        svgs.push_back(svg);
+        const StudentSheet s = draw_student(L, 3, k);
+        ASSERT_EQ(s.worked.size(), 1u);
+        const SolveProblem& pr = s.worked[0].problem;
+        // p and n: the problem's, and the closed form.
+        const std::string p = one_tag(svg, "data-point=\"p\"");
+        EXPECT_NEAR(attr(p, "data-x"), pr.point.x(), 1e-9);
+        EXPECT_NEAR(attr(p, "data-y"), pr.point.y(), 1e-9);
+        EXPECT_NEAR(attr(p, "data-x"), 0.2, 1e-6);
+        EXPECT_NEAR(attr(p, "data-y"), 0.1 * c, 1e-6);
+        const std::string nv = one_tag(svg, "data-vector=\"n\"");
+        EXPECT_NEAR(attr(nv, "data-x"), pr.point.x(), 1e-9);
+        EXPECT_NEAR(attr(nv, "data-y"), pr.point.y(), 1e-9);
+        EXPECT_NEAR(attr(nv, "data-dx"), pr.normal.x(), 1e-9);
+        EXPECT_NEAR(attr(nv, "data-dy"), pr.normal.y(), 1e-9);
+        EXPECT_NEAR(attr(nv, "data-dx"), 1.0, 1e-9);
+        EXPECT_NEAR(attr(nv, "data-dy"), 0.0, 1e-9);
+        // r_a, r_b: from each centre where the bodies touch to p.
+        const std::string ra = one_tag(svg, "data-vector=\"r_a\""), rb = one_tag(svg, "data-vector=\"r_b\"");
+        EXPECT_NEAR(attr(ra, "data-x"), pr.a.b2.position.x(), 1e-9);
+        EXPECT_NEAR(attr(ra, "data-dx"), pr.point.x() - pr.a.b2.position.x(), 1e-9);
+        EXPECT_NEAR(attr(ra, "data-dy"), pr.point.y() - pr.a.b2.position.y(), 1e-9);
+        EXPECT_NEAR(attr(ra, "data-dx"), 0.3 * c, 1e-6);
+        EXPECT_NEAR(attr(ra, "data-dy"), 0.1 * c, 1e-6);
+        const double yb = s.values.at("B.position.y");
+        EXPECT_NEAR(attr(rb, "data-x"), 0.3, 1e-9);  // B does not move before the hit
+        EXPECT_NEAR(attr(rb, "data-y"), yb, 1e-9);
+        EXPECT_NEAR(attr(rb, "data-dx"), -0.1, 1e-6);
+        EXPECT_NEAR(attr(rb, "data-dy"), 0.1 * c - yb, 1e-6);
+        // A drawn where it touches: moved along +x only, by the distance its corner had to go.
+        const std::string a_hit = one_tag(svg, "data-body-at-hit=\"A\"");
+        EXPECT_NEAR(attr(a_hit, "data-x"), 0.2 - 0.3 * c, 1e-6);
+        EXPECT_NEAR(attr(a_hit, "data-y"), 0.0, 1e-9);
+        EXPECT_TRUE(tags_with(svg, "data-body-at-hit=\"B\"").empty());  // B waits at its start
+        // The start: the student's values, as the givens' table has them.
+        const std::string b = one_tag(svg, "data-body=\"B\" data-x");
+        EXPECT_EQ(attr(b, "data-y"), yb);
+        const std::string a = one_tag(svg, "data-body=\"A\" data-x");
+        EXPECT_EQ(attr(a, "data-x"), -0.6);
+        EXPECT_NEAR(attr(a, "data-angle"), 0.25 * 3.14159265358979323846, 1e-15);
+        const std::string va = one_tag(svg, "data-vector=\"v\"");
+        EXPECT_NE(va.find("data-body=\"A\""), std::string::npos);
+        EXPECT_EQ(attr(va, "data-dx"), s.values.at("A.v.x"));
+        EXPECT_EQ(attr(va, "data-dy"), 0.0);
+        // No answer: no impulse, nothing after.
+        EXPECT_EQ(svg.find("impulse"), std::string::npos);
+        // The labels: each of p, n, r_a, r_b, v_A, A, B once, placed where no other is.
+        std::vector<std::array<double, 4>> boxes;
+        for (const std::string& t : tags_with(svg, "data-box=")) {
+            EXPECT_EQ(t.find("data-crowded"), std::string::npos) << t;
+            std::istringstream in(t.substr(t.find("data-box=\"") + 10));
+            std::array<double, 4> box{};
+            in >> box[0] >> box[1] >> box[2] >> box[3];
+            for (const auto& o : boxes)
+                EXPECT_FALSE(box[0] < o[2] && o[0] < box[2] && box[1] < o[3] && o[1] < box[3]) << t;
+            boxes.push_back(box);
+        }
+        for (const char* label : {"p", "n", "r_a", "r_b", "v_A", "A", "B", "x", "y"})
+            EXPECT_EQ(tags_with(svg, std::string("data-label=\"") + label + "\"").size(), 1u) << label;
+    }
+    // Other values, another figure.
+    for (std::size_t i = 0; i < svgs.size(); ++i)
+        for (std::size_t j = i + 1; j < svgs.size(); ++j)
+            if (draw_student(L, 3, static_cast<int>(i) + 1).values !=
+                draw_student(L, 3, static_cast<int>(j) + 1).values) {
+                EXPECT_NE(svgs[i], svgs[j]) << "students " << i + 1 << " and " << j + 1;
+            }
+    // A 1D sheet has no figure.
+    EXPECT_EQ(slurp(written("catch-up") / "sheets.html").find("<svg"), std::string::npos);
+    fs::remove_all(out);
 }
 
 TEST(Worksheet, SheetsShowNoAnswerAndNoWorkedExample) {
