@@ -152,7 +152,7 @@ cat >>"$ball/moved.html" <<'HTML'
 HTML
 browse_dom "file://$ball/moved.html" "$work/moved.html"
 browse --screenshot="$work/bouncing-ball.png" "file://$ball/index.html?show=try-it&scene.restitution=0.4"
-moved=$(sed -n '/<pre id="moved">/,/<\/pre>/p' "$work/moved.html")
+moved=$(sed -n '/<pre id="moved">/,/<\/pre>/p' "$work/moved.html" | sed 's/<pre id="moved">//; s/<\/pre>//')
 echo "browser.sh: bouncing-ball's panel plots: $moved"
 grep -q '^plots: 2$' <<<"$moved" || { echo "browser.sh: FAIL: the panel does not show the lesson's 2 plots" >&2; exit 1; }
 grep -q '^label: Time between one bounce and the next: ' <<<"$moved" || {
