@@ -67,7 +67,58 @@ bool same_pair(const Hit& h, std::size_t i, std::size_t j) { return (h.a == i &&
 // A collision's words: "ball and floor", "domino 3 strikes domino 4".
 std::string hit_words(const Scene& s, const Hit& h) { return s.bodies[h.a].name + " and " + s.bodies[h.b].name; }
 
+// Several quantities of one unit on one axis: what they are, if they are of one kind
+// ("velocity (m/s)"), else the unit alone.
+std::string plot_kind_words(const std::vector<PlotQuantity>& y) {
+    const std::string unit = y.front().unit;
+    const Kind kind = y.front().kind;
+    const bool one_kind = std::all_of(y.begin(), y.end(), [&](const PlotQuantity& q) { return q.kind == kind; });
+    if (!one_kind) return unit;
+    switch (kind) {
+        case Kind::position: return with_unit("position", unit);
+        case Kind::velocity: return with_unit("velocity", unit);
+        case Kind::spin: return with_unit("angular velocity", unit);
+        case Kind::angle: return with_unit("angle", unit);
+        case Kind::momentum: return with_unit("momentum", unit);
+        default: return unit;
+    }
+}
+
 }  // namespace
+
+std::string plot_quantity_words(const PlotQuantity& q, const Lesson& lesson, bool per_collision,
+                                const std::string& counting, bool unit) {
+    const Scene& scene = lesson.scene;
+    const auto done = [&](const std::string& words) { return unit ? with_unit(words, q.unit) : words; };
+    if (per_collision) {
+        if (q.name == "collision") return counting + " number";
+        if (q.name == "interval") return done("time since the previous " + counting);
+        if (q.name == "impulse") return done("impulse");
+        return done("time t");
+    }
+    const std::string axis = q.component == 0 ? "x" : q.component == 1 ? "y" : "z";
+    switch (q.kind) {
+        case Kind::time: return done("time t");
+        case Kind::kinetic: return done("total kinetic energy");
+        case Kind::potential: return done("total potential energy");
+        case Kind::energy: return done("total energy (kinetic + potential)");
+        case Kind::momentum: return done(scene.dimension == 1 ? "total momentum" : "total momentum, " + axis);
+        default: break;
+    }
+    const std::string body = q.body >= 0 ? scene.bodies[static_cast<std::size_t>(q.body)].name : std::string();
+    const std::string point =
+        q.mark >= 0 ? lesson.view.marks[static_cast<std::size_t>(q.mark)].name : std::string("centre");
+    // Along y against gravity (gravity along -y only): a height.
+    const bool up = q.component == 1 && scene.gravity.y() < 0 && scene.gravity.x() == 0 && scene.gravity.z() == 0;
+    const std::string along = scene.dimension == 1 ? "" : ", " + axis;
+    switch (q.kind) {
+        case Kind::position: return done(body + ": " + (up ? "height" : "position") + " of " + point + along);
+        case Kind::velocity: return done(body + ": velocity of " + point + along);
+        case Kind::spin: return done(body + ": angular velocity" + (scene.dimension == 3 ? ", " + axis : ""));
+        case Kind::angle: return done(body + ": angle");
+        default: return done(q.name);
+    }
+}
 
 std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, const SceneRun& run) {
     std::vector<PlotData> out;
@@ -79,11 +130,11 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
         if (!D.per_collision) {
             D.x_unit = P.x.unit;
             D.y_unit = P.y.front().unit;
-            D.x_label = with_unit(P.x.name, P.x.unit);
-            D.y_label = P.y.size() == 1 ? with_unit(P.y.front().name, D.y_unit) : D.y_unit;
+            D.x_label = P.x.kind == Kind::time ? with_unit("t", P.x.unit) : plot_quantity_words(P.x, lesson, false);
+            D.y_label = P.y.size() == 1 ? plot_quantity_words(P.y.front(), lesson, false) : plot_kind_words(P.y);
             if (states.empty()) states = plot_states(scene, run);
             for (const PlotQuantity& q : P.y) {
-                PlotSeriesData S{q.name, {}, {}, {}};
+                PlotSeriesData S{q.name, plot_quantity_words(q, lesson, false, "", false), {}, {}, {}};
                 for (const render::FrameState& f : states) {
                     S.x.push_back(sample_value(P.x, lesson, scene, f));
                     S.y.push_back(sample_value(q, lesson, scene, f));
@@ -93,10 +144,11 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
             if (P.fit == PlotFit::none) {
                 // What it shows in words: each series' range and its last value.
                 std::string what = P.title + ": " + std::to_string(states.size()) + " instants of the run.";
-                for (const PlotSeriesData& S : D.series) {
+                for (std::size_t s = 0; s < D.series.size(); ++s) {
+                    const PlotSeriesData& S = D.series[s];
                     if (S.y.empty()) continue;
                     const auto [lo, hi] = std::minmax_element(S.y.begin(), S.y.end());
-                    what += " " + S.label + " from " + sig3(*lo) + " to " + sig3(*hi) + " " + D.y_unit + ", " +
+                    what += " " + S.words + " from " + sig3(*lo) + " to " + sig3(*hi) + " " + D.y_unit + ", " +
                             sig3(S.y.back()) + " " + D.y_unit + " at " + P.x.name + " = " + sig3(S.x.back()) + " " +
                             D.x_unit + ".";
                 }
@@ -149,7 +201,7 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
             D.y_unit = P.y.front().unit;
             D.x_label = P.x.name == "collision" ? P.counting + " number" : with_unit("t", "s");
             for (const PlotQuantity& q : P.y) {
-                PlotSeriesData S{q.name, {}, {}, {}};
+                PlotSeriesData S{q.name, plot_quantity_words(q, lesson, true, P.counting, false), {}, {}, {}};
                 for (std::size_t k = 0; k < rows.size(); ++k) {
                     double y = 0;
                     if (q.name == "t") y = rows[k].t;
@@ -162,10 +214,7 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
                 }
                 D.series.push_back(std::move(S));
             }
-            const std::string yname = P.y.front().name == "t"          ? "time"
-                                      : P.y.front().name == "interval" ? "time since the one before"
-                                                                       : "impulse";
-            D.y_label = P.y.size() == 1 ? with_unit(yname, D.y_unit) : D.y_unit;
+            D.y_label = P.y.size() == 1 ? plot_quantity_words(P.y.front(), lesson, true, P.counting) : D.y_unit;
         }
         const PlotSeriesData& S = D.series.front();
         std::string what = P.title + ": ";
@@ -229,6 +278,11 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
                                                                 : " (from " + sig3(R.lo) + " to " + sig3(R.hi) + ")")) +
                 (R.restitution ? ", and e = " + sig3(*R.restitution) : std::string()) + ".";
             D.ratio = R;
+            D.log_y = !S.y.empty() && std::all_of(S.y.begin(), S.y.end(), [](double y) { return y > 0; });
+            if (D.log_y)
+                D.y_label = P.y.size() == 1 ? plot_quantity_words(P.y.front(), lesson, true, P.counting, false) + " (" +
+                                                  D.y_unit + ", log scale)"
+                                            : D.y_unit + ", log scale";
         } else if (!S.y.empty()) {
             // The largest and the smallest, with the collisions they belong to.
             const auto name_of = [&](std::size_t i) {
@@ -238,9 +292,10 @@ std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, con
             };
             const auto lo = static_cast<std::size_t>(std::min_element(S.y.begin(), S.y.end()) - S.y.begin());
             const auto hi = static_cast<std::size_t>(std::max_element(S.y.begin(), S.y.end()) - S.y.begin());
-            what += std::to_string(S.y.size()) + " values of " + P.y.front().name + ", the largest " + sig3(S.y[hi]) +
-                    " " + D.y_unit + " (" + name_of(hi) + "), the smallest " + sig3(S.y[lo]) + " " + D.y_unit + " (" +
-                    name_of(lo) + ").";
+            what += std::to_string(S.y.size()) + " values of " +
+                    plot_quantity_words(P.y.front(), lesson, true, P.counting, false) + ", the largest " +
+                    sig3(S.y[hi]) + " " + D.y_unit + " (" + name_of(hi) + "), the smallest " + sig3(S.y[lo]) + " " +
+                    D.y_unit + " (" + name_of(lo) + ").";
         } else {
             what += "no collision of these in the run.";
         }

@@ -13,7 +13,8 @@
 namespace collide {
 
 struct PlotSeriesData {
-    std::string label;  // the quantity's name as written
+    std::string label;  // the quantity's name as written ("ball.position.y")
+    std::string words;  // what it is, without its unit: its key and table heading (plot_quantity_words)
     std::vector<double> x, y;
     std::vector<int> number;  // per collision: each point's collision number (from 1)
 };
@@ -23,6 +24,9 @@ struct PlotData {
     std::string x_label, y_label;  // with units: "t (s)", "strike time (s)"
     std::string x_unit, y_unit;    // "s", "" (a count), "m/s"
     bool per_collision = false;
+    // y on a logarithmic scale: fit = "ratio" with every value above 0 (a geometric sequence
+    // is a straight line there; on a linear scale a bouncing ball's 40 intervals lie on 0).
+    bool log_y = false;
     std::vector<PlotSeriesData> series;
     // Per collision: one row per collision shown, with its words ("domino 3 strikes domino 4").
     std::vector<std::string> row_names;
@@ -49,6 +53,13 @@ struct PlotData {
     // One sentence of what the plot shows, for its alt text and caption (the fit's numbers).
     std::string summary;
 };
+
+// A plot quantity in words, with its unit, for keys, axes and tables: "ball: height of
+// centre, y (m)", "B (e=1): velocity of touching point, x (m/s)", "total kinetic energy (J)";
+// per collision "time since the previous bounce (s)" (`counting`: what one collision is).
+// `with_unit` false: without " (unit)" (running text, where the unit follows each number).
+std::string plot_quantity_words(const PlotQuantity& q, const Lesson& lesson, bool per_collision,
+                                const std::string& counting = "collision", bool with_unit = true);
 
 // Every [[plot]] of `lesson` on `run` (a run of `scene`: the lesson's own, or with other inputs).
 std::vector<PlotData> lesson_plots(const Lesson& lesson, const Scene& scene, const SceneRun& run);

@@ -256,23 +256,72 @@ std::string tick_text(double v) {
     std::snprintf(buf, sizeof buf, "%.6g", v);
     return notation::true_minus(buf);
 }
+// 10 to a whole power, its exponent in superscript digits: "10⁻⁶".
+std::string power_of_ten(int d) {
+    static const char* const digits[] = {"⁰", "¹", "²", "³", "⁴", "⁵", "⁶", "⁷", "⁸", "⁹"};
+    std::string e;
+    for (int a = std::abs(d); a > 0 || e.empty(); a /= 10) e = digits[a % 10] + e;
+    return "10" + std::string(d < 0 ? "⁻" : "") + e;
+}
 }  // namespace
 
 std::string svg_xy_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
-                        const std::vector<XYSeries>& series, const std::optional<XYLine>& line) {
-    const double W = 560, H = 280, left = 72, right = 16, top = 40, bottom = 46;
+                        const std::vector<XYSeries>& series, const std::optional<XYLine>& line, bool log_y) {
+    const double W = 560, H = 280, left = 72, right = 16, bottom = 46;
+    // The keys (several series, or a fitted line beside its points), in rows that wrap at the
+    // plot's width; the plot starts below them. The title is the page's heading, not drawn
+    // here (it is the SVG's <title> and label).
+    const auto text_width = [](const std::string& text) {  // about 7 px a character (not a byte) at 12 px
+        double chars = 0;
+        for (unsigned char c : text) chars += (c & 0xC0) != 0x80;
+        return 7.0 * chars;
+    };
+    struct Key {
+        std::string label, colour;
+        bool dashed = false;
+        double x = 0, y = 0;
+    };
+    std::vector<Key> keys;
+    if (series.size() > 1 || line) {
+        for (const XYSeries& s : series) keys.push_back({s.label, s.colour});
+        if (line) keys.push_back({line->label, "#555", true});
+    }
+    // The y axis's label reads across, above the axis (a rotated one of 40 characters does not
+    // fit beside it); the keys' rows below it.
+    double kx = left, ky = 38;
+    for (Key& k : keys) {
+        const double w = 30 + text_width(k.label);
+        if (kx > left && kx + w > W - right) {
+            kx = left;
+            ky += 17;
+        }
+        k.x = kx;
+        k.y = ky;
+        kx += w + 14;
+    }
+    const double top = keys.empty() ? 30 : ky + 12;
     double xlo = 0, xhi = 0, ylo = 0, yhi = 0;
     bool first = true;
     for (const XYSeries& s : series)
         for (std::size_t k = 0; k < s.x.size() && k < s.y.size(); ++k) {
+            if (log_y && !(s.y[k] > 0)) continue;  // not on a log scale (said by the caller)
             xlo = first ? s.x[k] : std::min(xlo, s.x[k]);
             xhi = first ? s.x[k] : std::max(xhi, s.x[k]);
             ylo = first ? s.y[k] : std::min(ylo, s.y[k]);
             yhi = first ? s.y[k] : std::max(yhi, s.y[k]);
             first = false;
         }
-    if (ylo > 0 && ylo < 0.5 * yhi) ylo = 0;
-    if (yhi < 0 && yhi > 0.5 * ylo) yhi = 0;
+    // A log scale: y as its power of ten, from a whole decade below to one above.
+    const auto ly = [&](double y) { return log_y ? std::log10(y) : y; };
+    if (log_y) {
+        if (first) ylo = yhi = 1;
+        ylo = std::floor(std::log10(ylo));
+        yhi = std::ceil(std::log10(yhi));
+        if (yhi <= ylo) yhi = ylo + 1;
+    } else {
+        if (ylo > 0 && ylo < 0.5 * yhi) ylo = 0;
+        if (yhi < 0 && yhi > 0.5 * ylo) yhi = 0;
+    }
     if (xlo > 0 && xlo < 0.5 * xhi) xlo = 0;
     const auto widen = [](double& lo, double& hi) {
         const double span = hi - lo;
@@ -282,37 +331,39 @@ std::string svg_xy_plot(const std::string& title, const std::string& x_label, co
         hi += pad;
     };
     widen(xlo, xhi);
-    widen(ylo, yhi);
+    if (!log_y) widen(ylo, yhi);
     const auto X = [&](double x) { return left + (W - left - right) * (x - xlo) / (xhi - xlo); };
-    const auto Y = [&](double y) { return top + (H - top - bottom) * (yhi - y) / (yhi - ylo); };
+    const auto Y = [&](double y) { return top + (H - top - bottom) * (yhi - ly(y)) / (yhi - ylo); };
     char buf[256];
     std::ostringstream o;
     o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " << W << " " << H
       << "\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"12\" role=\"img\" aria-label=\"" << escape(title)
-      << "\">\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
-    o << "<text x=\"" << left << "\" y=\"18\" font-weight=\"bold\">" << escape(title) << "</text>\n";
+      << "\">\n<title>" << escape(title) << "</title>\n<rect width=\"100%\" height=\"100%\" fill=\"#fff\"/>\n";
     // Keys (plain text: no HTML inside SVG text).
-    double kx = left;
-    for (const XYSeries& s : series) {
+    for (const Key& k : keys) {
         std::snprintf(buf, sizeof buf,
-                      "<line x1=\"%.1f\" y1=\"30\" x2=\"%.1f\" y2=\"30\" stroke=\"%s\" stroke-width=\"3\"/>", kx,
-                      kx + 18, s.colour.c_str());
-        o << buf << "<text x=\"" << kx + 22 << "\" y=\"34\">" << escape(s.label) << "</text>\n";
-        kx += 40 + 7.0 * static_cast<double>(s.label.size());
+                      "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"%s\" stroke-width=\"%s\"%s/>",
+                      k.x, k.y - 4, k.x + 22, k.y - 4, k.colour.c_str(), k.dashed ? "1.5" : "3",
+                      k.dashed ? " stroke-dasharray=\"6 4\"" : "");
+        o << buf << "<text x=\"" << k.x + 28 << "\" y=\"" << k.y << "\">" << escape(k.label) << "</text>\n";
     }
-    if (line) {
-        std::snprintf(buf, sizeof buf,
-                      "<line x1=\"%.1f\" y1=\"30\" x2=\"%.1f\" y2=\"30\" stroke=\"#555\" stroke-width=\"1.5\" "
-                      "stroke-dasharray=\"6 4\"/>",
-                      kx, kx + 18);
-        o << buf << "<text x=\"" << kx + 22 << "\" y=\"34\">" << escape(line->label) << "</text>\n";
+    // Grid, ticks and axes. On a log scale: every whole decade, labelled at most six times
+    // (10⁻³ rather than 0.001 below 0.01).
+    std::vector<std::pair<double, std::string>> yticks;
+    if (log_y) {
+        const int d0 = static_cast<int>(ylo), d1 = static_cast<int>(yhi);
+        const int every = std::max(1, (d1 - d0 + 5) / 6);
+        for (int d = d1; d >= d0; d -= every) {
+            yticks.emplace_back(std::pow(10.0, d), d >= -2 && d <= 3 ? tick_text(std::pow(10.0, d)) : power_of_ten(d));
+        }
+    } else {
+        for (double v : ticks(ylo, yhi)) yticks.emplace_back(v, tick_text(v));
     }
-    // Grid, ticks and axes.
-    for (double v : ticks(ylo, yhi)) {
+    for (const auto& [v, text] : yticks) {
         std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#e5e5e5\"/>",
                       left, Y(v), W - right, Y(v));
         o << buf << "<text x=\"" << left - 6 << "\" y=\"" << Y(v) + 4 << "\" text-anchor=\"end\" fill=\"#555\">"
-          << escape(tick_text(v)) << "</text>\n";
+          << escape(text) << "</text>\n";
     }
     for (double v : ticks(xlo, xhi)) {
         std::snprintf(buf, sizeof buf, "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#e5e5e5\"/>",
@@ -325,9 +376,8 @@ std::string svg_xy_plot(const std::string& title, const std::string& x_label, co
     o << buf;
     o << "<text x=\"" << 0.5 * (left + W - right) << "\" y=\"" << H - 8 << "\" text-anchor=\"middle\" fill=\"#333\">"
       << escape(x_label) << "</text>\n";
-    o << "<text transform=\"translate(14 " << 0.5 * (top + H - bottom) << ") rotate(-90)\" text-anchor=\"middle\" "
-      << "fill=\"#333\">" << escape(y_label) << "</text>\n";
-    if (line) {
+    o << "<text x=\"8\" y=\"16\" fill=\"#333\">" << escape(y_label) << "</text>\n";
+    if (line && !log_y) {
         std::snprintf(buf, sizeof buf,
                       "<line x1=\"%.1f\" y1=\"%.1f\" x2=\"%.1f\" y2=\"%.1f\" stroke=\"#555\" stroke-width=\"1.5\" "
                       "stroke-dasharray=\"6 4\"/>\n",
@@ -339,6 +389,7 @@ std::string svg_xy_plot(const std::string& title, const std::string& x_label, co
         const std::size_t n = std::min(s.x.size(), s.y.size());
         if (s.points) {
             for (std::size_t k = 0; k < n; ++k) {
+                if (log_y && !(s.y[k] > 0)) continue;
                 std::snprintf(buf, sizeof buf, "<circle cx=\"%.1f\" cy=\"%.1f\" r=\"3.5\" fill=\"%s\"/>\n", X(s.x[k]),
                               Y(s.y[k]), s.colour.c_str());
                 o << buf;
@@ -346,6 +397,7 @@ std::string svg_xy_plot(const std::string& title, const std::string& x_label, co
         } else {
             o << "<polyline fill=\"none\" stroke=\"" << s.colour << "\" stroke-width=\"2\" points=\"";
             for (std::size_t k = 0; k < n; ++k) {
+                if (log_y && !(s.y[k] > 0)) continue;
                 std::snprintf(buf, sizeof buf, "%.1f,%.1f ", X(s.x[k]), Y(s.y[k]));
                 o << buf;
             }
@@ -497,6 +549,8 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
          "<button type=\"button\" data-rate=\"1\" aria-pressed=\"true\">1&times;</button></span>\n"
          "<span class=\"time\" aria-live=\"off\"></span>\n</div>\n";
     o << "<canvas class=\"tryit-plot\" width=\"960\" height=\"220\" role=\"img\" aria-label=\"Energy against time\"></canvas>\n";
+    // The lesson's [[plot]]s of the run with these inputs (try-it.js puts in what the engine draws).
+    if (!L.plots.empty()) o << "<div class=\"tryit-lesson-plots\" data-plots=\"" << L.plots.size() << "\"></div>\n";
     o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";

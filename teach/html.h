@@ -53,7 +53,11 @@ std::string svg_plot(const std::string& title, const std::vector<double>& t, con
 // A plot of y against x (560 x 280, white): a lesson's [[plot]] (present/lesson_plots.h). Each
 // series as a line (per sample) or as points (per collision); `line`, when given, the fitted
 // straight line, dashed, over its x range. Ticks at round numbers; the axes' labels carry the
-// units ("t (s)"). Labels are plain text.
+// units ("t (s)"; y's across, above the axis). Labels are plain text. The title is the SVG's <title> and aria-label, not
+// drawn (the page's heading shows it); keys only for several series or a fitted line, in rows
+// that wrap. `log_y`: y on a logarithmic scale (whole decades; a geometric sequence, such as a
+// bouncing ball's intervals, as a straight line); values not above 0 are left out of it (the
+// caller says so), and so is `line`.
 struct XYSeries {
     std::string label;
     std::string colour;
@@ -65,7 +69,7 @@ struct XYLine {
     std::string label;  // its key: "fit: 0.0378 s per domino"
 };
 std::string svg_xy_plot(const std::string& title, const std::string& x_label, const std::string& y_label,
-                        const std::vector<XYSeries>& series, const std::optional<XYLine>& line);
+                        const std::vector<XYSeries>& series, const std::optional<XYLine>& line, bool log_y = false);
 
 // The "Try it" panel of a lesson page (collide material, when the site has the WebAssembly
 // module collide-engine.js; docs/commands/material.md, "The Try-it panel"): a slider for each of the lesson's

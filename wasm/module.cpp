@@ -10,12 +10,15 @@
 //                 (present/shown_collision.h, as `collide render` picks it) worked out
 //                 (teach/event_problem.h, solve.h, html.h worked_html) as `collide material`
 //                 and `collide solve --format json` show it, every [[figure]]'s collision as
-//                 `collide solve --format json` gives it, and what the page needs to draw
-//                 the bodies
+//                 `collide solve --format json` gives it, what the page needs to draw
+//                 the bodies, and the lesson's [[plot]]s of this run as `collide material`
+//                 draws them (present/lesson_plots.h, site_plots.h: the same SVG, alt text
+//                 and folded table)
 // Each returns {ok, text}: the JSON, or the reader's message without a file name
 // ("LINE:COL: key: message"); api.js turns a refusal into a thrown Error. Each run has the
 // work budget kWasmWorkBudget (engine/scene.h: a few seconds), beyond which it is refused with
 // its estimate (engine/run_error.h) rather than freezing the page.
+#include <cmath>
 #include <exception>
 #include <map>
 #include <optional>
@@ -31,7 +34,10 @@
 #include "scenario/solve_problem.h"
 #include "engine/record.h"
 #include "present/frame_times.h"
+#include "present/lesson_plots.h"
+#include "present/scene_run.h"
 #include "present/shown_collision.h"
+#include "present/site_plots.h"
 #include "teach/event_problem.h"
 #include "teach/html.h"
 #include "teach/notation.h"
@@ -136,6 +142,47 @@ std::string run_json(const SolveProblem& problem, const Solution& alone, const S
     return out.dump();
 }
 
+// The lesson's [[plot]]s of this run, as `collide material` draws them on the lesson page
+// (plot-K.svg, its alt text, the folded table; present/site_plots.h), and their numbers: each
+// series' points, the fitted line (slope, intercept, and along a chain the spacing and wave
+// speed) or the ratios (each value over the one before, and the pair's e).
+ordered_json plots_json(const Lesson& lesson, const SceneRun& run) {
+    const std::vector<PlotData> plots = lesson_plots(lesson, lesson.scene, run);
+    const std::vector<std::pair<std::string, std::string>> svgs = plot_svgs(plots);
+    ordered_json out = ordered_json::array();
+    // Numbers that are not finite (a ratio over a zero interval) as null.
+    const auto finite = [](double x) { return std::isfinite(x) ? ordered_json(x) : ordered_json(nullptr); };
+    for (std::size_t k = 0; k < plots.size(); ++k) {
+        const PlotData& p = plots[k];
+        ordered_json series = ordered_json::array();
+        for (const PlotSeriesData& s : p.series)
+            series.push_back({{"name", s.label}, {"words", s.words}, {"x", s.x}, {"y", s.y}, {"number", s.number}});
+        ordered_json line = nullptr, ratio = nullptr;
+        if (p.line) {
+            line = {{"slope", p.line->slope},           {"intercept", p.line->intercept}, {"points", p.line->points},
+                    {"slope_unit", p.line->slope_unit}, {"spacing", p.line->spacing},     {"speed", nullptr}};
+            if (p.line->speed) line["speed"] = *p.line->speed;
+        }
+        if (p.ratio) {
+            ordered_json ratios = ordered_json::array();
+            for (double r : p.ratio->ratios) ratios.push_back(finite(r));
+            ratio = {{"ratios", ratios}, {"mean", p.ratio->mean}, {"restitution", nullptr}};
+            if (p.ratio->restitution) ratio["restitution"] = *p.ratio->restitution;
+        }
+        out.push_back({{"file", svgs[k].first},
+                       {"title", p.title},
+                       {"svg", svgs[k].second},
+                       {"alt", plot_alt(p)},
+                       {"data_html", plot_data_html(p)},
+                       {"summary", p.summary},
+                       {"missing", p.missing},
+                       {"series", series},
+                       {"line", line},
+                       {"ratio", ratio}});
+    }
+    return out;
+}
+
 // `values`: a JSON object {"A.mass": 3, ...} (the [[vary]] inputs' names, lesson_with_inputs); `fps`: the
 // page's frame rate (the states are sampled at 1/fps, as the site's frames).
 std::string lesson_json(const std::string& text, const std::string& values, double fps) {
@@ -152,9 +199,9 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     lesson.scene.file.clear();
     const Scene& scene = lesson.scene;
     if (!(fps > 0 && fps <= 1000)) throw InputError("", {}, "fps", "expected 0 < fps <= 1000");
-    RecordOptions options;
-    options.keep = figure_keeps(&lesson);
-    const AnyRecording any = record_any(scene, frame_times(scene, fps), options);
+    // One run, as the site's (present/render_job.cpp run_stage): its frames for the plots too.
+    const SceneRun ran = run_scene(scene, frame_times(scene, fps), nullptr, figure_keeps(&lesson));
+    const AnyRecording& any = ran.record;
 
     std::string states = "[", events = "[";
     std::optional<CollisionInstant> collision;
@@ -222,8 +269,8 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     figures += "]";
     std::string s = out.dump();
     s.pop_back();
-    return s + ",\"worked\":" + worked + ",\"figures\":" + figures + ",\"states\":" + states + ",\"events\":" + events +
-           "}";
+    return s + ",\"worked\":" + worked + ",\"figures\":" + figures + ",\"plots\":" + plots_json(lesson, ran).dump() +
+           ",\"states\":" + states + ",\"events\":" + events + "}";
 }
 
 Answer lesson_answer(const std::string& text, const std::string& values, double fps) {

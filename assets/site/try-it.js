@@ -3,7 +3,9 @@
 // and returns the run (states at the page's frame rate, events), the page's collision worked
 // out (the same HTML as the page's worked example) and `collide solve --format json`'s numbers
 // for it. This script only draws what it gets: a light 1D / 2D picture in the figures' colours
-// (render/style.h, given as the page's palette), a plot of the energies, and the numbers.
+// (render/style.h, given as the page's palette), a plot of the energies, and the numbers; the
+// lesson's own [[plot]]s come drawn by the engine (the SVG, alt text and folded table that
+// `collide material` writes on the page), and are put in as they are.
 // No network: the module is a file beside the pages, loaded by a <script> tag (file:// works).
 (function () {
   'use strict';
@@ -22,6 +24,7 @@
   var plot = panel.querySelector('canvas.tryit-plot');
   var numbers = panel.querySelector('.tryit-numbers');
   var worked = panel.querySelector('.tryit-worked');
+  var lessonPlots = panel.querySelector('.tryit-lesson-plots');
   var timeText = panel.querySelector('.tryit-player .time');
   var inputs = Array.prototype.slice.call(panel.querySelectorAll('input[type=range]'));
   var values = {};  // the inputs changed from the lesson's own values, by name ("A.mass")
@@ -142,7 +145,28 @@
     frame = Math.min(frame, run.states.length - 1);
     showNumbers();
     worked.innerHTML = run.worked ? run.worked.html : '<p>No collision in this run.</p>';
+    showPlots();
     draw();
+  }
+
+  // ---- The lesson's [[plot]]s of this run: the engine's SVG, alt text and folded table ----
+  function showPlots() {
+    if (!lessonPlots) return;
+    var open = {};  // a table the reader unfolded stays unfolded when the inputs move
+    lessonPlots.querySelectorAll('details.plot-data').forEach(function (d, k) { if (d.open) open[k] = true; });
+    var h = '';
+    (run.plots || []).forEach(function (p) {
+      h += '<section class="lesson-plot" data-file="' + escapeHtml(p.file) + '"><h3>' + escapeHtml(p.title) + '</h3>' +
+           '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs.</figcaption>' +
+           '</figure>' + p.data_html + '</section>';
+    });
+    lessonPlots.innerHTML = h;
+    lessonPlots.querySelectorAll('section.lesson-plot').forEach(function (section, k) {
+      var svg = section.querySelector('svg');
+      if (svg) svg.setAttribute('aria-label', run.plots[k].alt);  // what it shows, as the page's alt text
+      var d = section.querySelector('details.plot-data');
+      if (d && open[k]) d.open = true;
+    });
   }
 
   // ---- The numbers of the page's collision ----

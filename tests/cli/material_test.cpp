@@ -699,7 +699,7 @@ TEST(Material, EachDeclaredPlotIsOnItsPageWithAltTextAndTable) {
         {"dominoes", 1, "a wave speed of "},
         {"dominoes", 2, "Time between strikes"},
         {"tower", 1, "Impulse at each contact of the tower when the ball strikes: "},
-        {"restitution", 1, "B (e=1).touching point.v.x from "},
+        {"restitution", 1, "B (e=1): velocity of touching point, x from "},
     };
     for (const auto& [id, k, words] : expected) {
         SCOPED_TRACE(id + " plot " + std::to_string(k));
@@ -724,13 +724,24 @@ TEST(Material, EachDeclaredPlotIsOnItsPageWithAltTextAndTable) {
         ASSERT_NE(table, std::string::npos);
         EXPECT_LT(table, page.find("<img src=\"plot-" + std::to_string(k + 1) + ".svg\"", img));
         EXPECT_NE(page.find("<table>", table), std::string::npos);
-        // The axes carry units.
+        // The title once: the page's heading, and in the SVG only its <title> (not drawn again).
+        EXPECT_NE(svg.find("<title>"), std::string::npos);
+        EXPECT_EQ(svg.find("font-weight=\"bold\""), std::string::npos);
+        // The axes carry units, and the quantities in words.
         if (id == "bouncing-ball" && k == 1) {
             EXPECT_NE(svg.find(">t (s)<"), std::string::npos);
-            EXPECT_NE(svg.find(">ball.position.y (m)<"), std::string::npos);
+            EXPECT_NE(svg.find(">ball: height of centre, y (m)<"), std::string::npos);
+        }
+        if (id == "bouncing-ball" && k == 2) {
+            EXPECT_NE(svg.find("log scale)<"), std::string::npos);
+        }
+        if (id == "restitution") {
+            EXPECT_NE(svg.find(">velocity (m/s)<"), std::string::npos);
+            EXPECT_NE(svg.find(">B (e=1): velocity of touching point, x<"), std::string::npos);
+            EXPECT_EQ(svg.find("B (e=1).touching point.v.x"), std::string::npos);
         }
         if (id == "dominoes" && k == 1) {
-            EXPECT_NE(svg.find(">time (s)<"), std::string::npos);
+            EXPECT_NE(svg.find(">time t (s)<"), std::string::npos);
             EXPECT_NE(svg.find("s per domino"), std::string::npos);
         }
     }

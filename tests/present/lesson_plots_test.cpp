@@ -188,6 +188,13 @@ TEST(LessonPlots, BouncingBallFollowsTheParabolasAndTheGeometricSeries) {
     EXPECT_NEAR(iv.ratio->mean, e, 0.01);
     EXPECT_NE(iv.summary.find("e = 0.5"), std::string::npos) << iv.summary;
     EXPECT_NE(iv.summary.find("0.5 times the one before"), std::string::npos) << iv.summary;
+    // In words, and the intervals on a log scale (40 of them would lie on 0 on a linear one).
+    EXPECT_EQ(h.words, "ball: height of centre, y");
+    EXPECT_EQ(plots[0].y_label, "ball: height of centre, y (m)");
+    EXPECT_EQ(s.words, "time since the previous bounce");
+    EXPECT_FALSE(plots[0].log_y);
+    EXPECT_TRUE(iv.log_y);
+    EXPECT_EQ(iv.y_label, "time since the previous bounce (s, log scale)");
 }
 
 // Restitution, bottom row (e = 1): after the hit the centres move as the impulse
@@ -204,6 +211,9 @@ TEST(LessonPlots, RestitutionCentresAfterTheHitAreTheClosedForm) {
     const double j = (1 + e) * 2.0 / (1 / 0.5 + 1 / 1.0 + 0.15 * 0.15 / Ib);
     const PlotSeriesData &A = p.series[0], &B = p.series[1], &point = p.series[2];
     EXPECT_EQ(point.label, "B (e=1).touching point.v.x");
+    EXPECT_EQ(A.words, "A (e=1): velocity of centre, x");
+    EXPECT_EQ(point.words, "B (e=1): velocity of touching point, x");
+    EXPECT_EQ(p.y_label, "velocity (m/s)");
     int after = 0;
     for (std::size_t i = 0; i < A.x.size(); ++i) {
         if (A.y[i] > 2.0 - 1e-12) {  // before the hit: A at 2 m/s, B and its point at rest

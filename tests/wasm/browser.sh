@@ -9,6 +9,10 @@
 #   equals the first collision of `collide step --events --json` on the lesson with v = [2, 0],
 #   to 1e-9 relative: the page samples the run at its frame rate), and the name the lesson has
 #   no input for shown on the page.
+# - bouncing-ball: the panel shows the lesson's plots as the engine draws them (an SVG each,
+#   labelled with the page's alt text), and when its e slider moves (an input event, as a hand
+#   moves it) to 0.4 the bounce-interval plot is replaced by the new run's: another SVG, each
+#   interval 0.4 times the one before.
 # - a run beyond the module's work budget per call (a free box at 1e5 rad/s for 1 s: about
 #   2e7 units, which `collide step` runs in seconds) answers with the refusal and its estimate
 #   at once instead of freezing the page (issue 34).
@@ -24,7 +28,7 @@ rm -rf "$work"
 mkdir -p "$work"
 [[ -f ${COLLIDE_ENGINE_JS:-} ]] || { echo "browser.sh: COLLIDE_ENGINE_JS=${COLLIDE_ENGINE_JS:-} is not a file" >&2; exit 1; }
 
-"$collide" material -o "$work/site" --size 640x360 --quiet catch-up general-2d dominoes
+"$collide" material -o "$work/site" --size 640x360 --quiet catch-up general-2d dominoes bouncing-ball
 [[ -f $work/site/collide-engine.js && -f $work/site/try-it.js ]] || { echo "browser.sh: the site has no module" >&2; exit 1; }
 page="file://$work/site/catch-up/index.html"
 
@@ -114,6 +118,54 @@ awk -v a="$shown" -v b="$expected" 'BEGIN { d = a - b; if (d < 0) d = -d; m = (b
   echo "browser.sh: FAIL: they differ" >&2
   exit 1
 }
+# The lesson's plots in the panel, and a slider moved: a copy of bouncing-ball's page with a
+# script that waits for the panel's plots, moves the e slider to 0.4, and writes what it saw.
+ball="$work/site/bouncing-ball"
+cp "$ball/index.html" "$ball/moved.html"
+cat >>"$ball/moved.html" <<'HTML'
+<pre id="moved">waiting</pre>
+<script>
+(function () {
+  var panel = document.getElementById('try-it'), out = document.getElementById('moved');
+  var before = null, tries = 0;
+  function plot() { return panel.querySelectorAll('.tryit-lesson-plots section.lesson-plot')[1]; }
+  function look() {
+    var p = plot(), svg = p && p.querySelector('svg');
+    if (++tries > 200) { out.textContent = 'timeout: ' + (before ? 'no new plot' : 'no plot'); return; }
+    if (!svg) return setTimeout(look, 50);
+    var summary = p.querySelector('details.plot-data p').textContent;
+    if (before === null) {
+      before = {svg: svg.outerHTML, label: svg.getAttribute('aria-label'), summary: summary,
+                count: panel.querySelectorAll('.tryit-lesson-plots svg').length};
+      var e = panel.querySelector('input[data-name="scene.restitution"]');
+      e.value = '0.4';
+      e.dispatchEvent(new Event('input'));
+      return setTimeout(look, 50);
+    }
+    if (svg.outerHTML === before.svg) return setTimeout(look, 50);
+    out.textContent = 'plots: ' + before.count + '\nbefore: ' + before.summary + '\nlabel: ' + before.label +
+                      '\nafter: ' + summary;
+  }
+  look();
+})();
+</script>
+HTML
+browse_dom "file://$ball/moved.html" "$work/moved.html"
+browse --screenshot="$work/bouncing-ball.png" "file://$ball/index.html?show=try-it&scene.restitution=0.4"
+moved=$(sed -n '/<pre id="moved">/,/<\/pre>/p' "$work/moved.html" | sed 's/<pre id="moved">//; s/<\/pre>//')
+echo "browser.sh: bouncing-ball's panel plots: $moved"
+grep -q '^plots: 2$' <<<"$moved" || { echo "browser.sh: FAIL: the panel does not show the lesson's 2 plots" >&2; exit 1; }
+grep -q '^label: Time between one bounce and the next: ' <<<"$moved" || {
+  echo "browser.sh: FAIL: the panel's plot is not labelled with the page's alt text" >&2
+  exit 1
+}
+grep -q '^before: .*0.5 times the one before' <<<"$moved" || { echo "browser.sh: FAIL: before the move, not e = 0.5" >&2; exit 1; }
+grep -q '^after: .*0.4 times the one before.*e = 0.4' <<<"$moved" || {
+  echo "browser.sh: FAIL: after the e slider moved to 0.4 the plot did not follow" >&2
+  exit 1
+}
+[[ -s $work/bouncing-ball.png ]] || { echo "browser.sh: no bouncing-ball.png" >&2; exit 1; }
+
 # A run beyond the module's budget: an Error with the estimate, within seconds, not a frozen page.
 cp "$COLLIDE_ENGINE_JS" "$work/collide-engine.js"
 cat >"$work/refused.html" <<'HTML'
