@@ -104,7 +104,7 @@ F unit(const std::string& u) {
 
 namespace {
 thread_local bool student = false;  // StudentNumbers
-constexpr double kNoise = 1e-10;    // SI: shown as 0 for students
+constexpr double kNoise = 1e-8;     // SI: shown as 0 for students
 // Four significant digits of a vector's largest entry L place its last digit at L/1000 or
 // L/10000 at the finest: an entry below 5e-5 L rounds to 0 at the vector's own precision.
 constexpr double kRelativeNoise = 5e-5;

@@ -48,8 +48,9 @@ std::string num_data(double x);
 // lives on the thread: num(), vec(), spin(), mat() and num_text() give 4 significant digits,
 // and show as 0 what is floating-point noise of an exact event or below the precision shown: a
 // vector's component below 5e-5 of its largest (it rounds to 0 at the vector's 4 digits), and
-// any value below 1e-10 in SI units (1e-9 of 0.1 m, 0.1 m/s, 0.1 kg: smaller than anything a
-// lesson is about). `collide solve` keeps 6 digits for checking.
+// any value below 1e-8 in SI units (1e-7 of 0.1 m, 0.1 m/s, 0.1 kg: a hundred times below the
+// smallest a lesson is about, a domino's 1e-6 N s; the island solver leaves 1e-9 m/s on boxes
+// at rest). `collide solve` keeps 6 digits for checking.
 class StudentNumbers {
 public:
     StudentNumbers();

@@ -392,6 +392,11 @@ TEST(WorkedText, StudentNumbersDropFloatingPointNoiseOnly) {
     EXPECT_EQ(notation::vec(Vec3(2e-3, -1.5e-3, 0), 2).txt, "(0.002, -0.0015)");
     EXPECT_EQ(notation::num(-0.800003).txt, "-0.8");
     EXPECT_EQ(notation::num(1.23456e-4).tex, "0.0001235");
+    // The island solver's residue on a box at rest (tower: 4.11e-10 m/s) is 0; a domino's real
+    // 1.6e-6 N s impulse is not.
+    EXPECT_EQ(notation::vec(Vec3(4.11e-10, 1.481e-10, -2.026e-10), 3).txt, "(0, 0, 0)");
+    EXPECT_EQ(notation::num_text(-3.887e-9), "0");
+    EXPECT_EQ(notation::vec(Vec3(-1.659e-6, 1.596e-5, 0), 2).txt, "(-1.659e-06, 1.596e-05)");
 }
 
 // The carts of lessons/solve/carts-1d.toml against the closed form of a 1D impact:
