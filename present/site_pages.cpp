@@ -338,8 +338,6 @@ struct Shown {
     }
 };
 
-// The lesson's [[vary]] inputs, from the lesson data (the Try-it sliders and the worksheets'
-// ranges): the teacher's page lists them, so a lesson that gains one shows it.
 // A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX
 // ("A (e=0.1).mass" -> "A%20%28e%3D0.1%29.mass"), as the panel's URLSearchParams reads it back.
 std::string percent_encoded(const std::string& text) {
@@ -397,6 +395,8 @@ std::string new_numbers_html(const Lesson& L, const CheckVariant& c, bool try_it
     return o.str();
 }
 
+// The lesson's [[vary]] inputs, from the lesson data (the Try-it sliders and the worksheets'
+// ranges): the teacher's page lists them, so a lesson that gains one shows it.
 std::string inputs_html(const Lesson& L) {
     std::ostringstream o;
     if (L.vary.empty()) {
