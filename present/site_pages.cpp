@@ -1,7 +1,6 @@
 #include "present/site_pages.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -337,63 +336,6 @@ struct Shown {
         return o.str();
     }
 };
-
-// A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX
-// ("A (e=0.1).mass" -> "A%20%28e%3D0.1%29.mass"), as the panel's URLSearchParams reads it back.
-std::string percent_encoded(const std::string& text) {
-    std::string out;
-    for (unsigned char c : text) {
-        if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
-            out += static_cast<char>(c);
-        } else {
-            char hex[4];
-            std::snprintf(hex, sizeof hex, "%%%02X", c);
-            out += hex;
-        }
-    }
-    return out;
-}
-
-// "Check yourself"'s other numbers (teach/check_variant.h): the inputs that differ from the
-// lesson's own, a link that sets them in the Try-it panel (`try_it`), and the questions whose
-// answer these numbers leave as in the watched run (no draw changed it: on the teacher's page,
-// `teacher`; the student's page does not single them out).
-std::string new_numbers_html(const Lesson& L, const CheckVariant& c, bool try_it, bool teacher) {
-    std::ostringstream o, rows;
-    std::string query;
-    for (const LessonVary& v : L.vary) {
-        const auto at = c.sheet.values.find(v.name());
-        if (at == c.sheet.values.end() || at->second == v.lesson_value) continue;
-        rows << "<tr><td>" << math(html::vary_label(v)) << "</td><td>" << escape(notation::num_data(v.lesson_value))
-             << "</td><td><strong>" << escape(notation::num_data(at->second)) << "</strong></td></tr>\n";
-        query += (query.empty() ? "?" : "&amp;") + percent_encoded(v.name()) + "=" + html::number_attr(at->second);
-    }
-    o << "<div class=\"new-numbers\">\n";
-    if (teacher)
-        o << "<p>The student's page asks the numeric questions below with these values instead of the lesson's "
-             "own, so that reading the figures, which show the lesson's run, does not answer them. Each answer is "
-             "for these values, with the lesson's own and its working beside it.</p>\n";
-    else
-        o << "<p><strong>Now with other numbers.</strong> The numeric questions below ask about the same collision "
-             "with these values (the figures above show the lesson's own); everything else is as in the set-up. "
-             "Work each answer out the way the worked example does (where only a run can tell, measure it in the "
-             "Try-it panel with these numbers), then check it.</p>\n";
-    if (rows.str().empty()) {
-        o << "<p class=\"warning\">No draw of the lesson's ranges gave other values: the questions are about the "
-             "run you watched.</p>\n";
-    } else {
-        o << "<table class=\"new-values\">\n<tr><th>input</th><th>in the run you watched</th><th>now</th></tr>\n"
-          << rows.str() << "</table>\n";
-    }
-    if (try_it && !query.empty())
-        o << "<p class=\"noprint\">Once you have checked your answers, see this run: <a href=\"index.html" << query
-          << "#try-it\">the Try-it panel with these numbers</a>.</p>\n";
-    for (std::size_t i : teacher ? c.same_as_watched : std::vector<std::size_t>{})
-        o << "<p class=\"note\">With these numbers too, the answer to “" << math(L.questions[i].text)
-          << "” is the one of the run the students watched: no draw of the lesson's ranges tried changes it.</p>\n";
-    o << "</div>\n";
-    return o.str();
-}
 
 // The lesson's [[vary]] inputs, from the lesson data (the Try-it sliders and the worksheets'
 // ranges): the teacher's page lists them, so a lesson that gains one shows it.
