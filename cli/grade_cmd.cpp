@@ -23,7 +23,8 @@ int run_grade(const GradeOptions& opt, std::ostream& out, std::ostream& err) {
             staged.commit();
         }
         out << tables;
-        if (!opt.out_dir.empty()) out << "wrote " << opt.out_dir << "/marks.csv and " << opt.out_dir << "/report.html\n";
+        if (!opt.out_dir.empty())
+            out << "wrote " << opt.out_dir << "/marks.csv and " << opt.out_dir << "/report.html\n";
         return 0;
     });
 }

@@ -62,8 +62,9 @@ std::string histogram_svg(const QuestionSummary& q, double tolerance) {
     for (double r : q.ratios_right) right[static_cast<std::size_t>(bin(r))]++;
     for (double r : q.ratios_wrong) wrong[static_cast<std::size_t>(bin(r))]++;
     int top = 1;
-    for (int i = 0; i < n + 2; ++i) top = std::max(top, right[static_cast<std::size_t>(i)] + wrong[static_cast<std::size_t>(i)]);
-    const double W = 640, H = 170, x0 = 40, y0 = 20, plot_h = 110, bw = (W - x0 - 10) / (n + 2);
+    for (int i = 0; i < n + 2; ++i)
+        top = std::max(top, right[static_cast<std::size_t>(i)] + wrong[static_cast<std::size_t>(i)]);
+    const double W = 640, H = 172, x0 = 40, y0 = 20, plot_h = 110, bw = (W - x0 - 10) / (n + 2);
     const auto xat = [&](int i) { return x0 + i * bw; };
     const auto xval = [&](double r) { return x0 + (1 + (r - (kLo - kBin / 2)) / kBin) * bw; };
     std::ostringstream o;
@@ -72,8 +73,7 @@ std::string histogram_svg(const QuestionSummary& q, double tolerance) {
       << "\" width=\"" << W << "\" height=\"" << H << "\" role=\"img\" aria-label=\"answers to question " << q.question
       << " as multiples of the right value\">\n";
     // The band of right answers: 1 +- tolerance.
-    std::snprintf(buf, sizeof buf,
-                  "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"#e3f4e3\"/>\n",
+    std::snprintf(buf, sizeof buf, "<rect x=\"%.1f\" y=\"%.1f\" width=\"%.1f\" height=\"%.1f\" fill=\"#e3f4e3\"/>\n",
                   xval(1 - tolerance) - 1, y0, xval(1 + tolerance) - xval(1 - tolerance) + 2, plot_h);
     o << buf;
     for (int i = 0; i < n + 2; ++i) {
@@ -109,7 +109,7 @@ std::string histogram_svg(const QuestionSummary& q, double tolerance) {
     std::snprintf(buf, sizeof buf,
                   "<text x=\"%.1f\" y=\"%.1f\" font-size=\"10\" text-anchor=\"middle\">less</text><text x=\"%.1f\" "
                   "y=\"%.1f\" font-size=\"10\" text-anchor=\"middle\">more</text>\n",
-                  xat(0) + bw / 2, y0 + plot_h + 16, xat(n + 1) + bw / 2, y0 + plot_h + 16);
+                  xat(0) + bw / 2, H - 6, xat(n + 1) + bw / 2, H - 6);
     o << buf;
     std::snprintf(buf, sizeof buf,
                   "<text x=\"%.1f\" y=\"%.1f\" font-size=\"11\" text-anchor=\"middle\">the answer as a multiple of "
@@ -184,7 +184,8 @@ std::string grade_tables(const AnswerKey& key, const std::vector<Mark>& marks) {
     std::ostringstream o;
     std::vector<int> questions;
     for (const Mark& m : marks)
-        if (std::find(questions.begin(), questions.end(), m.question) == questions.end()) questions.push_back(m.question);
+        if (std::find(questions.begin(), questions.end(), m.question) == questions.end())
+            questions.push_back(m.question);
     std::sort(questions.begin(), questions.end());
     o << "Lesson " << key.lesson << ": 1 mark per question (within its tolerance).\n\nstudent";
     for (int q : questions) o << "  Q" << q;
@@ -198,7 +199,9 @@ std::string grade_tables(const AnswerKey& key, const std::vector<Mark>& marks) {
         int total = 0;
         for (const Mark* m : ms) {
             std::snprintf(buf, sizeof buf, "  %*s", static_cast<int>(std::to_string(m->question).size()) + 1,
-                          !m->answered ? "-" : m->right ? "1" : "0");
+                          !m->answered ? "-"
+                          : m->right   ? "1"
+                                       : "0");
             o << buf;
             total += m->right ? 1 : 0;
         }
@@ -221,8 +224,8 @@ std::string marks_csv(const std::vector<Mark>& marks) {
     std::ostringstream o;
     o << "student,question,quantity,answer,value,unit,right_value,mark,note,slip\n";
     for (const Mark& m : marks) {
-        o << m.student << "," << m.question << "," << (m.key ? m.key->quantity : "") << "," << csv_field(m.given)
-          << "," << csv_field(csv_value(m.got)) << "," << csv_field(m.key ? m.key->unit : "") << ","
+        o << m.student << "," << m.question << "," << (m.key ? m.key->quantity : "") << "," << csv_field(m.given) << ","
+          << csv_field(csv_value(m.got)) << "," << csv_field(m.key ? m.key->unit : "") << ","
           << csv_field(m.key ? csv_value(m.key->value) : "") << "," << (m.right ? 1 : 0) << "," << csv_field(m.note)
           << "," << csv_field(m.slip) << "\n";
     }
@@ -278,8 +281,8 @@ std::string grade_report_html(const AnswerKey& key, const std::vector<Mark>& mar
         double tol = 0.0;
         for (const Mark& m : marks)
             if (m.question == q.question && m.key) tol = m.key->tolerance;
-        o << "<div class=\"q\" id=\"q" << q.question << "\">\n<h3>Question " << q.question << ": "
-          << escape(q.quantity) << "</h3>\n<p><span class=\"right\">" << q.right << " right</span>, <span class=\"wrong\">"
+        o << "<div class=\"q\" id=\"q" << q.question << "\">\n<h3>Question " << q.question << ": " << escape(q.quantity)
+          << "</h3>\n<p><span class=\"right\">" << q.right << " right</span>, <span class=\"wrong\">"
           << q.answered - q.right << " wrong</span>, " << q.students - q.answered << " not answered.";
         if (q.common_count > 0) {
             o << " The most common wrong answer: ";

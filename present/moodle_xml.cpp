@@ -140,9 +140,9 @@ std::string question_xml(const Lesson& L, const StudentSheet& s, std::size_t k, 
     ask += "</p>\n";
     std::ostringstream o;
     if (q.has_quantity() && !a.is_vector) {
-        o << common_head("numerical", nm, part.html + ask + "<p>Give the number and its unit (" + escape(a.unit) +
-                                              ").</p>\n",
-                         part.file, feedback, id)
+        o << common_head("numerical", nm,
+                         part.html + ask + "<p>Give the number and its unit (" + escape(a.unit) + ").</p>\n", part.file,
+                         feedback, id)
           << "<answer fraction=\"100\" format=\"moodle_auto_format\">\n<text>" << full(a.value)
           << "</text>\n<feedback format=\"html\"><text></text></feedback>\n<tolerance>"
           << full(marking_allowance(a.value, q.tolerance)) << "</tolerance>\n</answer>\n"

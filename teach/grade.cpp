@@ -109,7 +109,8 @@ AnswerKey read_answer_key(const std::string& path) {
         const std::string where = "students[" + std::to_string(i) + "].";
         KeyStudent s;
         s.student = static_cast<int>(number_field(sj, "student", path, where));
-        if (key.student(s.student)) throw InputError(path, {}, where + "student", "student " + std::to_string(s.student) + " twice");
+        if (key.student(s.student))
+            throw InputError(path, {}, where + "student", "student " + std::to_string(s.student) + " twice");
         if (sj.contains("values") && sj["values"].is_object())
             for (const auto& [name, v] : sj["values"].items())
                 if (v.is_number()) s.values[name] = v.get<double>();
@@ -207,8 +208,9 @@ std::vector<CsvRecord> parse_csv(const std::string& text, const std::string& nam
         }
         if (c == '"') {
             if (!trim(fieldtext).empty() || after_quote)
-                throw InputError(name, {line, 0}, "", "a double quote inside a field that is not quoted (RFC 4180: "
-                                                      "quote the whole field and double the quote)");
+                throw InputError(name, {line, 0}, "",
+                                 "a double quote inside a field that is not quoted (RFC 4180: "
+                                 "quote the whole field and double the quote)");
             fieldtext.clear();
             quoted = true;
             any = true;
@@ -298,12 +300,13 @@ std::vector<Mark> grade_answers_text(const AnswerKey& key, const std::string& cs
             std::string hint;
             if (r.fields.size() == 4)
                 hint = " (a decimal comma: put the answer in double quotes, \"1,25\"; or use a decimal point)";
-            throw InputError(name, at, "",
-                             "expected 3 fields (student,question,answer), got " + std::to_string(r.fields.size()) +
-                                 hint);
+            throw InputError(
+                name, at, "",
+                "expected 3 fields (student,question,answer), got " + std::to_string(r.fields.size()) + hint);
         }
         const auto sn = whole(r.fields[0]);
-        if (!sn) throw InputError(name, at, "student", "expected a student's number, got '" + one_line(r.fields[0]) + "'");
+        if (!sn)
+            throw InputError(name, at, "student", "expected a student's number, got '" + one_line(r.fields[0]) + "'");
         const KeyStudent* s = key.student(*sn);
         if (!s)
             throw InputError(name, at, "student",
@@ -324,9 +327,9 @@ std::vector<Mark> grade_answers_text(const AnswerKey& key, const std::string& cs
                                  " (numeric questions: " + list + ")");
         }
         if (marks.count({*sn, *qn}))
-            throw InputError(name, at, "", "student " + std::to_string(*sn) + ", question " + std::to_string(*qn) +
-                                               " is answered twice (first on line " +
-                                               std::to_string(marks[{*sn, *qn}].line) + ")");
+            throw InputError(name, at, "",
+                             "student " + std::to_string(*sn) + ", question " + std::to_string(*qn) +
+                                 " is answered twice (first on line " + std::to_string(marks[{*sn, *qn}].line) + ")");
         Mark m;
         m.student = *sn;
         m.question = *qn;

@@ -54,10 +54,10 @@ std::vector<Slip> likely_slips(const KeyAnswer& answer, const KeyStudent& studen
 // One answer marked.
 struct Mark {
     int student = 0, question = 0;
-    int line = 0;            // its line in the CSV; 0 when not answered
-    std::string given;       // the answer as written
-    bool answered = false;   // a non-empty answer
-    bool right = false;      // within the tolerance
+    int line = 0;             // its line in the CSV; 0 when not answered
+    std::string given;        // the answer as written
+    bool answered = false;    // a non-empty answer
+    bool right = false;       // within the tolerance
     std::vector<double> got;  // the answer in the key's unit (empty when not comparable)
     const KeyAnswer* key = nullptr;
     std::string note;  // "no unit: taken as N s", "km/h converted to m/s", "J is not a unit of m/s", ...
