@@ -65,7 +65,8 @@ TEST(Units, Definitions) {
 }
 
 TEST(Csv, Rfc4180) {
-    const auto r = parse_csv("\xef\xbb\xbfstudent,question,answer\r\n1,2,\"1,5 m/s\"\r\n\r\n3,4,\"say \"\"hi\"\"\nthere\"\n5,6,7", "a.csv");
+    const auto r = parse_csv(
+        "\xef\xbb\xbfstudent,question,answer\r\n1,2,\"1,5 m/s\"\r\n\r\n3,4,\"say \"\"hi\"\"\nthere\"\n5,6,7", "a.csv");
     ASSERT_EQ(r.size(), 4u);
     EXPECT_EQ(r[0].fields[0], "student");
     EXPECT_EQ(r[1].line, 2);
