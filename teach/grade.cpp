@@ -292,6 +292,7 @@ std::vector<Mark> grade_answers_text(const AnswerKey& key, const std::string& cs
         std::transform(first.begin(), first.end(), first.begin(), [](unsigned char c) { return std::tolower(c); });
         if (first == "student") records.erase(records.begin());
     }
+    if (records.empty()) throw InputError(name, {}, "", "no answers: expected rows of student,question,answer");
     std::map<std::pair<int, int>, Mark> marks;
     std::set<int> named;
     for (const CsvRecord& r : records) {

@@ -66,7 +66,7 @@ struct Mark {
 
 // The marks of the students the CSV names, one for every numeric question of each (those
 // without a row: not answered), ordered by student and question. Throws InputError naming
-// the CSV, the line and the field for a bad row: a record without 3 fields, a student or
+// the CSV, the line and the field for a bad row (or the CSV alone when it has no row): a record without 3 fields, a student or
 // question the key does not have, a (student, question) given twice, an answer that is not a
 // number (or vector) with an optional unit, a unit not known. Reads no CSV before the key.
 std::vector<Mark> grade_answers(const AnswerKey& key, const std::string& csv_path);

@@ -148,6 +148,11 @@ for text, line, field, msg in bad:
     check(r.stdout == "", f"{text!r}: nothing on stdout")
     check(not os.path.exists(report), f"{text!r}: no report written")
 
+# A file with no answer (the header alone) is refused, not a class of nobody.
+r, ans = grade(key_path, "student,question,answer\n", os.path.join(tmp, "bad-report"))
+check(r.returncode == 2 and r.stderr == f"collide: error: {ans}: no answers: expected rows of student,question,answer\n"
+      and not os.path.exists(os.path.join(tmp, "bad-report")), f"no answers: {r.stderr!r}")
+
 subprocess.run(["rm", "-rf", tmp])
 for f in failures:
     print("FAIL:", f)
