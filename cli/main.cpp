@@ -11,6 +11,7 @@
 
 #include "cli/compare_cmd.h"
 #include "cli/exit_code.h"
+#include "cli/grade_cmd.h"
 #include "cli/gui_cmd.h"
 #include "scenario/input_error.h"
 #include "cli/interactive.h"
@@ -192,14 +193,36 @@ int main(int argc, char** argv) {
         })
         ->capture_default_str();
     worksheet->add_flag("--force", worksheet_options.force, "replace a directory that is not empty");
+    worksheet
+        ->add_option("--format", worksheet_options.format,
+                     "what to write, comma-separated: html (sheets.html, key.html, PDFs), moodle (DIR/moodle.xml, "
+                     "Moodle XML questions); key.json always")
+        ->capture_default_str();
     worksheet->footer(
         "Each student's values are drawn from the lesson's [[vary]] ranges and the engine answers\n"
         "each sheet. Writes, in DIR (for several lessons in DIR/ID/, with DIR/index.html):\n"
         "sheets.html (one page per student: givens, questions, blanks), key.html (every student's\n"
         "values, answers and worked example), key.json (for scripts) and, when weasyprint is\n"
-        "installed, sheets.pdf and key.pdf. Built beside DIR and renamed into place when complete.\n"
+        "installed, sheets.pdf and key.pdf; with --format moodle also DIR/moodle.xml (a question\n"
+        "category per lesson question, a variant per student). Built beside DIR and renamed into\n"
+        "place when complete. Mark the answers with collide grade DIR/key.json ANSWERS.csv.\n"
         "Example: collide worksheet catch-up -o out/ws --students 30 --seed 7\n"
         "See docs/commands/worksheet.md.");
+    collide::GradeOptions grade_options;
+    CLI::App* grade =
+        app.add_subcommand("grade", "Mark a class's answers (CSV) against a worksheet's key.json; write a report");
+    grade->add_option("KEY", grade_options.key, "the key.json collide worksheet wrote")->required();
+    grade->add_option("ANSWERS", grade_options.answers, "CSV (RFC 4180) of student,question,answer")->required();
+    grade->add_option("-o,--output", grade_options.out_dir, "also write REPORT/marks.csv and REPORT/report.html");
+    grade->add_flag("--force", grade_options.force, "replace a REPORT directory that is not empty");
+    grade->footer(
+        "Each answer (a number or (x, y) vector, with or without its unit, a decimal point or a\n"
+        "decimal comma in double quotes) is marked right when within the question's tolerance of\n"
+        "the engine's answer, after its unit is converted (km/h, kJ, rpm, ...). Prints a table per\n"
+        "student and per question; wrong answers are compared with likely slips (the sign\n"
+        "flipped, the impulse without (1 + e), ...). A bad row: exit 2 naming file, line, field.\n"
+        "Example: collide grade out/ws/key.json answers.csv -o out/marks\n"
+        "See docs/commands/grade.md.");
     collide::GuiOptions gui_options;
     CLI::App* gui =
         app.add_subcommand("gui", "Open a window: the scene's frame with controls to change it, play it and step it");
@@ -310,6 +333,7 @@ int main(int argc, char** argv) {
         if (*gui) return collide::run_gui(gui_options, std::cout, std::cerr);
         if (*material) return collide::run_material(material_options, std::cout, std::cerr);
         if (*worksheet) return collide::run_worksheet(worksheet_options, std::cout, std::cerr);
+        if (*grade) return collide::run_grade(grade_options, std::cout, std::cerr);
         if (*lessons) {
             std::ostringstream out;
             collide::write_lesson_list(collide::load_lessons(collide::lessons_dir()), lessons_json, out);

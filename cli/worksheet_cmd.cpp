@@ -1,5 +1,6 @@
 #include "cli/worksheet_cmd.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -9,6 +10,7 @@
 #include "cli/exit_code.h"
 #include "cli/signals.h"
 #include "cli/terminal.h"
+#include "present/moodle_xml.h"
 #include "present/staged_dir.h"
 #include "present/worksheets.h"
 #include "render/video.h"
@@ -37,6 +39,29 @@ std::vector<Lesson> load_worksheet_lessons(const std::vector<std::string>& args)
 
 }  // namespace
 
+std::vector<std::string> worksheet_formats(const std::string& text) {
+    std::vector<std::string> out;
+    std::size_t at = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', at);
+        const std::string f = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+        if (f == "qti")
+            throw InputError("", {}, "--format",
+                             "qti (an IMS QTI 2.1 package) is not written yet (issue 36); use html or moodle");
+        if (f != "html" && f != "moodle")
+            throw InputError("", {}, "--format",
+                             "unknown format '" + one_line(f) +
+                                 "': expected html or moodle, "
+                                 "comma-separated (html,moodle)");
+        if (std::find(out.begin(), out.end(), f) != out.end())
+            throw InputError("", {}, "--format", "'" + f + "' is given twice");
+        out.push_back(f);
+        if (comma == std::string::npos) break;
+        at = comma + 1;
+    }
+    return out;
+}
+
 int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& err) {
     const auto start = std::chrono::steady_clock::now();
     // The staged directory is gone with the body's scope when it throws: DIR is untouched.
@@ -50,6 +75,9 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
             if (opt.students < 1 || opt.students > 1000)
                 throw InputError("", {}, "--students",
                                  "expected 1 to 1000 students, got " + std::to_string(opt.students));
+            const std::vector<std::string> formats = worksheet_formats(opt.format);
+            const bool html = std::find(formats.begin(), formats.end(), "html") != formats.end();
+            const bool moodle = std::find(formats.begin(), formats.end(), "moodle") != formats.end();
             const std::vector<Lesson> lessons = load_worksheet_lessons(opt.lessons);
             const cli::SignalGuard signals;  // (held until the staging directory is removed again)
             StagedDirectory staged(opt.out_dir, opt.force);
@@ -73,20 +101,22 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
                     err << line << std::flush;
                 }
             }
-            const std::string weasyprint = render::find_program("weasyprint");
+            const std::string weasyprint = html ? render::find_program("weasyprint") : std::string();
             const fs::path& tmp = staged.begin();
             std::vector<std::string> files;
             if (lessons.size() == 1) {
-                files = write_worksheets(lessons[0], all[0], opt.seed, tmp, weasyprint, cli::stop_requested);
+                files = write_worksheets(lessons[0], all[0], opt.seed, tmp, weasyprint, cli::stop_requested, html);
             } else {
                 for (std::size_t k = 0; k < lessons.size(); ++k)
                     files = write_worksheets(lessons[k], all[k], opt.seed, tmp / lessons[k].id, weasyprint,
-                                             cli::stop_requested);
-                write_worksheet_index(tmp, lessons, opt.students);
+                                             cli::stop_requested, html);
+                write_worksheet_index(tmp, lessons, opt.students, html);
             }
+            // One file for every lesson: a category each (present/moodle_xml.h).
+            if (moodle) write_text_file(tmp / "moodle.xml", moodle_xml(lessons, all, opt.seed));
             if (cli::stop_requested()) throw Interrupted(0);
             staged.commit();
-            if (weasyprint.empty())
+            if (html && weasyprint.empty())
                 err << "collide: note: PDFs skipped: weasyprint is not installed (Debian: apt-get install weasyprint); "
                        "print the HTML from a browser instead\n";
             std::string ids, list;
@@ -97,7 +127,7 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
             out << "wrote " << opt.students << " worksheets of " << ids << " to " << opt.out_dir
                 << (lessons.size() > 1 ? "/ID" : "") << " (" << list << (lessons.size() > 1 ? "; index.html" : "")
-                << ") in " << secs << " s\n";
+                << (moodle ? "; moodle.xml" : "") << ") in " << secs << " s\n";
             // Not an error (a sheet of the lesson's own numbers is still a sheet), but rarely meant:
             // said in the summary, where the teacher reads what was written.
             for (const Lesson& L : lessons)

@@ -1,5 +1,6 @@
 #include "present/worksheets.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -105,8 +106,10 @@ std::string size_text(const toml::table& body) {
     return "";
 }
 
+}  // namespace
+
 // The givens: a table of the bodies with this student's numbers, then the scene's settings.
-std::string givens_html(const Lesson& L) {
+std::string worksheet_givens_html(const Lesson& L) {
     const Scene& sc = L.scene;
     const int d = sc.dimension;
     const toml::table file = parse_toml_text(L.source, L.source_name);
@@ -148,6 +151,8 @@ std::string givens_html(const Lesson& L) {
     o << "</p>\n";
     return o.str();
 }
+
+namespace {
 
 // A question as the student sees it: number, text, tolerance; a blank with the unit, room
 // to work, or the options to circle.
@@ -234,7 +239,7 @@ std::string sheets_page(const Lesson& L, const std::vector<StudentSheet>& sheets
     for (const StudentSheet& s : sheets) {
         o << "<section class=\"sheet\">\n<h1>" << math(L.title) << "</h1>\n<p class=\"student\">Student " << s.student
           << "</p>\n<p>Name: <span class=\"fill\"></span> Class: <span class=\"fill short\"></span></p>\n<h2>Given</h2>\n"
-          << givens_html(s.lesson);
+          << worksheet_givens_html(s.lesson);
         const WorksheetFigure f = worksheet_figure(s, kFigureMm, L.id + "-" + std::to_string(s.student));
         if (!f.svg.empty()) o << figure_html(s, f);
         o << "<h2>Questions</h2>\n<p class=\"note\">Use the numbers above; give each answer with its sign and unit.</p>\n";
@@ -322,9 +327,18 @@ std::string key_json(const Lesson& L, const std::vector<StudentSheet>& sheets, s
             answers.push_back({{"question", question_number(L, s.asked[k])},
                                {"quantity", quantity_name(*q.quantity)},
                                {"value", value},
-                               {"unit", a.unit}});
+                               {"unit", a.unit},
+                               {"tolerance", q.tolerance}});
         }
-        students.push_back({{"student", s.student}, {"values", values}, {"answers", answers}});
+        nlohmann::ordered_json student = {{"student", s.student}, {"values", values}};
+        // e, when one e holds for every collision (no body has its own): `collide grade`
+        // names the impulse without (1 + e) from it.
+        const Scene& sc = s.lesson.scene;
+        if (std::none_of(sc.bodies.begin(), sc.bodies.end(),
+                         [](const SceneBody& b) { return b.restitution.has_value(); }))
+            student["restitution"] = sc.restitution;
+        student["answers"] = answers;
+        students.push_back(student);
     }
     const nlohmann::ordered_json doc = {{"lesson", L.id}, {"seed", seed}, {"students", students}};
     return doc.dump(2) + "\n";
@@ -352,13 +366,16 @@ void to_pdf(const std::string& weasyprint, const fs::path& html_file, const fs::
     fs::remove(log, ec);
 }
 
-std::string index_page(const std::vector<Lesson>& lessons, int students) {
+std::string index_page(const std::vector<Lesson>& lessons, int students, bool html) {
     std::ostringstream o;
     o << page_head("Worksheets") << "<h1>Worksheets</h1>\n<p>" << students << " students each.</p>\n<ul>\n";
-    for (const Lesson& L : lessons)
-        o << "<li>" << math(L.title) << ": <a href=\"" << escape(L.id) << "/sheets.html\">sheets</a>, <a href=\""
-          << escape(L.id) << "/key.html\">answer key</a>, <a href=\"" << escape(L.id)
-          << "/key.json\">key.json</a></li>\n";
+    for (const Lesson& L : lessons) {
+        o << "<li>" << math(L.title) << ": ";
+        if (html)
+            o << "<a href=\"" << escape(L.id) << "/sheets.html\">sheets</a>, <a href=\"" << escape(L.id)
+              << "/key.html\">answer key</a>, ";
+        o << "<a href=\"" << escape(L.id) << "/key.json\">key.json</a></li>\n";
+    }
     o << "</ul>\n" << kPageTail;
     return o.str();
 }
@@ -366,9 +383,13 @@ std::string index_page(const std::vector<Lesson>& lessons, int students) {
 }  // namespace
 
 std::vector<std::string> write_worksheets(const Lesson& L, const std::vector<StudentSheet>& sheets, std::uint64_t seed,
-                                          const fs::path& dir, const std::string& weasyprint,
-                                          const StopRequested& stop) {
+                                          const fs::path& dir, const std::string& weasyprint, const StopRequested& stop,
+                                          bool html) {
     fs::create_directories(dir);
+    if (!html) {
+        write_file(dir / "key.json", key_json(L, sheets, seed));
+        return {"key.json"};
+    }
     write_file(dir / "sheets.html", sheets_page(L, sheets));
     write_file(dir / "key.html", key_page(L, sheets, seed));
     write_file(dir / "key.json", key_json(L, sheets, seed));
@@ -381,8 +402,10 @@ std::vector<std::string> write_worksheets(const Lesson& L, const std::vector<Stu
     return files;
 }
 
-void write_worksheet_index(const fs::path& dir, const std::vector<Lesson>& lessons, int students) {
-    write_file(dir / "index.html", index_page(lessons, students));
+void write_worksheet_index(const fs::path& dir, const std::vector<Lesson>& lessons, int students, bool html) {
+    write_file(dir / "index.html", index_page(lessons, students, html));
 }
+
+void write_text_file(const fs::path& path, const std::string& text) { write_file(path, text); }
 
 }  // namespace collide

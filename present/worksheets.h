@@ -21,14 +21,25 @@
 namespace collide {
 
 // One lesson's worksheets into `dir` (created); `weasyprint`: its path, or "" for no PDFs.
+// `html` false (--format without html): key.json alone, the key `collide grade` reads.
 // Returns the files written, for the summary. Throws std::runtime_error when a file cannot be
 // written or weasyprint fails, and Interrupted when `stop` says so while weasyprint runs
 // (weasyprint is ended first: render/video.h run_program).
 std::vector<std::string> write_worksheets(const Lesson& lesson, const std::vector<StudentSheet>& sheets,
                                           std::uint64_t seed, const std::filesystem::path& dir,
-                                          const std::string& weasyprint, const StopRequested& stop = nullptr);
+                                          const std::string& weasyprint, const StopRequested& stop = nullptr,
+                                          bool html = true);
+
+// The givens of a student's lesson (lesson_with_inputs): a table of the bodies with their
+// numbers, then e, mu and gravity (HTML). The sheets and Moodle's questions show it.
+std::string worksheet_givens_html(const Lesson& lesson);
 
 // DIR/index.html for several lessons: each lesson's sheets, key and key.json.
-void write_worksheet_index(const std::filesystem::path& dir, const std::vector<Lesson>& lessons, int students);
+// `html` false: only the key.json of each.
+void write_worksheet_index(const std::filesystem::path& dir, const std::vector<Lesson>& lessons, int students,
+                           bool html = true);
+
+// `text` into `path`; std::runtime_error naming it when it cannot be written.
+void write_text_file(const std::filesystem::path& path, const std::string& text);
 
 }  // namespace collide

@@ -276,6 +276,8 @@ bool shows_tolerance(const LessonQuestion& q) {
     return q.has_quantity() && quantity_info(*q.quantity).readout != Readout::count;
 }
 
+double marking_allowance(double want_size, double tolerance) { return tolerance * std::abs(want_size) + 1e-9; }
+
 std::string tolerance_text(double tolerance) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%g %%", tolerance * 100);

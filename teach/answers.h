@@ -31,6 +31,10 @@ std::string option_number(std::size_t index);
 bool shows_tolerance(const LessonQuestion& q);
 // A relative tolerance as a percentage for the student: 0.02 -> "2 %", 0.005 -> "0.5 %".
 std::string tolerance_text(double tolerance);
+// The marking rule of every face (the lesson page's script, `collide grade`, Moodle's absolute
+// tolerance): an answer is right when it is within this of the engine's, |got - want| <=
+// tolerance |want| + 1e-9 (for a vector, the length of the difference against |want|).
+double marking_allowance(double want_size, double tolerance);
 // The run's collision a question asks about, as an index into `events` (the run's, in time
 // order): its `event`-th, or the first event of the `collision`-th instant at which its `pair`
 // collides (either body first; as a [[figure]] counts them). Throws InputError naming the

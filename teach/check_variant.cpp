@@ -5,10 +5,10 @@
 namespace collide {
 
 bool marked_right(const LessonAnswer& copied, const LessonAnswer& want, double tolerance) {
-    // The page's script: |got - want| <= tolerance |want| (components for vectors) + 1e-9.
+    // The page's script: |got - want| <= tolerance |want| + 1e-9 (vectors by their lengths).
     const double d = want.is_vector ? (copied.vector - want.vector).norm() : std::abs(copied.value - want.value);
     const double n = want.is_vector ? want.vector.norm() : std::abs(want.value);
-    return d <= tolerance * n + 1e-9;
+    return d <= marking_allowance(n, tolerance);
 }
 
 CheckVariant check_variant(const Lesson& L, const std::vector<LessonAnswer>& own) {
