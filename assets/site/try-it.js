@@ -513,11 +513,11 @@
 
   // ---- Drag to set: the picture's handles at the paused start (t = 0) ----
   // Each handle sets one or two of the lesson's [[vary]] inputs (run.vary: name, lo, hi, step,
-  // body, field, component): a body whose position is an input (a dashed ring; along a dashed
+  // body, field, component): a body whose position is an input (a dashed outline; along a
   // track where one coordinate is), the head of a velocity arrow (a blue knob: the components
   // that are inputs, the others stay), a spin dial (an amber knob on a circle: the arc from the
   // top is w, counterclockwise positive), a turn handle (the body's angle), and only where a
-  // lesson has none of these, a body's mass knob on a short track below it. A drag or a key sets
+  // lesson has none of these, a body's mass knob on a short upright track beside it. A drag or a key sets
   // each input to the nearest value of its grid, lo + k step (as the slider and the worksheets:
   // scenario/lesson.h LessonVary::value), never beyond lo or hi (and says so), through the
   // slider: its value, the number beside it, the address, and one answer a frame.
@@ -634,7 +634,7 @@
     h.inputs.forEach(function (v) { (v.in_proportion || []).forEach(function (o) { if (also.indexOf(o) < 0) also.push(o); }); });
     var more = also.length ? ' (' + (also.length > 3 ? also.length + ' other bodies' : also.join(', ')) + ' in proportion)' : '';
     switch (h.kind) {
-      case 'position': return h.body + ' itself (the dashed ring) moves it: ' + names + more;
+      case 'position': return h.body + ' itself (in a dashed outline) moves it: ' + names + more;
       case 'velocity': return 'the blue knob at the head of ' + h.body + '\u2019s velocity arrow: ' + names + more;
       case 'spin': return 'the amber knob on ' + h.body + '\u2019s spin dial, round the circle: ' + names + more;
       case 'angle': return 'the dark knob at the end of ' + h.body + '\u2019s turn handle: ' + names + more;
@@ -698,7 +698,7 @@
           if (Math.hypot(e[0] - a[0], e[1] - a[1]) < 90) {  // short: one label beside it, "lo to hi"
             var mid = [(a[0] + e[0]) / 2, (a[1] + e[1]) / 2];
             label(ctx, num(v.lo) + ' to ' + num(v.hi) + (u ? ' ' + u : ''),
-                  c === 0 ? [mid[0], mid[1] + h.r + 20] : [mid[0] + h.r + 14, mid[1] + 16], palette.muted, c === 0 ? 'center' : 'left');
+                  c === 0 ? [mid[0], mid[1] + h.r + 20] : [e[0] + 10, e[1] - 2], palette.muted, c === 0 ? 'center' : 'left');
           } else {
             [[a, v.lo], [e, v.hi]].forEach(function (q, k) {
               var off = c === 0 ? [0, 20] : [12, k === 0 ? 14 : -14];
@@ -856,8 +856,6 @@
       drag = {h: h, id: e.pointerId, p0: p, start: h.inputs.map(current), grab: [p[0] - h.knob[0], p[1] - h.knob[1]]};
       if (h.centre) drag.a = drag.a0 = turnOf(h, h.knob);
       scene.style.cursor = 'grabbing';
-      var el = elements[h.id];
-      if (el) el.focus({preventScroll: true});  // the keys go on from where the drag left it
       draw();
     });
     scene.addEventListener('pointermove', function (e) {

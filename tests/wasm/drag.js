@@ -305,7 +305,7 @@ async function main() {
     let s = await look(page);
     // ball 2.position.x: 1.05, [0.9, 1.08] step 0.01: dragged 0.083 m toward the bat's centre -> 0.97.
     const from = s.handles['position:ball 2'];
-    check(!!from && /ball 2 itself \(the dashed ring\) moves it: ball 2\.position\.x/.test(s.help), 'centre-of-percussion: ball 2 can be dragged: ' + s.help);
+    check(!!from && /ball 2 itself \(in a dashed outline\) moves it: ball 2\.position\.x/.test(s.help), 'centre-of-percussion: ball 2 can be dragged: ' + s.help);
     await shot(page, 'centre-of-percussion-before');
     await mouseDrag(page, from, [from[0] - 0.083 * s.view.scale * s.canvas, from[1] - 10]);
     n = await answered(page, n);
