@@ -539,10 +539,19 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
         o << "<p class=\"tryit-names note\">The page's address sets them too: index.html?" << escape(L.vary[0].name())
           << "=" << number_attr(L.vary[0].hi) << " (the inputs' names: " << escape(names) << ").</p>\n";
     }
-    if (d < 3)
-        o << "<canvas class=\"tryit-scene\" width=\"960\" height=\"" << (d == 1 ? 300 : 480)
-          << "\" role=\"img\" aria-label=\"The run with these inputs\"></canvas>\n";
+    if (d < 3) {
+        // The picture, and over it the handles a drag or the keyboard sets inputs with (try-it.js
+        // puts them in: a focusable element at each handle, the picture draws them), what can be
+        // dragged, and the last value a drag or a key set (read out by screen readers).
+        o << "<div class=\"tryit-stage\">\n<canvas class=\"tryit-scene\" width=\"960\" height=\""
+          << (d == 1 ? 300 : 480) << "\" role=\"img\" aria-label=\"The run with these inputs\"></canvas>\n"
+          << "<div class=\"tryit-handles\"></div>\n</div>\n";
+        if (!L.vary.empty())
+            o << "<p class=\"tryit-drag-help note\" hidden></p>\n"
+                 "<p class=\"tryit-drag-said\" aria-live=\"polite\"></p>\n";
+    }
     o << "<div class=\"player tryit-player\" role=\"group\" aria-label=\"Try-it playback\">\n"
+         "<button type=\"button\" data-act=\"start\" aria-label=\"Back to the start, t = 0\">&#9664;&#9664; t = 0</button>\n"
          "<button type=\"button\" data-act=\"play\">Play / pause</button>\n"
          "<button type=\"button\" data-act=\"step\" aria-label=\"One frame forward\">step &#9654;</button>\n"
          "<span class=\"speeds\">speed <button type=\"button\" data-rate=\"0.25\" aria-pressed=\"false\">0.25&times;</button>\n"

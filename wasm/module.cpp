@@ -229,7 +229,17 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     out["bodies"] = bodies_json(scene);
     ordered_json vary = ordered_json::array();
     for (const LessonVary& w : original.vary)
-        vary.push_back({{"name", w.name()}, {"lo", w.lo}, {"hi", w.hi}, {"step", w.step}, {"value", w.lesson_value}});
+        // (body, field and component tell the panel what a drag on the picture sets: "A", "v", 0
+        // for A.v.x; -1 for a number that is no vector's component)
+        vary.push_back({{"name", w.name()},
+                        {"lo", w.lo},
+                        {"hi", w.hi},
+                        {"step", w.step},
+                        {"value", w.lesson_value},
+                        {"body", w.body},
+                        {"field", w.field},
+                        {"component", w.component},
+                        {"in_proportion", w.in_proportion}});
     out["vary"] = vary;
     out["values"] = changed;
     std::string worked = "null";

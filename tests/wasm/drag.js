@@ -1,0 +1,368 @@
+// Drag to set, in a real browser (issue 35, items 1 and 5): `collide material` writes lesson
+// pages with the WebAssembly module; headless Chromium opens them from file:// and is driven
+// through its DevTools protocol over a pipe (--remote-debugging-pipe: no port, no network, and
+// Node 20 needs no WebSocket for it). Input.dispatchMouseEvent / dispatchTouchEvent make real
+// pointer events (the page's handlers cannot tell them from a hand's), dispatchKeyEvent real
+// keys. After each drag or key:
+// - the input's slider and the panel's value are the grid value nearest where the pointer was
+//   let go (lo + k step, the input's step; within its range, the end said in words when passed);
+// - the panel's numbers (the impulse and the velocities after, full precision in data-value)
+//   equal what the command gives for the new values: `collide solve --format json` on the
+//   collision (catch-up), else the same pair's event of `collide step --events --json` on the
+//   lesson file with the new values written in (the same collision at the same t), to 1e-9.
+// Every 1D and 2D lesson has at least one handle. Lessons: catch-up (1D: A's velocity arrow dragged with the mouse, then past its range's end;
+// B's arrow by a key), general-2d (A's arrow by touch; B moved by the mouse and by keys),
+// centre-of-percussion (ball 2 dragged along bat 2: the hit point), contact-point-velocity (the
+// spin dial by keys, Shift: ten steps), restitution (a mass knob: the lesson whose bodies'
+// inputs are masses only). Screenshots of the panels before and after stay in WORK/*.png.
+// Usage: node drag.js COLLIDE CHROMIUM WORK   ($COLLIDE_ENGINE_JS: the module)
+'use strict';
+const fs = require('fs');
+const path = require('path');
+const {spawn, execFileSync} = require('child_process');
+
+const [collide, chromium, work] = process.argv.slice(2);
+const here = __dirname;
+const lessons = path.join(here, '..', '..', 'lessons');
+fs.rmSync(work, {recursive: true, force: true});
+fs.mkdirSync(work, {recursive: true});
+let failures = 0;
+function check(ok, what) {
+  console.log((ok ? 'ok   ' : 'FAIL ') + what);
+  if (!ok) failures++;
+}
+function close(a, b, tol = 1e-9) {
+  if (Array.isArray(a) || Array.isArray(b)) {
+    return Array.isArray(a) && Array.isArray(b) && a.length === b.length && a.every((x, k) => close(x, b[k], tol));
+  }
+  return Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
+}
+
+// Every bundled 1D and 2D lesson (3D lessons have no picture to drag on).
+const flat = fs.readdirSync(lessons).filter(f => f.endsWith('.toml')).map(f => fs.readFileSync(path.join(lessons, f), 'utf8'))
+               .filter(t => !/^dimension = 3$/m.test(t)).map(t => t.match(/^id = "([^"]*)"/m)[1]);
+execFileSync(collide, ['material', '-o', path.join(work, 'site'), '--size', '320x180', '--quiet'].concat(flat), {stdio: 'inherit'});
+
+// ---- The DevTools protocol over a pipe: fd 3 to Chromium, fd 4 from it, messages end in \0 ----
+const browser = spawn(chromium, ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars', '--remote-debugging-pipe',
+                                 '--user-data-dir=' + fs.mkdtempSync(path.join(work, 'profile.')), 'about:blank'],
+                      {stdio: ['ignore', 'ignore', fs.openSync(path.join(work, 'chromium.log'), 'w'), 'pipe', 'pipe']});
+const toBrowser = browser.stdio[3], fromBrowser = browser.stdio[4];
+let nextId = 1, buffer = '';
+const waiting = new Map();
+fromBrowser.on('data', chunk => {
+  buffer += chunk.toString('utf8');
+  let end;
+  while ((end = buffer.indexOf('\0')) >= 0) {
+    const message = JSON.parse(buffer.slice(0, end));
+    buffer = buffer.slice(end + 1);
+    if (message.id && waiting.has(message.id)) {
+      const {resolve, reject, method} = waiting.get(message.id);
+      waiting.delete(message.id);
+      if (message.error) reject(new Error(method + ': ' + message.error.message));
+      else resolve(message.result);
+    }
+  }
+});
+function send(method, params = {}, sessionId) {
+  const id = nextId++;
+  toBrowser.write(JSON.stringify(sessionId ? {id, method, params, sessionId} : {id, method, params}) + '\0');
+  return new Promise((resolve, reject) => waiting.set(id, {resolve, reject, method}));
+}
+const sleep = ms => new Promise(r => setTimeout(r, ms));
+
+async function openPage(url) {
+  const {targetId} = await send('Target.createTarget', {url: 'about:blank'});
+  const {sessionId} = await send('Target.attachToTarget', {targetId, flatten: true});
+  const page = (method, params) => send(method, params, sessionId);
+  await page('Emulation.setDeviceMetricsOverride', {width: 1100, height: 1400, deviceScaleFactor: 1, mobile: false});
+  await page('Page.navigate', {url});
+  page.eval = async expression => {
+    const r = await page('Runtime.evaluate', {expression, returnByValue: true, awaitPromise: true});
+    if (r.exceptionDetails) throw new Error(expression + ': ' + JSON.stringify(r.exceptionDetails));
+    return r.result.value;
+  };
+  page.close = () => send('Target.closeTarget', {targetId});
+  return page;
+}
+// Waits until the engine has given more than `after` answers; returns the count.
+async function answered(page, after) {
+  for (let k = 0; k < 600; ++k) {
+    const n = await page.eval(`(function () { var p = document.getElementById('try-it');
+      return p && p.dataset.answers ? Number(p.dataset.answers) : 0; })()`).catch(() => 0);
+    if (n > after) {
+      await sleep(100);  // answers still queued by the last moves
+      return page.eval(`Number(document.getElementById('try-it').dataset.answers)`);
+    }
+    await sleep(50);
+  }
+  throw new Error('the engine did not answer');
+}
+// What the page shows: the inputs, the view, the collision's numbers, the handles (CSS pixels).
+function look(page) {
+  return page.eval(`(function () {
+    var p = document.getElementById('try-it'), o = p.querySelector('.tryit-impulse'), r = {inputs: {}, handles: {}};
+    p.querySelectorAll('input[type=range]').forEach(function (i) {
+      r.inputs[i.dataset.name] = {value: i.value, shown: i.parentNode.querySelector('output').textContent};
+    });
+    r.view = JSON.parse(p.dataset.view);
+    r.canvas = p.querySelector('canvas.tryit-scene').getBoundingClientRect().width / p.querySelector('canvas.tryit-scene').width;
+    r.said = p.querySelector('.tryit-drag-said').textContent;
+    r.help = p.querySelector('.tryit-drag-help').textContent;
+    r.address = window.location.search;
+    if (o) r.worked = {a: o.dataset.a, b: o.dataset.b, t: Number(o.dataset.t), impulse: JSON.parse(o.dataset.value),
+                       v: Array.prototype.map.call(p.querySelectorAll('.tryit-numbers table:first-of-type .tryit-v-after'),
+                                                   function (c) { return JSON.parse(c.dataset.value); })};
+    r.figures = Array.prototype.map.call(p.querySelectorAll('.tryit-figure-impulse'), function (c) {
+      return {a: c.dataset.a, b: c.dataset.b, t: Number(c.dataset.t), impulse: JSON.parse(c.dataset.value)};
+    });
+    p.querySelectorAll('.tryit-handle').forEach(function (h) {
+      var b = h.getBoundingClientRect();
+      r.handles[h.dataset.handle] = [b.left + b.width / 2, b.top + b.height / 2];
+    });
+    return r;
+  })()`);
+}
+async function mouseDrag(page, from, to) {
+  const steps = 12;
+  await page('Input.dispatchMouseEvent', {type: 'mouseMoved', x: from[0], y: from[1]});
+  await page('Input.dispatchMouseEvent', {type: 'mousePressed', x: from[0], y: from[1], button: 'left', buttons: 1, clickCount: 1});
+  for (let k = 1; k <= steps; ++k) {
+    const x = from[0] + (to[0] - from[0]) * k / steps, y = from[1] + (to[1] - from[1]) * k / steps;
+    await page('Input.dispatchMouseEvent', {type: 'mouseMoved', x, y, button: 'left', buttons: 1});
+    await sleep(20);
+  }
+  await page('Input.dispatchMouseEvent', {type: 'mouseReleased', x: to[0], y: to[1], button: 'left', buttons: 0, clickCount: 1});
+}
+async function touchDrag(page, from, to) {
+  const steps = 12;
+  await page('Input.dispatchTouchEvent', {type: 'touchStart', touchPoints: [{x: from[0], y: from[1]}]});
+  for (let k = 1; k <= steps; ++k) {
+    const x = from[0] + (to[0] - from[0]) * k / steps, y = from[1] + (to[1] - from[1]) * k / steps;
+    await page('Input.dispatchTouchEvent', {type: 'touchMove', touchPoints: [{x, y}]});
+    await sleep(20);
+  }
+  await page('Input.dispatchTouchEvent', {type: 'touchEnd', touchPoints: []});
+}
+// A screenshot of the panel's top (its inputs, the picture, the lines under it) in WORK/NAME.png.
+async function shot(page, name) {
+  const r = await page.eval(`(function () { var b = document.querySelector('.tryit-player').getBoundingClientRect();
+    return b.bottom + window.scrollY + 10; })()`);
+  const {data} = await page('Page.captureScreenshot', {format: 'png', clip: {x: 0, y: 0, width: 1100, height: r, scale: 1}});
+  fs.writeFileSync(path.join(work, name + '.png'), Buffer.from(data, 'base64'));
+}
+const KEYS = {ArrowUp: 38, ArrowDown: 40, ArrowLeft: 37, ArrowRight: 39};
+async function key(page, handle, name, shift) {
+  await page.eval(`document.querySelector('.tryit-handle[data-handle="${handle}"]').focus()`);
+  const base = {key: name, code: name, windowsVirtualKeyCode: KEYS[name], modifiers: shift ? 8 : 0};
+  await page('Input.dispatchKeyEvent', Object.assign({type: 'rawKeyDown'}, base));
+  await page('Input.dispatchKeyEvent', Object.assign({type: 'keyUp'}, base));
+}
+
+// ---- The command's answers for the new values ----
+// The lesson's file with `field` (component `comp`, -1 for a number) of body `body` set to x.
+function lessonWith(file, changes) {
+  let text = fs.readFileSync(path.join(lessons, file), 'utf8');
+  for (const [body, field, comp, x] of changes) {
+    const lines = text.split('\n');
+    let inBody = false, done = false;
+    for (let k = 0; k < lines.length && !done; ++k) {
+      if (/^\[/.test(lines[k])) inBody = false;
+      if (lines[k] === `name = "${body}"` && /^\[\[body\]\]/.test(lines[k - 1] || '')) inBody = true;
+      const m = inBody && lines[k].match(new RegExp(`^${field} = (.*)$`));
+      if (!m) continue;
+      if (comp < 0) lines[k] = `${field} = ${x}`;
+      else {
+        const v = JSON.parse(m[1]);
+        v[comp] = x;
+        lines[k] = `${field} = [${v.join(', ')}]`;
+      }
+      done = true;
+    }
+    if (!done) throw new Error(`${file}: no ${field} in body ${body}`);
+    text = lines.join('\n');
+  }
+  const out = path.join(work, file.replace('.toml', '') + '-' + (nextId++) + '.toml');
+  fs.writeFileSync(out, text);
+  return out;
+}
+function stepEvents(file) {
+  return execFileSync(collide, ['step', file, '--events', '--json'], {maxBuffer: 1 << 28}).toString().trim().split('\n').map(JSON.parse);
+}
+// The panel's collision (and each figure's) against the same pair's event of the run.
+function sameAsStep(shown, file, what) {
+  const events = stepEvents(file);
+  const pick = c => events.find(e => e.a === c.a && e.b === c.b && Math.abs(e.t - c.t) < 1e-9);
+  const e = pick(shown.worked);
+  check(!!e && close(shown.worked.impulse, e.impulse) && close(shown.worked.v[0], e.after[e.a].v) &&
+        close(shown.worked.v[1], e.after[e.b].v),
+        `${what}: the panel's impulse ${JSON.stringify(shown.worked.impulse)} and velocities after ` +
+        `${JSON.stringify(shown.worked.v)} are collide step's (${e ? JSON.stringify(e.impulse) : 'no such event'})`);
+  for (const f of shown.figures) {
+    const g = pick(f);
+    check(!!g && close(f.impulse, g.impulse),
+          `${what}: the figures' ${f.a} / ${f.b} impulse ${JSON.stringify(f.impulse)} is collide step's (${g ? JSON.stringify(g.impulse) : 'none'})`);
+  }
+}
+function onGrid(value, lo, step) { return Math.abs((value - lo) / step - Math.round((value - lo) / step)) < 1e-6; }
+
+async function main() {
+  await send('Target.setDiscoverTargets', {discover: false});
+  const site = 'file://' + path.join(work, 'site');
+
+  // ---- Every 1D and 2D lesson: at least one handle, and the line saying what it drags ----
+  for (const id of flat) {
+    const page = await openPage(site + '/' + id + '/index.html?show=try-it');
+    await answered(page, 0);
+    const s = await look(page);
+    const ids = Object.keys(s.handles);
+    check(ids.length > 0 && /^Drag on the picture/.test(s.help), `${id}: handles ${ids.join(', ')}`);
+    await page.close();
+  }
+
+  // ---- catch-up (1D): A's velocity arrow by the mouse, to between two steps and past the end ----
+  {
+    const page = await openPage(site + '/catch-up/index.html?show=try-it');
+    let n = await answered(page, 0);
+    let s = await look(page);
+    check(/Drag on the picture/.test(s.help) && /velocity arrow: A\.v\b/.test(s.help), 'catch-up: the panel says what can be dragged: ' + s.help);
+    check(!!s.handles['velocity:A'] && !!s.handles['velocity:B'], 'catch-up: a knob at each velocity arrow head');
+    // A.v: 1.5 m/s, range [1.25, 3], step 0.25. To 2.3 (between 2.25 and 2.5): 2.25 expected.
+    const dx = (2.3 - 1.5) * s.view.vscale * s.canvas, from = s.handles['velocity:A'];
+    await shot(page, 'catch-up-before');
+    await mouseDrag(page, from, [from[0] + dx, from[1] + 30]);  // (up or down: 1D, only x counts)
+    n = await answered(page, n);
+    s = await look(page);
+    await shot(page, 'catch-up-after');
+    check(s.inputs['A.v'].value === '2.25' && s.inputs['A.v'].shown === '2.25',
+          `catch-up: the drag to 2.3 m/s set A.v to the step 2.25 (slider ${s.inputs['A.v'].value}, shown ${s.inputs['A.v'].shown})`);
+    check(s.address.includes('A.v=2.25'), 'catch-up: the address follows: ' + s.address);
+    check(/^A\.v = 2\.25 m\/s$/.test(s.said), 'catch-up: said: ' + s.said);
+    const toml = fs.readFileSync(path.join(here, 'catch-up-a3.toml'), 'utf8')
+                   .replace('mass = 3.0\nposition = -0.175\nv = 1.5', 'mass = 2.0\nposition = -0.175\nv = 2.25');
+    fs.writeFileSync(path.join(work, 'catch-up-v225.toml'), toml);
+    const solved = JSON.parse(execFileSync(collide, ['solve', path.join(work, 'catch-up-v225.toml'), '--format', 'json']).toString());
+    // closed form: j = (1 + e)(va - vb) / (1/ma + 1/mb) = 1.5 * 1.95 / 1.5 = 1.95 N s
+    check(close(solved.impulse, 1.95, 1e-12), 'catch-up: collide solve gives j = 1.95 N s for A.v = 2.25 (closed form)');
+    check(close(s.worked.impulse, solved.impulse) && close(s.worked.v[0], solved.a.v) && close(s.worked.v[1], solved.b.v),
+          `catch-up: the panel's P = ${s.worked.impulse}, v after ${JSON.stringify(s.worked.v)} are collide solve's ` +
+          `(${solved.impulse}, ${solved.a.v}, ${solved.b.v})`);
+    // Past the end: held at 3 m/s, and said so.
+    const again = s.handles['velocity:A'];
+    await mouseDrag(page, again, [again[0] + 3 * s.view.vscale * s.canvas, again[1]]);
+    n = await answered(page, n);
+    s = await look(page);
+    check(s.inputs['A.v'].value === '3', 'catch-up: dragged past the range, A.v stops at its end, 3 (' + s.inputs['A.v'].value + ')');
+    check(/the end of its range \(1\.25 to 3 m\/s\): it goes no further/.test(s.said), 'catch-up: said: ' + s.said);
+    // B's arrow by the keyboard: Right, one step of 0.1 from 0.3.
+    await key(page, 'velocity:B', 'ArrowRight');
+    n = await answered(page, n);
+    s = await look(page);
+    check(s.inputs['B.v'].value === '0.4' && /^B\.v = 0\.4 m\/s$/.test(s.said), `catch-up: Right on B's knob: B.v = ${s.inputs['B.v'].value}; said: ${s.said}`);
+    sameAsStep(s, lessonWith('01-catch-up.toml', [['A', 'v', -1, 3], ['B', 'v', -1, 0.4]]), 'catch-up (A.v = 3, B.v = 0.4)');
+    await page.close();
+  }
+
+  // ---- general-2d: A's arrow by touch (v.x only: v.y stays 0), B moved by the mouse and keys ----
+  {
+    const page = await openPage(site + '/general-2d/index.html?show=try-it');
+    let n = await answered(page, 0);
+    let s = await look(page);
+    // A.v.x: 1.5, [1, 2.5] step 0.25: to 1.85 -> 1.75. The finger also moves down: v.y is no input.
+    const from = s.handles['velocity:A'];
+    await shot(page, 'general-2d-before');
+    await touchDrag(page, from, [from[0] + (1.85 - 1.5) * s.view.vscale * s.canvas, from[1] + 40]);
+    n = await answered(page, n);
+    s = await look(page);
+    check(s.inputs['A.v.x'].value === '1.75', 'general-2d: a touch drag of A\'s arrow head set A.v.x = ' + s.inputs['A.v.x'].value);
+    // B.position.y: 0.25, [0.15, 0.3] step 0.05: B dragged down by 0.06 m -> 0.2 (from its centre's handle).
+    const b = s.handles['position:B'];
+    await mouseDrag(page, b, [b[0] + 25, b[1] + 0.06 * s.view.scale * s.canvas]);
+    n = await answered(page, n);
+    s = await look(page);
+    await shot(page, 'general-2d-after');
+    check(s.inputs['B.position.y'].value === '0.2' && onGrid(0.2, 0.15, 0.05),
+          'general-2d: B dragged 0.06 m down: B.position.y = ' + s.inputs['B.position.y'].value + ' (x is no input: it stays)');
+    sameAsStep(s, lessonWith('06-general-2d.toml', [['A', 'v', 0, 1.75], ['B', 'position', 1, 0.2]]), 'general-2d (A.v.x = 1.75, B.position.y = 0.2)');
+    // Keys: Up moves B up a step (0.25); Down with Shift ten steps: held at 0.15, said.
+    await key(page, 'position:B', 'ArrowUp');
+    n = await answered(page, n);
+    s = await look(page);
+    check(s.inputs['B.position.y'].value === '0.25', 'general-2d: Up on B: B.position.y = ' + s.inputs['B.position.y'].value);
+    await key(page, 'position:B', 'ArrowDown', true);
+    n = await answered(page, n);
+    s = await look(page);
+    check(s.inputs['B.position.y'].value === '0.15' && /it goes no further/.test(s.said),
+          'general-2d: Shift+Down on B: held at 0.15; said: ' + s.said);
+    sameAsStep(s, lessonWith('06-general-2d.toml', [['A', 'v', 0, 1.75], ['B', 'position', 1, 0.15]]), 'general-2d (B.position.y = 0.15)');
+    await page.close();
+  }
+
+  // ---- centre-of-percussion: ball 2's hit point along bat 2 ----
+  {
+    const page = await openPage(site + '/centre-of-percussion/index.html?show=try-it');
+    let n = await answered(page, 0);
+    let s = await look(page);
+    // ball 2.position.x: 1.05, [0.9, 1.08] step 0.01: dragged 0.083 m toward the bat's centre -> 0.97.
+    const from = s.handles['position:ball 2'];
+    check(!!from && /ball 2 itself \(in a dashed outline\) moves it: ball 2\.position\.x/.test(s.help), 'centre-of-percussion: ball 2 can be dragged: ' + s.help);
+    await shot(page, 'centre-of-percussion-before');
+    await mouseDrag(page, from, [from[0] - 0.083 * s.view.scale * s.canvas, from[1] - 10]);
+    n = await answered(page, n);
+    s = await look(page);
+    await shot(page, 'centre-of-percussion-after');
+    check(s.inputs['ball 2.position.x'].value === '0.97', 'centre-of-percussion: ball 2.position.x = ' + s.inputs['ball 2.position.x'].value);
+    check(s.figures.length === 2, 'centre-of-percussion: the panel shows both bats\' collisions');
+    sameAsStep(s, lessonWith('19-centre-of-percussion.toml', [['ball 2', 'position', 0, 0.97]]), 'centre-of-percussion (ball 2 at x = 0.97)');
+    await page.close();
+  }
+
+  // ---- contact-point-velocity: the spin dial by keys ----
+  {
+    const page = await openPage(site + '/contact-point-velocity/index.html?show=try-it');
+    let n = await answered(page, 0);
+    let s = await look(page);
+    const w0 = Number(s.inputs['A.w'].value);  // [-6, -4] step 0.5
+    check(!!s.handles['spin:A'], 'contact-point-velocity: a spin dial on A');
+    await shot(page, 'contact-point-velocity-before');
+    await key(page, 'spin:A', 'ArrowUp');
+    n = await answered(page, n);
+    s = await look(page);
+    check(close(Number(s.inputs['A.w'].value), w0 + 0.5, 1e-12), `contact-point-velocity: Up on the dial: A.w ${w0} -> ${s.inputs['A.w'].value}`);
+    await key(page, 'spin:A', 'ArrowDown', true);
+    n = await answered(page, n);
+    s = await look(page);
+    await shot(page, 'contact-point-velocity-after');
+    check(s.inputs['A.w'].value === '-6' && /lower|no further/.test(s.said), 'contact-point-velocity: Shift+Down: A.w = -6; said: ' + s.said);
+    sameAsStep(s, lessonWith('04-contact-point-velocity.toml', [['A', 'w', -1, -6]]), 'contact-point-velocity (A.w = -6)');
+    await page.close();
+  }
+
+  // ---- restitution: the mass knob (its bodies' inputs are masses only) ----
+  {
+    const page = await openPage(site + '/restitution/index.html?show=try-it');
+    let n = await answered(page, 0);
+    let s = await look(page);
+    const from = s.handles['mass:A (e=0.1)'];
+    check(!!from, 'restitution: a mass knob on A (e=0.1)');
+    // A (e=0.1).mass: 0.5, [0.25, 1] step 0.05 over the knob's 100 px upright track: +0.21 kg -> 0.7.
+    await mouseDrag(page, from, [from[0] + 5, from[1] - 0.21 * 100 / 0.75 * s.canvas]);
+    n = await answered(page, n);
+    s = await look(page);
+    await shot(page, 'restitution-after');
+    check(s.inputs['A (e=0.1).mass'].value === '0.7', 'restitution: the mass knob set A (e=0.1).mass = ' + s.inputs['A (e=0.1).mass'].value);
+    sameAsStep(s, lessonWith('05-restitution.toml', [['A (e=0.1)', 'mass', -1, 0.7], ['A (e=0.5)', 'mass', -1, 0.7], ['A (e=1)', 'mass', -1, 0.7]]),
+               'restitution (the A balls 0.7 kg)');
+    await page.close();
+  }
+}
+
+main().then(() => {
+  browser.kill();
+  console.log(failures ? `drag.js: ${failures} FAILED` : 'drag.js: all passed');
+  process.exit(failures ? 1 : 0);
+}, e => {
+  browser.kill();
+  console.error('drag.js: ' + e.stack);
+  process.exit(1);
+});
