@@ -208,7 +208,16 @@ std::string grade_tables(const AnswerKey& key, const std::vector<Mark>& marks) {
         std::snprintf(buf, sizeof buf, "  %d/%zu\n", total, ms.size());
         o << buf;
     }
-    o << "(1 right, 0 wrong, - not answered)\n\nquestion  quantity                       right  answered  most common wrong answer\n";
+    o << "(1 right, 0 wrong, - not answered)\n";
+    // The key's students the answers do not name: said, not marked (a key may hold more sheets
+    // than the class handed in).
+    std::string absent;
+    for (const KeyStudent& k : key.students)
+        if (!by.count(k.student)) absent += (absent.empty() ? "" : ", ") + std::to_string(k.student);
+    if (!absent.empty())
+        o << "Not marked: the key's student" << (absent.find(',') == std::string::npos ? " " : "s ") << absent
+          << ", with no row in the answers.\n";
+    o << "\nquestion  quantity                       right  answered  most common wrong answer\n";
     for (const QuestionSummary& q : summarize_questions(marks)) {
         std::snprintf(buf, sizeof buf, "%8d  %-30s %5d  %8d  ", q.question, q.quantity.c_str(), q.right, q.answered);
         o << buf;

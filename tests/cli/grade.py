@@ -97,6 +97,11 @@ check(marks.get((2, 4), {}).get("note") == "no answer" and marks[(2, 4)]["mark"]
 # Only the students the CSV names, every numeric question of each.
 check(sorted({s for s, _ in marks}) == sorted({1, 2, s3}), f"students marked: {sorted({s for s, _ in marks})}")
 check(len(marks) == 3 * 4, f"{len(marks)} marks, expected 12")
+# The key's other students are said to be left out, not passed over in silence.
+absent = sorted(s["student"] for s in students if s["student"] not in {1, 2, s3})
+check(len(absent) > 0, "the key has students the answers do not name")
+said = "Not marked: the key's student" + ("s " if len(absent) > 1 else " ") + ", ".join(map(str, absent))
+check(said + ", with no row in the answers." in r.stdout, f"stdout names the unmarked: {said!r} in {r.stdout!r}")
 # The table: student 1 has 3 of 4.
 check(any(line.split()[:1] == ["1"] and line.split()[-1] == "3/4" for line in r.stdout.splitlines()),
       f"student 1: 3/4 in\n{r.stdout}")
