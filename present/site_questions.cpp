@@ -3,8 +3,6 @@
 // The script that opens an answer once the student commits one is here too.
 #include "present/site_questions.h"
 
-#include <cctype>
-#include <cstdio>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -269,22 +267,6 @@ std::string questions_html(const Lesson& L, const std::vector<LessonAnswer>& ans
     return o.str();
 }
 
-// A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX
-// ("A (e=0.1).mass" -> "A%20%28e%3D0.1%29.mass"), as the panel's URLSearchParams reads it back.
-std::string percent_encoded(const std::string& text) {
-    std::string out;
-    for (unsigned char c : text) {
-        if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
-            out += static_cast<char>(c);
-        } else {
-            char hex[4];
-            std::snprintf(hex, sizeof hex, "%%%02X", c);
-            out += hex;
-        }
-    }
-    return out;
-}
-
 // "Check yourself"'s other numbers (teach/check_variant.h): the inputs that differ from the
 // lesson's own, a link that sets them in the Try-it panel (`try_it`), and the questions whose
 // answer these numbers leave as in the watched run (no draw changed it: on the teacher's page,
@@ -297,7 +279,8 @@ std::string new_numbers_html(const Lesson& L, const CheckVariant& c, bool try_it
         if (at == c.sheet.values.end() || at->second == v.lesson_value) continue;
         rows << "<tr><td>" << math(html::vary_label(v)) << "</td><td>" << escape(notation::num_data(v.lesson_value))
              << "</td><td><strong>" << escape(notation::num_data(at->second)) << "</strong></td></tr>\n";
-        query += (query.empty() ? "?" : "&amp;") + percent_encoded(v.name()) + "=" + html::number_attr(at->second);
+        query +=
+            (query.empty() ? "?" : "&amp;") + html::percent_encoded(v.name()) + "=" + html::number_attr(at->second);
     }
     o << "<div class=\"new-numbers\">\n";
     if (teacher)

@@ -49,8 +49,6 @@ std::string check_html(const Lesson& L, const std::vector<LessonAnswer>& answers
 std::string questions_html(const Lesson& L, const std::vector<LessonAnswer>& answers,
                            const std::vector<std::size_t>& asked, const CheckVariant* check = nullptr);
 
-// A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX.
-std::string percent_encoded(const std::string& text);
 // "Check yourself"'s other numbers: the inputs that differ from the lesson's own, a link that
 // sets them in the Try-it panel (`try_it`), and on the teacher's page (`teacher`) the questions
 // whose answer no draw changed.

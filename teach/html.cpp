@@ -504,6 +504,22 @@ std::string number_attr(double x) {
     return o.str();
 }
 
+// A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX
+// ("A (e=0.1).mass" -> "A%20%28e%3D0.1%29.mass"), as the panel's URLSearchParams reads it back.
+std::string percent_encoded(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
+            out += static_cast<char>(c);
+        } else {
+            char hex[4];
+            std::snprintf(hex, sizeof hex, "%%%02X", c);
+            out += hex;
+        }
+    }
+    return out;
+}
+
 std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     const int d = L.scene.dimension;
     std::ostringstream o;
@@ -536,8 +552,9 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
         o << "<button type=\"button\" class=\"tryit-reset\">The lesson's values</button>\n</div>\n";
         std::string names;
         for (const LessonVary& v : L.vary) names += (names.empty() ? "" : ", ") + v.name();
-        o << "<p class=\"tryit-names note\">The page's address sets them too: index.html?" << escape(L.vary[0].name())
-          << "=" << number_attr(L.vary[0].hi) << " (the inputs' names: " << escape(names) << ").</p>\n";
+        o << "<p class=\"tryit-names note\">The page's address sets them too: index.html?"
+          << percent_encoded(L.vary[0].name()) << "=" << number_attr(L.vary[0].hi)
+          << " (the inputs' names: " << escape(names) << ").</p>\n";
     }
     if (d < 3) {
         // The picture, and over it the handles a drag or the keyboard sets inputs with (try-it.js

@@ -90,6 +90,9 @@ std::string vary_label(const LessonVary& v);
 // A number as an HTML attribute or a query string's value: the shortest decimal that reads
 // back as the same double.
 std::string number_attr(double x);
+// A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX
+// ("A (e=0.1).mass" -> "A%20%28e%3D0.1%29.mass"), as the panel's URLSearchParams reads it back.
+std::string percent_encoded(const std::string& text);
 // try-it-lesson.js: the lesson's file as text (the engine reads it as `collide` does) and the
 // figures' colours (`palette`, a JSON object: render/style.h), as `window.collideTryIt`. A
 // script rather than text in the page: a page opened from file:// cannot fetch a file.
