@@ -15,7 +15,15 @@ CheckVariant check_variant(const Lesson& L, const std::vector<LessonAnswer>& own
     CheckVariant best;
     std::size_t best_equal = 0;
     for (int draw = 1; draw <= kCheckDraws; ++draw) {
-        StudentSheet s = draw_student(L, kCheckSeed, draw);
+        // The first draw's refusal is the lesson's (its ranges cannot answer); a later one only
+        // ends the search for a better draw.
+        StudentSheet s;
+        try {
+            s = draw_student(L, kCheckSeed, draw);
+        } catch (const InputError&) {
+            if (draw == 1) throw;
+            break;
+        }
         std::vector<std::size_t> equal;
         for (std::size_t k = 0; k < s.asked.size(); ++k) {
             const std::size_t i = s.asked[k];

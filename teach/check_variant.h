@@ -41,7 +41,8 @@ bool marked_right(const LessonAnswer& copied, const LessonAnswer& want, double t
 // The check values of `lesson` given `own`, the answers of its own run (answer_questions). Of
 // the first kCheckDraws draws, the first whose every numeric answer differs from the lesson's
 // own (marked_right false), else the one with the fewest equal. Throws InputError as
-// draw_student does. Callers ask only for a lesson with [[vary]] (without, every draw is the
+// draw_student does for the first draw (the lesson's ranges cannot answer); a later draw that
+// cannot ends the search with the best so far. Callers ask only for a lesson with [[vary]] (without, every draw is the
 // lesson's own values).
 CheckVariant check_variant(const Lesson& lesson, const std::vector<LessonAnswer>& own);
 
