@@ -440,21 +440,6 @@ std::string worked_html_beside_run(const SolveProblem& P, const Solution& alone,
 
 namespace {
 
-// The unit of a [[vary]] key's field, as a slider's label shows it ("" for a pure number).
-std::string vary_unit(const std::string& field) {
-    if (field == "mass") return "kg";
-    if (field == "v" || field == "speed") return "m/s";
-    if (field == "w") return "rad/s";
-    if (field == "angle") return "rad";
-    if (field == "position" || field == "x" || field == "length" || field == "width" || field == "height" ||
-        field == "radius" || field == "size" || field == "offset")
-        return "m";
-    if (field == "inertia") return "kg m^2";
-    if (field == "duration" || field == "output_dt") return "s";
-    if (field == "gravity") return "m/s^2";
-    return "";
-}
-
 // A [[vary]] input's symbol in our notation: "m", "v_x", "ω_z", "x" (a position's x), "e".
 std::string vary_symbol(const LessonVary& v) {
     static const char* const symbols[][2] = {
@@ -472,6 +457,21 @@ std::string vary_symbol(const LessonVary& v) {
 }
 
 }  // namespace
+
+// The unit of a [[vary]] key's field, as a slider's label shows it ("" for a pure number).
+std::string vary_unit(const std::string& field) {
+    if (field == "mass") return "kg";
+    if (field == "v" || field == "speed") return "m/s";
+    if (field == "w") return "rad/s";
+    if (field == "angle") return "rad";
+    if (field == "position" || field == "x" || field == "length" || field == "width" || field == "height" ||
+        field == "radius" || field == "size" || field == "offset")
+        return "m";
+    if (field == "inertia") return "kg m^2";
+    if (field == "duration" || field == "output_dt") return "s";
+    if (field == "gravity") return "m/s^2";
+    return "";
+}
 
 // A slider's label in our notation: "m of A (kg)", "v_x of ball (m/s)", "e (restitution)",
 // "x of domino 2 (m), and of domino 3, …, domino 15 in proportion".

@@ -87,6 +87,8 @@ std::string try_it_html(const Lesson& lesson, double fps, const std::string& roo
 // A [[vary]] input as a slider labels it, in our notation: "m of A (kg)", "v_x of ball (m/s)",
 // "e (restitution)", "x of domino 2 (m), and of domino 3, …, domino 15 in proportion".
 std::string vary_label(const LessonVary& v);
+// The unit of a [[vary]] key's field ("kg", "m/s", "kg m^2"; "" for a pure number).
+std::string vary_unit(const std::string& field);
 // A number as an HTML attribute or a query string's value: the shortest decimal that reads
 // back as the same double.
 std::string number_attr(double x);

@@ -239,7 +239,8 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
                         {"body", w.body},
                         {"field", w.field},
                         {"component", w.component},
-                        {"in_proportion", w.in_proportion}});
+                        {"in_proportion", w.in_proportion},
+                        {"unit", html::vary_unit(w.field)}});
     out["vary"] = vary;
     out["values"] = changed;
     std::string worked = "null";

@@ -527,7 +527,6 @@
   var handles = [];  // of the latest answer's first frame (makeHandles)
   var drag = null;   // the drag under way: {h, id, p0, start, a0, a}
   var focusedId = null, hoverId = null;
-  var UNITS = {mass: 'kg', v: 'm/s', position: 'm', w: 'rad/s', angle: 'rad'};
   var KNOB = 9;  // a knob's radius on the canvas (px)
 
   function atStart() { return !!run && frame === 0 && !playing && handles.length > 0; }
@@ -544,7 +543,7 @@
     if (k > n || (k === n && x > v.hi)) { beyond = x > v.hi + v.step / 2 ? 'high' : null; k = n; }
     return {value: gridValue(v, k), k: k, n: n, beyond: beyond};
   }
-  function unitOf(v) { return UNITS[v.field] || ''; }
+  function unitOf(v) { return v.unit; }  // the slider label's unit (teach/html.h vary_unit)
   function say(v, s) {
     var u = unitOf(v), text = v.name + ' = ' + num(s.value) + (u ? ' ' + u : '');
     if (s.k === 0 || s.k === s.n)
