@@ -87,6 +87,8 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
     if (!rq.engine_js.empty()) {
         fs::copy_file(rq.engine_js, dir / "collide-engine.js", fs::copy_options::overwrite_existing);
         render::write_file_atomic((dir / "try-it.js").string(), std::string(assets::site_try_it_js));
+        render::write_file_atomic((dir / "try-it-picture.js").string(), std::string(assets::site_try_it_picture_js));
+        render::write_file_atomic((dir / "try-it-drag.js").string(), std::string(assets::site_try_it_drag_js));
     }
     if (stop && stop()) throw Interrupted(0);  // the last chance before the command renames it into place
 }

@@ -7,9 +7,9 @@
 //   DIR/ID/teacher.html        its teacher's page
 //   DIR/ID/...                 everything `collide render ID` writes (frames, data, Markdown),
 //                              energy.svg and momentum.svg
-//   DIR/collide-engine.js      the WebAssembly module, and the panels' script
-//   DIR/try-it.js              (assets/site/try-it.js), DIR/ID/try-it-lesson.js the lesson for
-//                              it (teach/html.h try_it_data_js): only with a module
+//   DIR/collide-engine.js      the WebAssembly module, and the panels' scripts
+//   DIR/try-it*.js             (assets/site/try-it.js and its parts), DIR/ID/try-it-lesson.js the
+//                              lesson for them (teach/html.h try_it_data_js): only with a module
 #pragma once
 
 #include <cstddef>

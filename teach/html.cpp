@@ -581,7 +581,8 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";
     o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root
-      << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
+      << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it-picture.js\"></script>\n<script src=\""
+      << root << "try-it-drag.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
     o << "</section>\n";
     return o.str();
 }
