@@ -23,12 +23,15 @@ std::string with_unit(const std::string& name, const std::string& unit) {
 // One sample quantity at one sampled instant.
 double sample_value(const PlotQuantity& q, const Lesson& lesson, const Scene& scene, const render::FrameState& f) {
     if (q.kind == Kind::time) return f.t;
-    if (q.kind == Kind::kinetic || q.kind == Kind::potential || q.kind == Kind::energy || q.kind == Kind::momentum) {
-        const render::FrameTotals s = render::frame_totals(scene, f);
+    if (q.kind == Kind::kinetic || q.kind == Kind::potential || q.kind == Kind::energy || q.kind == Kind::momentum ||
+        q.kind == Kind::angular_momentum) {
+        const render::FrameTotals s = q.body >= 0 ? render::body_totals(scene, f, static_cast<std::size_t>(q.body))
+                                                  : render::frame_totals(scene, f);
         if (q.kind == Kind::kinetic) return s.kinetic;
         if (q.kind == Kind::potential) return s.potential;
         if (q.kind == Kind::energy) return s.kinetic + s.potential;
-        return s.momentum[q.component];
+        if (q.kind == Kind::momentum) return s.momentum[q.component];
+        return s.angular_momentum[q.component];
     }
     const BodyState& b = f.bodies[static_cast<std::size_t>(q.body)];
     // A [[mark]]: the point fixed in the body, at q r from its centre; its velocity v + w x q r.
@@ -97,15 +100,18 @@ std::string plot_quantity_words(const PlotQuantity& q, const Lesson& lesson, boo
         return done("time t");
     }
     const std::string axis = q.component == 0 ? "x" : q.component == 1 ? "y" : "z";
+    const std::string body = q.body >= 0 ? scene.bodies[static_cast<std::size_t>(q.body)].name : std::string();
+    const std::string whose = q.body >= 0 ? body + ": " : "total ";
     switch (q.kind) {
         case Kind::time: return done("time t");
-        case Kind::kinetic: return done("total kinetic energy");
-        case Kind::potential: return done("total potential energy");
-        case Kind::energy: return done("total energy (kinetic + potential)");
-        case Kind::momentum: return done(scene.dimension == 1 ? "total momentum" : "total momentum, " + axis);
+        case Kind::kinetic: return done(whose + "kinetic energy");
+        case Kind::potential: return done(whose + "potential energy");
+        case Kind::energy: return done(whose + "energy (kinetic + potential)");
+        case Kind::momentum: return done(whose + (scene.dimension == 1 ? "momentum" : "momentum, " + axis));
+        case Kind::angular_momentum:
+            return done(whose + "angular momentum about the origin" + (scene.dimension == 3 ? ", " + axis : ""));
         default: break;
     }
-    const std::string body = q.body >= 0 ? scene.bodies[static_cast<std::size_t>(q.body)].name : std::string();
     const std::string point =
         q.mark >= 0 ? lesson.view.marks[static_cast<std::size_t>(q.mark)].name : std::string("centre");
     // Along y against gravity (gravity along -y only): a height.

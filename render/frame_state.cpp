@@ -240,21 +240,28 @@ double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s) {
     }
 }
 
-FrameTotals frame_totals(const Scene& scene, const FrameState& frame) {
+namespace {
+
+// The totals of the bodies [first, last) of a frame.
+FrameTotals totals_of(const Scene& scene, const FrameState& frame, std::size_t first, std::size_t last) {
     FrameTotals t;
-    const std::size_t n = std::min(scene.bodies.size(), frame.bodies.size());
     const auto sum = [&](auto body_of) {
         using Body = decltype(body_of(std::size_t{0}));
         std::vector<Body> bodies;
-        for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t i = first; i < last; ++i) {
             bodies.push_back(body_of(i));
             t.potential += potential_energy(bodies.back(), scene.gravity);
         }
         const auto sums = totals(bodies);
         t.kinetic = sums.kinetic_energy;
         if constexpr (std::is_same_v<Body, Body1>) t.momentum.x() = sums.momentum;
-        else if constexpr (std::is_same_v<Body, Body2>) t.momentum.head<2>() = sums.momentum;
-        else t.momentum = sums.momentum;
+        else if constexpr (std::is_same_v<Body, Body2>) {
+            t.momentum.head<2>() = sums.momentum;
+            t.angular_momentum.z() = sums.angular_momentum;
+        } else {
+            t.momentum = sums.momentum;
+            t.angular_momentum = sums.angular_momentum;
+        }
     };
     switch (scene.dimension) {
         case 1: sum([&](std::size_t i) { return body1_of(scene, i, frame.bodies[i]); }); break;
@@ -262,6 +269,17 @@ FrameTotals frame_totals(const Scene& scene, const FrameState& frame) {
         default: sum([&](std::size_t i) { return body3_of(scene, i, frame.bodies[i]); }); break;
     }
     return t;
+}
+
+}  // namespace
+
+FrameTotals frame_totals(const Scene& scene, const FrameState& frame) {
+    return totals_of(scene, frame, 0, std::min(scene.bodies.size(), frame.bodies.size()));
+}
+
+FrameTotals body_totals(const Scene& scene, const FrameState& frame, std::size_t i) {
+    if (i >= std::min(scene.bodies.size(), frame.bodies.size())) return {};
+    return totals_of(scene, frame, i, i + 1);
 }
 
 TotalsColumns totals_columns(const std::vector<FrameTotals>& totals) {

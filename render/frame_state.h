@@ -126,14 +126,18 @@ double body_mass(const Scene& scene, std::size_t i);
 // bodies.
 double kinetic_energy(const Scene& scene, std::size_t i, const BodyState& s);
 
-// Totals of the moving bodies of a frame, by the engine's formulas: kinetic energy, potential
-// energy in the scene's gravity (zero at the origin), momentum (1D: x; 2D: x, y).
+// Totals of the moving bodies of a frame, by the engine's formulas (engine/diagnostics.h):
+// kinetic energy, potential energy in the scene's gravity (zero at the origin), momentum (1D: x;
+// 2D: x, y) and angular momentum about the origin (2D: z; 1D: none, zero).
 struct FrameTotals {
-    double kinetic = 0.0;          // J
-    double potential = 0.0;        // J
-    Vec3 momentum = Vec3::Zero();  // kg m/s
+    double kinetic = 0.0;                  // J
+    double potential = 0.0;                // J
+    Vec3 momentum = Vec3::Zero();          // kg m/s
+    Vec3 angular_momentum = Vec3::Zero();  // kg m^2/s
 };
 FrameTotals frame_totals(const Scene& scene, const FrameState& frame);
+// The same of body i alone (a static body's are zero).
+FrameTotals body_totals(const Scene& scene, const FrameState& frame, std::size_t i);
 
 // A run's totals as columns, for plots: kinetic, potential and their sum (J), momentum
 // components (kg m/s).

@@ -157,8 +157,9 @@ struct LessonVary {
 // number among them, from 1) or "t", each y "t", "interval" (from the one before) or "impulse".
 struct PlotQuantity {
     std::string name;  // as written: "ball.position.y", "energy", "t", "B.touching point.v.x"
-    // Per sample: what it reads.
-    enum class Kind { time, position, velocity, spin, angle, kinetic, potential, energy, momentum };
+    // Per sample: what it reads. kinetic ... angular_momentum: the moving bodies' total (body -1)
+    // or one body's (BODY.kinetic_energy, BODY.momentum.x); angular momentum about the origin.
+    enum class Kind { time, position, velocity, spin, angle, kinetic, potential, energy, momentum, angular_momentum };
     Kind kind = Kind::time;
     int body = -1;      // a body's scene index, or -1 (time and the totals)
     int mark = -1;      // an index into the lesson's [[mark]] list (view.marks), or -1
@@ -167,6 +168,7 @@ struct PlotQuantity {
 };
 enum class PlotPer { sample, collision };
 enum class PlotFit { none, line, ratio };
+
 struct LessonPlot {
     std::string title;
     PlotPer per = PlotPer::sample;
@@ -216,6 +218,13 @@ struct Lesson {
     std::vector<LessonPlot> plots;      // [[plot]] entries, in order (may be empty)
     SceneView view;
 };
+
+// Every per-sample quantity a [[plot]] of `L` may name, read as a [[plot]]'s are (the Try-it
+// panel's plot offers them): t, the totals, and each moving body's (and each [[mark]]'s).
+std::vector<PlotQuantity> plot_quantities(const Lesson& L);
+// Per collision: "collision" (its number; x only), "t", "interval" (from the one before; y only)
+// and "impulse" (y only), with their units.
+std::vector<PlotQuantity> plot_collision_quantities();
 
 // ---- The file format (scenario/lesson_file.cpp, lesson_question.cpp) ----
 

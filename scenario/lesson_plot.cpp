@@ -1,5 +1,7 @@
 // [[plot]] of a lesson file (docs/formats/lesson-files.md, "Plots"): what to plot against what,
 // every name checked against the scene's bodies and the lesson's [[mark]] list.
+#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -22,33 +24,59 @@ int axis(const std::string& s, int dim) {
 std::string axes_of(int dim) { return dim == 1 ? "x" : dim == 2 ? "x or y" : "x, y or z"; }
 
 // A per-sample quantity (PlotQuantity), or fails at `key` saying what it may be.
-PlotQuantity sample_quantity(const std::string& name, const Lesson& L, const TableReader& t, const std::string& key) {
+// The totals' names and one body's (after "BODY."): energies, momentum, angular momentum.
+// Fills q's kind, unit and component; false when `field` is none of them.
+bool totals_quantity(const std::string& field, const std::string& comp, int dim, PlotQuantity& q,
+                     const std::function<void(const std::string&)>& fail) {
+    if (field == "kinetic_energy" || field == "potential_energy" || field == "energy") {
+        if (!comp.empty()) fail(field + " is one number");
+        q.kind = field == "energy" ? Kind::energy : field == "kinetic_energy" ? Kind::kinetic : Kind::potential;
+        q.unit = "J";
+        return true;
+    }
+    if (field == "momentum") {
+        q.kind = Kind::momentum;
+        q.unit = "kg m/s";
+        if (comp.empty() && dim == 1) return true;
+        q.component = axis(comp, dim);
+        if (q.component < 0) fail("momentum has the components " + axes_of(dim) + ": momentum.x");
+        return true;
+    }
+    if (field == "angular_momentum") {
+        q.kind = Kind::angular_momentum;
+        q.unit = "kg m^2/s";
+        if (dim == 1) fail("bodies on a line have no angular momentum");
+        if (dim == 2 && comp.empty()) q.component = 2;
+        else if (dim == 3 && axis(comp, 3) >= 0) q.component = axis(comp, 3);
+        else
+            fail(dim == 2 ? "in 2D the angular momentum is one number (about z): angular_momentum"
+                          : "angular_momentum has the components x, y or z: angular_momentum.x");
+        return true;
+    }
+    return false;
+}
+
+// A per-sample quantity (PlotQuantity), or calls `refuse` (which throws) saying why not.
+PlotQuantity sample_quantity(const std::string& name, const Lesson& L,
+                             const std::function<void(const std::string&)>& refuse) {
     const int dim = L.scene.dimension;
     PlotQuantity q;
     q.name = name;
     const auto fail = [&](const std::string& why) {
-        t.fail(key, "'" + name + "': " + why +
-                        " (a per-sample quantity is t, kinetic_energy, potential_energy, energy, momentum.x, or "
-                        "BODY.position.x, BODY.v.x, BODY.w, BODY.angle, BODY.MARK.v.x with a body's name and one "
-                        "of its [[mark]] names)");
+        refuse("'" + name + "': " + why +
+               " (a per-sample quantity is t, kinetic_energy, potential_energy, energy, momentum.x, "
+               "angular_momentum, or BODY.position.x, BODY.v.x, BODY.w, BODY.angle, BODY.kinetic_energy, "
+               "BODY.momentum.x, BODY.angular_momentum, BODY.MARK.v.x with a body's name and one of its "
+               "[[mark]] names)");
     };
     if (name == "t") {
         q.unit = "s";
         return q;
     }
-    if (name == "kinetic_energy" || name == "potential_energy" || name == "energy") {
-        q.kind = name == "energy" ? Kind::energy : name == "kinetic_energy" ? Kind::kinetic : Kind::potential;
-        q.unit = "J";
-        return q;
-    }
-    if (name.rfind("momentum", 0) == 0) {
-        q.kind = Kind::momentum;
-        q.unit = "kg m/s";
-        if (name == "momentum" && dim == 1) return q;
-        const int k = name.size() > 9 && name[8] == '.' ? axis(name.substr(9), dim) : -1;
-        if (k < 0) fail("momentum has the components " + axes_of(dim) + ": momentum.x");
-        q.component = k;
-        return q;
+    {
+        const std::size_t dot = name.find('.');
+        if (totals_quantity(name.substr(0, dot), dot == std::string::npos ? "" : name.substr(dot + 1), dim, q, fail))
+            return q;
     }
     // BODY.rest: the longest body name followed by a dot (names may hold dots: "A (e=0.1)").
     int body = -1;
@@ -92,6 +120,7 @@ PlotQuantity sample_quantity(const std::string& name, const Lesson& L, const Tab
         return q;
     }
     if (q.mark >= 0) fail("a [[mark]] has position and v");
+    if (totals_quantity(field, comp, dim, q, fail)) return q;
     if (field == "w") {
         q.kind = Kind::spin;
         q.unit = "rad/s";
@@ -112,17 +141,17 @@ PlotQuantity sample_quantity(const std::string& name, const Lesson& L, const Tab
     return q;  // not reached: fail throws
 }
 
+PlotQuantity sample_quantity(const std::string& name, const Lesson& L, const TableReader& t, const std::string& key) {
+    return sample_quantity(name, L, [&](const std::string& why) { t.fail(key, why); });
+}
+
 PlotQuantity collision_quantity(const std::string& name, bool is_x, const TableReader& t, const std::string& key) {
-    PlotQuantity q;
-    q.name = name;
-    if (is_x && name == "collision") q.unit = "";
-    else if (name == "t" || (!is_x && name == "interval")) q.unit = "s";
-    else if (!is_x && name == "impulse") q.unit = "N s";
-    else
-        t.fail(key, "'" + name + "': per collision, " +
-                        (is_x ? std::string("x is \"collision\" (its number) or \"t\"")
-                              : std::string("y is \"t\", \"interval\" or \"impulse\"")));
-    return q;
+    for (const PlotQuantity& q : plot_collision_quantities())
+        if (q.name == name && (is_x ? q.name != "interval" && q.name != "impulse" : q.name != "collision")) return q;
+    t.fail(key, "'" + name + "': per collision, " +
+                    (is_x ? std::string("x is \"collision\" (its number) or \"t\"")
+                          : std::string("y is \"t\", \"interval\" or \"impulse\"")));
+    return {};  // not reached: fail throws
 }
 
 }  // namespace
@@ -188,3 +217,56 @@ void parse_plots(const TableReader& root, Lesson& L) {
 }
 
 }  // namespace collide::lesson_parse
+
+namespace collide {
+
+std::vector<PlotQuantity> plot_collision_quantities() {
+    std::vector<PlotQuantity> out;
+    for (const auto& [name, unit] :
+         {std::pair<const char*, const char*>{"collision", ""}, {"t", "s"}, {"interval", "s"}, {"impulse", "N s"}}) {
+        PlotQuantity q;
+        q.name = name;
+        q.unit = unit;
+        out.push_back(q);
+    }
+    return out;
+}
+
+std::vector<PlotQuantity> plot_quantities(const Lesson& L) {
+    const int dim = L.scene.dimension;
+    const std::vector<std::string> axes = dim == 1   ? std::vector<std::string>{"x"}
+                                          : dim == 2 ? std::vector<std::string>{"x", "y"}
+                                                     : std::vector<std::string>{"x", "y", "z"};
+    const auto totals = [&](const std::string& head, std::vector<std::string>& out) {
+        for (const char* e : {"kinetic_energy", "potential_energy", "energy"}) out.push_back(head + e);
+        if (dim == 1) out.push_back(head + "momentum");
+        else
+            for (const std::string& a : axes) out.push_back(head + "momentum." + a);
+        if (dim == 2) out.push_back(head + "angular_momentum");
+        if (dim == 3)
+            for (const std::string& a : axes) out.push_back(head + "angular_momentum." + a);
+    };
+    std::vector<std::string> out{"t"};
+    totals("", out);
+    for (std::size_t i = 0; i < L.scene.bodies.size(); ++i) {
+        const SceneBody& b = L.scene.bodies[i];
+        if (b.is_static()) continue;
+        for (const char* f : {"position", "v"})
+            for (const std::string& a : axes) out.push_back(b.name + "." + f + "." + a);
+        if (dim == 2) out.insert(out.end(), {b.name + ".w", b.name + ".angle"});
+        if (dim == 3)
+            for (const std::string& a : axes) out.push_back(b.name + ".w." + a);
+        totals(b.name + ".", out);
+        for (const ViewMark& mk : L.view.marks)
+            if (mk.body == i)
+                for (const char* f : {"position", "v"})
+                    for (const std::string& a : axes) out.push_back(b.name + "." + mk.name + "." + f + "." + a);
+    }
+    std::vector<PlotQuantity> quantities;
+    for (const std::string& name : out)
+        quantities.push_back(lesson_parse::sample_quantity(
+            name, L, [&](const std::string& why) { throw std::logic_error("plot_quantities: " + why); }));
+    return quantities;
+}
+
+}  // namespace collide

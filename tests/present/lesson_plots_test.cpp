@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -289,6 +290,145 @@ TEST(LessonPlots, DominoesWaveSpeedIsTheSpacingOverTheFittedSlope) {
     EXPECT_GT(*p.line->speed, 0.51);
     EXPECT_NE(p.summary.find("s per domino"), std::string::npos) << p.summary;
     EXPECT_NE(p.summary.find("wave speed"), std::string::npos) << p.summary;
+}
+
+// The quantities the Try-it panel's plot offers (plot_quantities) are those the reader takes:
+// each, written as a [[plot]]'s y in every bundled lesson, reads back as the same quantity.
+TEST(LessonPlots, EveryQuantityOnOfferIsOneTheReaderTakes) {
+    int lessons = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(kLessons)) {
+        if (entry.path().extension() != ".toml") continue;
+        const Lesson L = load_lesson(entry.path().string());
+        const std::vector<PlotQuantity> offered = plot_quantities(L);
+        ASSERT_GT(offered.size(), 3u) << L.id;
+        std::string plots;
+        for (const PlotQuantity& q : offered) {
+            std::string quoted;  // a TOML basic string: the names hold spaces, dots and "=" at most
+            for (char c : q.name) quoted += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+            plots += "\n[[plot]]\ntitle = \"Q\"\ny = \"" + quoted + "\"\n";
+        }
+        const Lesson with = parse_lesson_text(L.source + "\n" + plots, L.source_name, L.file);
+        ASSERT_EQ(with.plots.size(), L.plots.size() + offered.size()) << L.id;
+        for (std::size_t k = 0; k < offered.size(); ++k) {
+            const PlotQuantity& read = with.plots[L.plots.size() + k].y.at(0);
+            EXPECT_EQ(read.name, offered[k].name) << L.id;
+            EXPECT_EQ(read.kind, offered[k].kind) << L.id << " " << offered[k].name;
+            EXPECT_EQ(read.body, offered[k].body) << L.id << " " << offered[k].name;
+            EXPECT_EQ(read.mark, offered[k].mark) << L.id << " " << offered[k].name;
+            EXPECT_EQ(read.component, offered[k].component) << L.id << " " << offered[k].name;
+            EXPECT_EQ(read.unit, offered[k].unit) << L.id << " " << offered[k].name;
+        }
+        ++lessons;
+    }
+    EXPECT_EQ(lessons, 22);
+}
+
+// A disc gliding and spinning (no gravity, no collision): its kinetic energy, momentum and
+// angular momentum about the origin are the closed forms 1/2 m v.v + 1/2 I w^2, m v and
+// I w + m (x vy - y vx), and a body's share of each total is its own (the other at rest).
+TEST(LessonPlots, ABodysEnergyMomentumAndAngularMomentumAreTheClosedForms) {
+    const Lesson L = parse_lesson_text(R"([lesson]
+id = "totals-test"
+title = "Totals"
+
+[scene]
+dimension = 2
+duration = 1.0
+output_dt = 0.01
+
+[[body]]
+name = "disc"
+shape = "disc"
+radius = 0.2
+mass = 3.0
+position = [0.5, 0.4]
+v = [1.5, -0.5]
+w = 2.0
+
+[[body]]
+name = "block"
+shape = "rectangle"
+size = [0.2, 0.2]
+mass = 1.0
+position = [5.0, 5.0]
+
+[[plot]]
+title = "E"
+y = ["disc.kinetic_energy", "kinetic_energy", "block.kinetic_energy"]
+
+[[plot]]
+title = "p"
+y = ["disc.momentum.x", "momentum.y", "block.momentum.x"]
+
+[[plot]]
+title = "L"
+y = ["disc.angular_momentum", "angular_momentum"]
+)",
+                                       "totals.toml", "totals.toml");
+    const SceneRun run = run_scene(L.scene, frame_times(L.scene, 50));
+    const std::vector<PlotData> plots = lesson_plots(L, L.scene, run);
+    ASSERT_EQ(plots.size(), 3u);
+    const double m = 3, r = 0.2, I = 0.5 * m * r * r, w = 2, vx = 1.5, vy = -0.5;
+    const double E = 0.5 * m * (vx * vx + vy * vy) + 0.5 * I * w * w;
+    ASSERT_GT(plots[0].series.at(0).x.size(), 40u);
+    for (std::size_t i = 0; i < plots[0].series[0].x.size(); ++i) {
+        const double t = plots[0].series[0].x[i], x = 0.5 + vx * t, y = 0.4 + vy * t;
+        EXPECT_NEAR(plots[0].series[0].y[i], E, 1e-12);
+        EXPECT_NEAR(plots[0].series[1].y[i], E, 1e-12);  // the block at rest adds nothing
+        EXPECT_EQ(plots[0].series[2].y[i], 0.0);
+        EXPECT_NEAR(plots[1].series[0].y[i], m * vx, 1e-12);
+        EXPECT_NEAR(plots[1].series[1].y[i], m * vy, 1e-12);
+        EXPECT_EQ(plots[1].series[2].y[i], 0.0);
+        EXPECT_NEAR(plots[2].series[0].y[i], I * w + m * (x * vy - y * vx), 1e-9) << "t = " << t;
+        EXPECT_NEAR(plots[2].series[1].y[i], plots[2].series[0].y[i], 1e-12);
+    }
+    EXPECT_EQ(plots[2].y_unit, "kg m^2/s");
+    EXPECT_NE(plots[2].series[0].words.find("disc: angular momentum about the origin"), std::string::npos);
+}
+
+// Over general-2d's collision every body's share adds up to the totals, and the totals of
+// momentum and angular momentum about the origin are the same before and after (no outside
+// impulse: conservation, to round-off).
+TEST(LessonPlots, GeneralTwoDimensionalSharesAddUpAndAreConserved) {
+    Lesson L = load_lesson(kLessons + "06-general-2d.toml");
+    L = parse_lesson_text(L.source + R"(
+
+[[plot]]
+title = "L"
+y = ["A.angular_momentum", "B.angular_momentum", "angular_momentum"]
+
+[[plot]]
+title = "p"
+y = ["A.momentum.x", "B.momentum.x", "momentum.x"]
+)",
+                          L.source_name, L.file);
+    ASSERT_EQ(L.scene.gravity.norm(), 0.0);
+    const SceneRun run = run_scene(L.scene, frame_times(L.scene, 100));
+    const std::vector<PlotData> plots = lesson_plots(L, L.scene, run);
+    const PlotData& Lp = plots.at(plots.size() - 2);
+    const PlotData& pp = plots.back();
+    const double L0 = Lp.series[2].y.front(), p0 = pp.series[2].y.front();
+    for (std::size_t i = 0; i < Lp.series[2].y.size(); ++i) {
+        EXPECT_NEAR(Lp.series[0].y[i] + Lp.series[1].y[i], Lp.series[2].y[i], 1e-12);
+        EXPECT_NEAR(pp.series[0].y[i] + pp.series[1].y[i], pp.series[2].y[i], 1e-12);
+        EXPECT_NEAR(Lp.series[2].y[i], L0, 1e-9 * std::max(1.0, std::abs(L0)));
+        EXPECT_NEAR(pp.series[2].y[i], p0, 1e-9 * std::max(1.0, std::abs(p0)));
+    }
+    // The collision moved angular momentum from one body to the other (A's about the origin is 0
+    // before: it slides along the x axis).
+    EXPECT_GT(std::abs(Lp.series[0].y.back() - Lp.series[0].y.front()), 1e-2);
+    EXPECT_NEAR(Lp.series[0].y.back() + Lp.series[1].y.back(), L0, 1e-9);
+}
+
+TEST(LessonPlots, TheReaderRefusesAngularMomentumOnALine) {
+    const Lesson cu = load_lesson(kLessons + "01-catch-up.toml");
+    try {
+        parse_lesson_text(cu.source + "\n\n[[plot]]\ntitle = \"L\"\ny = \"A.angular_momentum\"\n", "c.toml", "c.toml");
+        FAIL() << "accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("bodies on a line have no angular momentum"), std::string::npos)
+            << e.what();
+    }
 }
 
 }  // namespace
