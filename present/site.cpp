@@ -89,6 +89,7 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         render::write_file_atomic((dir / "try-it.js").string(), std::string(assets::site_try_it_js));
         render::write_file_atomic((dir / "try-it-picture.js").string(), std::string(assets::site_try_it_picture_js));
         render::write_file_atomic((dir / "try-it-drag.js").string(), std::string(assets::site_try_it_drag_js));
+        render::write_file_atomic((dir / "try-it-plot.js").string(), std::string(assets::site_try_it_plot_js));
     }
     if (stop && stop()) throw Interrupted(0);  // the last chance before the command renames it into place
 }

@@ -577,12 +577,23 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     o << "<canvas class=\"tryit-plot\" width=\"960\" height=\"220\" role=\"img\" aria-label=\"Energy against time\"></canvas>\n";
     // The lesson's [[plot]]s of the run with these inputs (try-it.js puts in what the engine draws).
     if (!L.plots.empty()) o << "<div class=\"tryit-lesson-plots\" data-plots=\"" << L.plots.size() << "\"></div>\n";
+    // Any quantity against any other: a [[plot]] made with the selects, drawn by the engine
+    // (try-it-plot.js fills the selects with the quantities the engine offers).
+    o << "<section class=\"tryit-free-plot\" aria-label=\"Plot any quantity\">\n<h3>Plot any quantity</h3>\n"
+         "<form class=\"tryit-free-plot-form\">\n"
+         "<label>per <select name=\"per\"><option value=\"sample\">sample (every frame)</option>"
+         "<option value=\"collision\">collision</option></select></label>\n"
+         "<label>x <select name=\"x\"></select></label>\n<label>y <select name=\"y0\"></select></label>\n"
+         "<label>and <select name=\"y1\"></select></label>\n<label>and <select name=\"y2\"></select></label>\n"
+         "</form>\n<p class=\"tryit-free-plot-from note\" hidden></p>\n<div class=\"tryit-free-plot-out\"></div>\n"
+         "<details class=\"tryit-free-plot-file\"><summary>This plot as a [[plot]] of a lesson file (to keep it on "
+         "the lesson's page)</summary><pre class=\"tryit-free-plot-toml\"></pre></details>\n</section>\n";
     o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";
-    o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root
-      << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it-picture.js\"></script>\n<script src=\""
-      << root << "try-it-drag.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
+    o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root << "collide-engine.js\"></script>\n";
+    for (const char* part : {"try-it-picture.js", "try-it-drag.js", "try-it-plot.js", "try-it.js"})
+        o << "<script src=\"" << root << part << "\"></script>\n";
     o << "</section>\n";
     return o.str();
 }

@@ -169,8 +169,20 @@ ordered_json plots_json(const Lesson& lesson, const SceneRun& run) {
             ratio = {{"ratios", ratios}, {"mean", p.ratio->mean}, {"restitution", nullptr}};
             if (p.ratio->restitution) ratio["restitution"] = *p.ratio->restitution;
         }
+        // What it plots, as the lesson file writes it: the panel's plot opens it to change an axis.
+        const LessonPlot& L = lesson.plots[k];
+        ordered_json ys = ordered_json::array();
+        for (const PlotQuantity& y : L.y) ys.push_back(y.name);
+        ordered_json spec{{"per", L.per == PlotPer::sample ? "sample" : "collision"}, {"x", L.x.name}, {"y", ys}};
+        if (!L.pair.empty()) spec["pair"] = L.pair;
+        if (!L.chain.empty()) spec["chain"] = L.chain;
+        if (!L.instant.empty()) spec["instant"] = L.instant;
+        if (L.counting != "collision") spec["counting"] = L.counting;
+        if (L.fit != PlotFit::none) spec["fit"] = L.fit == PlotFit::line ? "line" : "ratio";
+        if (L.fit == PlotFit::line && L.fit_from != 1) spec["fit_from"] = L.fit_from;
         out.push_back({{"file", svgs[k].first},
                        {"title", p.title},
+                       {"spec", spec},
                        {"svg", svgs[k].second},
                        {"alt", plot_alt(p)},
                        {"data_html", plot_data_html(p)},
@@ -181,6 +193,23 @@ ordered_json plots_json(const Lesson& lesson, const SceneRun& run) {
                        {"ratio", ratio}});
     }
     return out;
+}
+
+// What the panel's plot may put on an axis: every per-sample quantity of the lesson's scene
+// (plot_quantities: the names a [[plot]] takes) and the per-collision ones, each with its words
+// and unit as the plots write them.
+ordered_json quantities_json(const Lesson& lesson) {
+    ordered_json sample = ordered_json::array(), collision = ordered_json::array();
+    for (const PlotQuantity& q : plot_quantities(lesson))
+        sample.push_back(
+            {{"name", q.name}, {"words", plot_quantity_words(q, lesson, false, "collision", false)}, {"unit", q.unit}});
+    for (const PlotQuantity& q : plot_collision_quantities())
+        collision.push_back({{"name", q.name},
+                             {"words", plot_quantity_words(q, lesson, true, "collision", false)},
+                             {"unit", q.unit},
+                             {"x", q.name == "collision" || q.name == "t"},
+                             {"y", q.name != "collision"}});
+    return {{"sample", sample}, {"collision", collision}};
 }
 
 // `values`: a JSON object {"A.mass": 3, ...} (the [[vary]] inputs' names, lesson_with_inputs); `fps`: the
@@ -243,6 +272,7 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
                         {"unit", html::vary_unit(w.field)}});
     out["vary"] = vary;
     out["values"] = changed;
+    out["quantities"] = quantities_json(lesson);
     std::string worked = "null";
     if (collision) {
         const SolveProblem problem = collision_problem(scene, *collision);

@@ -6,7 +6,7 @@
 // the answers, the numbers, the lesson's own [[plot]]s (drawn by the engine: the SVG, alt text and
 // folded table that `collide material` writes on the page, put in as they are) and playback; its
 // parts, loaded before it, draw the picture (try-it-picture.js) and its drag handles
-// (try-it-drag.js). They share one object, `lab`: the panel's elements, its number format, the
+// (try-it-drag.js), and make the plot of any quantity (try-it-plot.js). They share one object, `lab`: the panel's elements, its number format, the
 // current run, frame and values (read through getters: this script alone changes them).
 // No network: the module is a file beside the pages, loaded by a <script> tag (file:// works).
 (function () {
@@ -15,9 +15,10 @@
   if (!panel) return;
   var status = panel.querySelector('.tryit-status');
   var parts = window.collideTryItParts || {};
-  if (typeof CollideEngine !== 'function' || !window.collideTryIt || !parts.picture || !parts.handles) {
+  if (typeof CollideEngine !== 'function' || !window.collideTryIt || !parts.picture || !parts.handles || !parts.plot) {
     status.textContent = 'The engine (collide-engine.js), the lesson (try-it-lesson.js) or the panel\u2019s scripts ' +
-                         '(try-it-picture.js, try-it-drag.js) did not load: the panel needs them beside the pages.';
+                         '(try-it-picture.js, try-it-drag.js, try-it-plot.js) did not load: the panel needs them ' +
+                         'beside the pages.';
     return;
   }
   var text = window.collideTryIt.lesson;  // the lesson's file, as `collide` reads it
@@ -146,7 +147,7 @@
   function answer() {
     var t0 = performance.now(), next;
     try {
-      next = JSON.parse(engine.lesson(text, values, fps));
+      next = JSON.parse(engine.lesson(text + freePlot.extraText(), values, fps));
     } catch (e) {
       status.textContent = 'The engine refuses these values: ' + e.message;
       panel.dataset.error = e.message;
@@ -170,7 +171,12 @@
     showNumbers();
     worked.innerHTML = run.worked ? run.worked.html : '<p>No collision in this run.</p>';
     showPlots();
+    freePlot.show();
     draw();
+    // (for scripts/browser-speed.js: the whole answer shown, and when the page first showed one,
+    // in ms from the page's navigation)
+    panel.dataset.shownMs = (performance.now() - t0).toFixed(1);
+    if (answers === 1) panel.dataset.firstShownAt = performance.now().toFixed(1);
   }
 
   // ---- The lesson's [[plot]]s of this run: the engine's SVG, alt text and folded table ----
@@ -178,11 +184,12 @@
     if (!lessonPlots) return;
     var open = {};  // a table the reader unfolded stays unfolded when the inputs move
     lessonPlots.querySelectorAll('details.plot-data').forEach(function (d, k) { if (d.open) open[k] = true; });
-    var h = '';
-    (run.plots || []).forEach(function (p) {
+    var h = '', own = run.plots.slice(0, run.plots.length - freePlot.extra());  // the last: the panel's plot
+    own.forEach(function (p) {
       h += '<section class="lesson-plot" data-file="' + escapeHtml(p.file) + '"><h3>' + escapeHtml(p.title) + '</h3>' +
-           '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs.</figcaption>' +
-           '</figure>' + p.data_html + '</section>';
+           '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs. ' +
+           '<button type="button" class="tryit-open-plot">Change its axes</button></figcaption></figure>' +
+           p.data_html + '</section>';
     });
     lessonPlots.innerHTML = h;
     lessonPlots.querySelectorAll('section.lesson-plot').forEach(function (section, k) {
@@ -190,6 +197,7 @@
       if (svg) svg.setAttribute('aria-label', run.plots[k].alt);  // what it shows, as the page's alt text
       var d = section.querySelector('details.plot-data');
       if (d && open[k]) d.open = true;
+      section.querySelector('.tryit-open-plot').addEventListener('click', function () { freePlot.open(k); });
     });
   }
 
@@ -250,6 +258,7 @@
 
   // ---- What the parts share: the panel, its number format, the state (read-only to them) ----
   var lab = {panel: panel, scene: scene, plot: plot, palette: palette, byName: byName, num: num, vec: vec,
+             escapeHtml: escapeHtml,
              valueOf: valueOf, showValue: showValue, request: request, draw: draw, view: null, named: null};
   Object.defineProperty(lab, 'run', {get: function () { return run; }});
   Object.defineProperty(lab, 'frame', {get: function () { return frame; }});
@@ -257,6 +266,7 @@
   Object.defineProperty(lab, 'values', {get: function () { return values; }});
   var picture = lab.picture = parts.picture(lab);
   var handles = lab.handles = parts.handles(lab);
+  var freePlot = parts.plot(lab);
 
   function draw() {
     if (!run) return;
@@ -301,6 +311,7 @@
 
   CollideEngine().then(function (m) {
     engine = m;
+    panel.dataset.engineAt = performance.now().toFixed(1);
     answer();
     if (window.location.hash === '#try-it') panel.scrollIntoView();
   }, function (e) {

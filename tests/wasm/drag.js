@@ -19,7 +19,7 @@
 'use strict';
 const fs = require('fs');
 const path = require('path');
-const {spawn, execFileSync} = require('child_process');
+const {execFileSync} = require('child_process');
 
 const [collide, chromium, work] = process.argv.slice(2);
 const here = __dirname;
@@ -43,61 +43,9 @@ const flat = fs.readdirSync(lessons).filter(f => f.endsWith('.toml')).map(f => f
                .filter(t => !/^dimension = 3$/m.test(t)).map(t => t.match(/^id = "([^"]*)"/m)[1]);
 execFileSync(collide, ['material', '-o', path.join(work, 'site'), '--size', '320x180', '--quiet'].concat(flat), {stdio: 'inherit'});
 
-// ---- The DevTools protocol over a pipe: fd 3 to Chromium, fd 4 from it, messages end in \0 ----
-const browser = spawn(chromium, ['--headless', '--no-sandbox', '--disable-gpu', '--hide-scrollbars', '--remote-debugging-pipe',
-                                 '--user-data-dir=' + fs.mkdtempSync(path.join(work, 'profile.')), 'about:blank'],
-                      {stdio: ['ignore', 'ignore', fs.openSync(path.join(work, 'chromium.log'), 'w'), 'pipe', 'pipe']});
-const toBrowser = browser.stdio[3], fromBrowser = browser.stdio[4];
-let nextId = 1, buffer = '';
-const waiting = new Map();
-fromBrowser.on('data', chunk => {
-  buffer += chunk.toString('utf8');
-  let end;
-  while ((end = buffer.indexOf('\0')) >= 0) {
-    const message = JSON.parse(buffer.slice(0, end));
-    buffer = buffer.slice(end + 1);
-    if (message.id && waiting.has(message.id)) {
-      const {resolve, reject, method} = waiting.get(message.id);
-      waiting.delete(message.id);
-      if (message.error) reject(new Error(method + ': ' + message.error.message));
-      else resolve(message.result);
-    }
-  }
-});
-function send(method, params = {}, sessionId) {
-  const id = nextId++;
-  toBrowser.write(JSON.stringify(sessionId ? {id, method, params, sessionId} : {id, method, params}) + '\0');
-  return new Promise((resolve, reject) => waiting.set(id, {resolve, reject, method}));
-}
-const sleep = ms => new Promise(r => setTimeout(r, ms));
-
-async function openPage(url) {
-  const {targetId} = await send('Target.createTarget', {url: 'about:blank'});
-  const {sessionId} = await send('Target.attachToTarget', {targetId, flatten: true});
-  const page = (method, params) => send(method, params, sessionId);
-  await page('Emulation.setDeviceMetricsOverride', {width: 1100, height: 1400, deviceScaleFactor: 1, mobile: false});
-  await page('Page.navigate', {url});
-  page.eval = async expression => {
-    const r = await page('Runtime.evaluate', {expression, returnByValue: true, awaitPromise: true});
-    if (r.exceptionDetails) throw new Error(expression + ': ' + JSON.stringify(r.exceptionDetails));
-    return r.result.value;
-  };
-  page.close = () => send('Target.closeTarget', {targetId});
-  return page;
-}
-// Waits until the engine has given more than `after` answers; returns the count.
-async function answered(page, after) {
-  for (let k = 0; k < 600; ++k) {
-    const n = await page.eval(`(function () { var p = document.getElementById('try-it');
-      return p && p.dataset.answers ? Number(p.dataset.answers) : 0; })()`).catch(() => 0);
-    if (n > after) {
-      await sleep(100);  // answers still queued by the last moves
-      return page.eval(`Number(document.getElementById('try-it').dataset.answers)`);
-    }
-    await sleep(50);
-  }
-  throw new Error('the engine did not answer');
-}
+// ---- Chromium through its DevTools protocol (cdp.js) ----
+const cdp = require('./cdp.js').start(chromium, work);
+const {send, openPage, answered, sleep} = cdp;
 // What the page shows: the inputs, the view, the collision's numbers, the handles (CSS pixels).
 function look(page) {
   return page.eval(`(function () {
@@ -161,6 +109,7 @@ async function key(page, handle, name, shift) {
 
 // ---- The command's answers for the new values ----
 // The lesson's file with `field` (component `comp`, -1 for a number) of body `body` set to x.
+let written = 0;  // files written so far (each change its own file)
 function lessonWith(file, changes) {
   let text = fs.readFileSync(path.join(lessons, file), 'utf8');
   for (const [body, field, comp, x] of changes) {
@@ -182,7 +131,7 @@ function lessonWith(file, changes) {
     if (!done) throw new Error(`${file}: no ${field} in body ${body}`);
     text = lines.join('\n');
   }
-  const out = path.join(work, file.replace('.toml', '') + '-' + (nextId++) + '.toml');
+  const out = path.join(work, file.replace('.toml', '') + '-' + (++written) + '.toml');
   fs.writeFileSync(out, text);
   return out;
 }
@@ -358,11 +307,11 @@ async function main() {
 }
 
 main().then(() => {
-  browser.kill();
+  cdp.close();
   console.log(failures ? `drag.js: ${failures} FAILED` : 'drag.js: all passed');
   process.exit(failures ? 1 : 0);
 }, e => {
-  browser.kill();
+  cdp.close();
   console.error('drag.js: ' + e.stack);
   process.exit(1);
 });
