@@ -115,28 +115,21 @@ int main(int argc, char** argv) {
     // of present/frame_spec.h read. parse_render_request (cli/render_options.h) is the one place
     // the options are turned into what the render does: run_render calls it.
     const collide::RenderChoices& choices = collide::render_choices();
-    render
-        ->add_option("--quality", render_options.quality,
-                     "low (no anti-aliasing), medium (anti-aliased, fast PNGs) or high "
-                     "(anti-aliased, smaller PNGs)")
-        ->check(CLI::IsMember(choices.quality))
-        ->capture_default_str();
-    render
-        ->add_option("--view", render_options.view,
-                     "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, "
-                     "3d for 3D")
-        ->check(CLI::IsMember(choices.view));
-    render
-        ->add_option("--format", render_options.format,
-                     "png (the frames), or also DIR/animation.mp4 or DIR/animation.gif "
-                     "(needs ffmpeg)")
-        ->check(CLI::IsMember(choices.format))
-        ->capture_default_str();
-    render
-        ->add_option("--backend", render_options.backend,
-                     "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)")
-        ->check(CLI::IsMember(choices.backend))
-        ->capture_default_str();
+    // An option taking one of `values` (its default in --help unless `shown_default` is false).
+    const auto choice = [](CLI::App* cmd, const std::string& name, std::string& value, const std::string& help,
+                           const std::vector<std::string>& values, bool shown_default = true) {
+        CLI::Option* o = cmd->add_option(name, value, help)->check(CLI::IsMember(values));
+        if (shown_default) o->capture_default_str();
+    };
+    choice(render, "--quality", render_options.quality,
+           "low (no anti-aliasing), medium (anti-aliased, fast PNGs) or high (anti-aliased, smaller PNGs)",
+           choices.quality);
+    choice(render, "--view", render_options.view,
+           "2d (textbook diagram) or 3d (shaded); default: 2d for 1D and 2D scenes, 3d for 3D", choices.view, false);
+    choice(render, "--format", render_options.format,
+           "png (the frames), or also DIR/animation.mp4 or DIR/animation.gif (needs ffmpeg)", choices.format);
+    choice(render, "--backend", render_options.backend,
+           "OpenGL context: osmesa, or egl (surfaceless; uses a GPU where one exists)", choices.backend);
     render->add_flag("--quiet", render_options.quiet, "no progress bar and no summary");
     render->add_flag("--force", render_options.force, "write into a directory that is not empty (replacing our files)");
     render->footer(
@@ -163,9 +156,7 @@ int main(int argc, char** argv) {
     material->add_option("--size", material_options.size, "frame size: WxH, or 480p, 720p, 1080p, 1440p")
         ->capture_default_str();
     material->add_option("--fps", material_options.fps, "frames per simulated second")->capture_default_str();
-    material->add_option("--quality", material_options.quality, "low, medium or high (as collide render)")
-        ->check(CLI::IsMember(choices.quality))
-        ->capture_default_str();
+    choice(material, "--quality", material_options.quality, "low, medium or high (as collide render)", choices.quality);
     material->add_flag("--quiet", material_options.quiet, "no progress and no summary");
     material->add_flag("--force", material_options.force, "replace a directory that is not empty");
     material->footer(
@@ -230,8 +221,8 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     gui->add_option("--size", gui_options.size, "the frame: WxH, or 480p, 720p, 1080p, 1440p")->capture_default_str();
     gui->add_option("--fps", gui_options.fps, "frames per simulated second (as collide render)")->capture_default_str();
-    gui->add_option("--view", gui_options.view, "2d or 3d (default: 2d for 1D and 2D scenes, 3d for 3D)")
-        ->check(CLI::IsMember(choices.view));
+    choice(gui, "--view", gui_options.view, "2d or 3d (default: 2d for 1D and 2D scenes, 3d for 3D)", choices.view,
+           false);
     gui->add_option("--script", gui_options.script,
                     "run the actions of FILE, one a window frame (tests, demonstrations)");
     gui->add_option("-o,--output", gui_options.out_dir, "where Save frame and Save figure write")

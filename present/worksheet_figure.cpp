@@ -414,12 +414,19 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
         labels.avoid_box({pp.x() - 3.5, pp.y() - 3.5, pp.x() + 3.5, pp.y() + 3.5});
     }
     // ---- Velocities and spins at the start ----
-    for (std::size_t i = 0; i < n; ++i) {
-        const SceneBody& b = sc.bodies[i];
-        if (b.is_static()) continue;
-        const Vec2 c = P(b.body2.position);
+    // Each moving body's centre and velocity arrow's tip in the drawing (its labels follow below).
+    struct Start {
+        const SceneBody* b;
+        Vec2 c, tip;
+    };
+    std::vector<Start> starts;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!sc.bodies[i].is_static())
+            starts.push_back({&sc.bodies[i], P(sc.bodies[i].body2.position),
+                              P(sc.bodies[i].body2.position + kv * sc.bodies[i].body2.v)});
+    for (const auto& [bp, c, tip] : starts) {
+        const SceneBody& b = *bp;
         if (b.body2.v.norm() > 0) {
-            const Vec2 tip = P(b.body2.position + kv * b.body2.v);
             marks << "<g" << vector_data("v", b.body2.position, b.body2.v) << " data-body=\"" << html::escape(b.name)
                   << "\">\n"
                   << arrow(c, tip, kColours.velocity, 2.2, false) << "</g>\n";
@@ -481,14 +488,10 @@ WorksheetFigure worksheet_figure(const StudentSheet& s, double max_height_mm, co
                                   kColours.lever);
         }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        const SceneBody& b = sc.bodies[i];
-        if (b.is_static()) continue;
-        const Vec2 c = P(b.body2.position);
-        if (b.body2.v.norm() > 0) {
-            const Vec2 tip = P(b.body2.position + kv * b.body2.v);
+    for (const auto& [bp, c, tip] : starts) {
+        const SceneBody& b = *bp;
+        if (b.body2.v.norm() > 0)
             marks << labels.place(with_name("v", b.name), tip, (tip - c).normalized(), kColours.velocity);
-        }
         if (b.body2.w != 0)
             marks << labels.place(with_name("\u03c9", b.name), c + Vec2(0, -kSpinPx), Vec2(0, -1), kColours.spin);
     }
