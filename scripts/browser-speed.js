@@ -1,0 +1,91 @@
+// The Try-it panel's speed in headless Chromium (issue 35, item 4; docs/wasm.md "Speed"): every
+// bundled lesson's page of a site built with the WebAssembly module, opened from file:// in a
+// fresh tab, driven through the DevTools protocol (tests/wasm/cdp.js). Per lesson:
+//   engine  when the module had started (ms from the page's navigation)
+//   first   when the panel showed its first answer (ms from navigation: the page load's answer)
+//   answer  the median of 9 answers after a slider moves (each [[vary]] input one step in turn,
+//           set as a hand sets it: the slider's value and its input event): the engine's call
+//   shown   the same answers' median including the panel's drawing (numbers, worked example,
+//           plots, picture): what the reader waits for
+//   native  the median of 3 runs of the command on the same lesson file (`collide step FILE
+//           --events --json`: the run alone, process start included), for scale
+// Goals (issue 35): first under 100 ms; shown under 16 ms (1D, 2D) and 50 ms (3D).
+// A benchmark, not a test: it prints figures and exits 0 whatever they are.
+// Usage: node scripts/browser-speed.js COLLIDE CHROMIUM SITE   (SITE: `collide material -o SITE`)
+'use strict';
+const fs = require('fs');
+const os = require('os');
+const path = require('path');
+const {execFileSync} = require('child_process');
+
+const [collide, chromium, site] = process.argv.slice(2);
+if (!site || !fs.existsSync(path.join(site, 'collide-engine.js'))) {
+  console.error('browser-speed: usage: node scripts/browser-speed.js COLLIDE CHROMIUM SITE (a site with collide-engine.js)');
+  process.exit(2);
+}
+const root = path.join(__dirname, '..');
+const work = fs.mkdtempSync(path.join(os.tmpdir(), 'browser-speed.'));
+const cdp = require(path.join(root, 'tests', 'wasm', 'cdp.js')).start(chromium, work);
+const median = xs => { const s = xs.slice().sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
+const fixed = x => (x === undefined || isNaN(x) ? '-' : x.toFixed(1));
+
+async function main() {
+  const files = fs.readdirSync(path.join(root, 'lessons')).filter(f => f.endsWith('.toml')).sort();
+  const module = fs.statSync(path.join(site, 'collide-engine.js')).size;
+  console.log(`browser-speed: ${site}, collide-engine.js ${(module / 1e6).toFixed(2)} MB; ` +
+              `${execFileSync(chromium, ['--version']).toString().trim()}; ${os.cpus()[0].model}, ${os.cpus().length} cores, ` +
+              `load ${os.loadavg().map(x => x.toFixed(2)).join(' ')}`);
+  console.log('  lesson                     dim  engine   first  answer   shown  native  (ms; medians of 9 slider moves, native of 3)');
+  const rows = [];
+  for (const f of files) {
+    const text = fs.readFileSync(path.join(root, 'lessons', f), 'utf8');
+    const id = text.match(/^id = "([^"]*)"/m)[1], dim = Number((text.match(/^dimension = (\d)/m) || [0, 1])[1]);
+    const page = await cdp.openPage('file://' + path.resolve(site, id, 'index.html') + '?show=try-it');
+    let n = await cdp.answered(page, 0);
+    const first = await page.eval(`(function () { var d = document.getElementById('try-it').dataset;
+      return {engine: Number(d.engineAt), first: Number(d.firstShownAt)}; })()`);
+    const inputs = await page.eval(`Array.prototype.map.call(document.querySelectorAll('#try-it input[type=range]'),
+      function (i) { return i.dataset.name; })`);
+    const answer = [], shown = [];
+    for (let k = 0; k < 9 && inputs.length; ++k) {
+      const name = inputs[k % inputs.length];
+      await page.eval(`(function () {
+        var i = Array.prototype.find.call(document.querySelectorAll('#try-it input[type=range]'),
+                                          function (x) { return x.dataset.name === ${JSON.stringify(name)}; });
+        if (Number(i.value) + Number(i.step) <= Number(i.max) + 1e-12) i.stepUp(); else i.stepDown();
+        i.dispatchEvent(new Event('input'));
+      })()`);
+      n = await cdp.answered(page, n);
+      const d = await page.eval(`(function () { var d = document.getElementById('try-it').dataset;
+        return {answer: Number(d.answerMs), shown: Number(d.shownMs), error: d.error || null}; })()`);
+      if (d.error) throw new Error(id + ': ' + d.error);
+      answer.push(d.answer);
+      shown.push(d.shown);
+    }
+    await page.close();
+    const native = [];
+    for (let k = 0; k < 3; ++k) {
+      const t0 = process.hrtime.bigint();
+      execFileSync(collide, ['step', path.join(root, 'lessons', f), '--events', '--json'], {stdio: ['ignore', 'ignore', 'ignore']});
+      native.push(Number(process.hrtime.bigint() - t0) / 1e6);
+    }
+    const row = {id, dim, engine: first.engine, first: first.first, answer: median(answer), shown: median(shown), native: median(native)};
+    rows.push(row);
+    console.log(`  ${id.padEnd(26)} ${dim}D ${fixed(row.engine).padStart(7)} ${fixed(row.first).padStart(7)} ` +
+                `${fixed(row.answer).padStart(7)} ${fixed(row.shown).padStart(7)} ${fixed(row.native).padStart(7)}`);
+  }
+  const goal = r => (r.dim === 3 ? 50 : 16);
+  const slow = rows.filter(r => r.shown > goal(r)).map(r => `${r.id} ${fixed(r.shown)}`);
+  const late = rows.filter(r => r.first > 100).map(r => `${r.id} ${fixed(r.first)}`);
+  console.log(`  medians over the lessons: first ${fixed(median(rows.map(r => r.first)))} ms, shown ` +
+              `${fixed(median(rows.filter(r => r.dim < 3).map(r => r.shown)))} ms (1D, 2D), ` +
+              `${fixed(median(rows.filter(r => r.dim === 3).map(r => r.shown)))} ms (3D)`);
+  console.log(`  first answer over 100 ms: ${late.length ? late.join(', ') : 'none'}`);
+  console.log(`  answers over the goal (16 ms 1D/2D, 50 ms 3D): ${slow.length ? slow.join(', ') : 'none'}`);
+}
+
+main().then(() => { cdp.close(); fs.rmSync(work, {recursive: true, force: true}); }, e => {
+  cdp.close();
+  console.error('browser-speed: ' + e.stack);
+  process.exit(1);
+});
