@@ -1,6 +1,7 @@
 #include "teach/html.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -556,17 +557,16 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
           << percent_encoded(L.vary[0].name()) << "=" << number_attr(L.vary[0].hi)
           << " (the inputs' names: " << escape(names) << ").</p>\n";
     }
-    if (d < 3) {
-        // The picture, and over it the handles a drag or the keyboard sets inputs with (try-it.js
-        // puts them in: a focusable element at each handle, the picture draws them), what can be
-        // dragged, and the last value a drag or a key set (read out by screen readers).
-        o << "<div class=\"tryit-stage\">\n<canvas class=\"tryit-scene\" width=\"960\" height=\""
-          << (d == 1 ? 300 : 480) << "\" role=\"img\" aria-label=\"The run with these inputs\"></canvas>\n"
-          << "<div class=\"tryit-handles\"></div>\n</div>\n";
-        if (!L.vary.empty())
-            o << "<p class=\"tryit-drag-help note\" hidden></p>\n"
-                 "<p class=\"tryit-drag-said\" aria-live=\"polite\"></p>\n";
-    }
+    // The picture (3D: three.js draws on the first canvas, the labels and knobs go on the one over
+    // it; try-it-3d.js), over it the handles a drag or the keyboard sets inputs with (try-it.js
+    // puts them in: a focusable element at each handle, the picture draws them), what can be
+    // dragged, and the last value a drag or a key set (read out by screen readers).
+    o << "<div class=\"tryit-stage\">\n"
+      << (d == 3 ? "<canvas class=\"tryit-scene3d\" width=\"960\" height=\"540\" aria-hidden=\"true\"></canvas>\n" : "")
+      << "<canvas class=\"tryit-scene\" width=\"960\" height=\"" << std::array{0, 300, 480, 540}.at(d)
+      << "\" role=\"img\" aria-label=\"The run with these inputs\"></canvas>\n<div class=\"tryit-handles\"></div>\n</div>\n";
+    if (!L.vary.empty())
+        o << "<p class=\"tryit-drag-help note\" hidden></p>\n<p class=\"tryit-drag-said\" aria-live=\"polite\"></p>\n";
     o << "<div class=\"player tryit-player\" role=\"group\" aria-label=\"Try-it playback\">\n"
          "<button type=\"button\" data-act=\"start\" aria-label=\"Back to the start, t = 0\">&#9664;&#9664; t = 0</button>\n"
          "<button type=\"button\" data-act=\"play\">Play / pause</button>\n"
@@ -580,9 +580,10 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";
-    o << "<script src=\"try-it-lesson.js\"></script>\n<script src=\"" << root
-      << "collide-engine.js\"></script>\n<script src=\"" << root << "try-it-picture.js\"></script>\n<script src=\""
-      << root << "try-it-drag.js\"></script>\n<script src=\"" << root << "try-it.js\"></script>\n";
+    std::vector<std::string> scripts = {"collide-engine.js", "try-it-picture.js", "try-it-drag.js", "try-it.js"};
+    if (d == 3) scripts.insert(scripts.begin() + 1, {"three.min.js", "try-it-3d.js"});  // Debian's libjs-three
+    o << "<script src=\"try-it-lesson.js\"></script>\n";
+    for (const std::string& js : scripts) o << "<script src=\"" << root << js << "\"></script>\n";
     o << "</section>\n";
     return o.str();
 }
