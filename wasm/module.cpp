@@ -96,6 +96,8 @@ Answer run_answer(const std::string& text) {
 
 using nlohmann::ordered_json;
 
+ordered_json xyz(const Vec3& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+
 // What the page draws of each body: its name, whether it is static, its shape (1D: a block of
 // `length`; 2D: a disc's radius, a polygon's vertices in the body's frame, a half plane's
 // normal and offset; 3D: a sphere's radius, a box's half extents along its own axes, a half
@@ -122,20 +124,13 @@ ordered_json bodies_json(const Scene& scene) {
                 j["offset"] = s.offset;
             }
         }
-        if (scene.dimension == 3) {
-            const Shape3& s = b.shape3;
-            if (s.kind == Shape3::Kind::sphere) {
-                j["kind"] = "sphere";
-                j["radius"] = s.radius;
-            } else if (s.kind == Shape3::Kind::box) {
-                j["kind"] = "box";
-                j["half"] = {s.half.x(), s.half.y(), s.half.z()};
-            } else {
-                j["kind"] = "half_space";
-                j["normal"] = {s.normal.x(), s.normal.y(), s.normal.z()};
-                j["offset"] = s.offset;
+        if (scene.dimension == 3) switch (const Shape3& s = b.shape3; s.kind) {
+                case Shape3::Kind::sphere: j.update({{"kind", "sphere"}, {"radius", s.radius}}); break;
+                case Shape3::Kind::box: j.update({{"kind", "box"}, {"half", xyz(s.half)}}); break;
+                case Shape3::Kind::half_space:
+                    j.update({{"kind", "half_space"}, {"normal", xyz(s.normal)}, {"offset", s.offset}});
+                    break;
             }
-        }
         out.push_back(j);
     }
     return out;
@@ -247,9 +242,7 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     const SceneView& sv = lesson.view;
     out["view"] = {{"azimuth", opt(sv.camera_azimuth)},
                    {"elevation", opt(sv.camera_elevation)},
-                   {"target", sv.camera_target ? ordered_json::array({sv.camera_target->x(), sv.camera_target->y(),
-                                                                      sv.camera_target->z()})
-                                               : ordered_json(nullptr)},
+                   {"target", sv.camera_target ? xyz(*sv.camera_target) : ordered_json(nullptr)},
                    {"distance", opt(sv.camera_distance)}};
     ordered_json vary = ordered_json::array();
     for (const LessonVary& w : original.vary)
@@ -284,9 +277,9 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
         // with their velocities just before: the 3D view's "at" picture.
         if (scene.dimension == 3) {
             const auto pose = [](const CollisionInstant::Side& s) {
-                return ordered_json{{"x", {s.x.x(), s.x.y(), s.x.z()}},
-                                    {"v", {s.v.x(), s.v.y(), s.v.z()}},
-                                    {"w", {s.w.x(), s.w.y(), s.w.z()}},
+                return ordered_json{{"x", xyz(s.x)},
+                                    {"v", xyz(s.v)},
+                                    {"w", xyz(s.w)},
                                     {"orientation", {s.q.w(), s.q.x(), s.q.y(), s.q.z()}}};
             };
             w["at"] = {{problem.a.name, pose(collision->before_a)}, {problem.b.name, pose(collision->before_b)}};
