@@ -103,11 +103,13 @@
     var len = d.length();
     g.visible = len > 1e-9;
     if (!g.visible) return;
+    // (a short arrow thinner too: a small impulse is a small arrow, not a disc)
     var head = Math.min(0.4 * len, 7 * thick), dir = d.clone().divideScalar(len);
+    var shaft = Math.min(thick, 0.2 * head), cone = Math.min(2.6 * thick, 0.45 * head);
     g.position.copy(from);
     g.quaternion.setFromUnitVectors(Y, dir);
-    g.children[0].scale.set(thick, len - head, thick); g.children[0].position.set(0, (len - head) / 2, 0);
-    g.children[1].scale.set(2.6 * thick, head, 2.6 * thick); g.children[1].position.set(0, len - head / 2, 0);
+    g.children[0].scale.set(shaft, len - head, shaft); g.children[0].position.set(0, (len - head) / 2, 0);
+    g.children[1].scale.set(cone, head, cone); g.children[1].position.set(0, len - head / 2, 0);
   }
   // The spin's curl: three quarters of a ring round the axis and a cone at its end, turning as
   // omega turns the body (counterclockwise seen from the arrow's head).
@@ -265,12 +267,30 @@
       if (sp.curl.visible) {
         sp.curl.position.copy(V(s.x)).addScaledVector(w, 0.55);
         sp.curl.quaternion.setFromUnitVectors(Y, w.clone().divideScalar(len));
-        sp.curl.scale.setScalar(Math.min(0.06 * view.size, 0.5 * len + 6 * view.thick));
+        var r = b.kind === 'box' ? Math.max.apply(null, b.half) : b.radius;  // the curl a little inside the body's size
+        sp.curl.scale.setScalar(Math.max(3 * view.thick, Math.min(0.7 * r, 0.05 * view.size)));
       }
       legend.push({i: i, text: b.name + ':  v = ' + vec(s.v) + ' m/s,  \u03c9 = ' + vec(s.w) + ' rad/s'});
     });
-    // Each collision of the last 0.15 s: the impulse on b (red) at the contact point, the normal (teal).
-    var shown = lab.run.events.filter(function (e) { return e.t <= t + 1e-12 && e.t >= t - 0.15; });
+    // The collisions: each pair's latest of the last 0.15 s (at the page's collision: that
+    // instant's), the impulse on b (red) at the contact point; the latest instant's with their
+    // normals (teal), named under the picture. (A tower's resting contacts would bury it else.)
+    var recent = {}, shown = [];
+    lab.run.events.forEach(function (e) {
+      if (instant ? Math.abs(e.t - t) > 1e-12 : e.t > t + 1e-12 || e.t < t - 0.15) return;
+      // the page's pair in the page's roles (the engine may have found it the other way round)
+      var w = lab.run.worked, neg = function (v) { return v.map(function (x) { return -x; }); };
+      if (w && e.a === w.b && e.b === w.a) e = {t: e.t, a: w.a, b: w.b, point: e.point, normal: neg(e.normal), impulse: neg(e.impulse)};
+      recent[e.a + '\u0000' + e.b] = e;
+    });
+    Object.keys(recent).forEach(function (k) { shown.push(recent[k]); });
+    shown.sort(function (x, y) { return x.t - y.t; });
+    var latest = shown.length ? shown[shown.length - 1].t : null;
+    // (named: the page's collision first at its instant, then the largest impulses)
+    var pairOf = function (e) { return !!instant && e.a === instant.a && e.b === instant.b; };
+    var named = shown.filter(function (e) { return e.t === latest; }).sort(function (x, y) {
+      return (pairOf(y) - pairOf(x)) || (Math.hypot.apply(null, y.impulse) - Math.hypot.apply(null, x.impulse));
+    });
     while (gl.events.length < shown.length) {  // the normal over the impulse (frictionless: along it)
       var pair = {p: makeArrow(palette.impulse), n: makeArrow(palette.normal)};
       pair.n.traverse(function (o) { o.renderOrder = 11; });
@@ -280,7 +300,8 @@
       var e = shown[k];
       g.p.visible = g.n.visible = !!e;
       if (!e) return;
-      setArrow(g.n, V(e.point), V(e.normal).multiplyScalar(0.15 * view.size), 0.6 * view.thick);
+      g.n.visible = e.t === latest;
+      if (g.n.visible) setArrow(g.n, V(e.point), V(e.normal).multiplyScalar(0.12 * view.size), 0.6 * view.thick);
       setArrow(g.p, V(e.point), V(e.impulse).multiplyScalar(view.pscale), 1.2 * view.thick);
     });
     gl.renderer.render(gl.scene, gl.camera);
@@ -289,25 +310,43 @@
 
     ctx.clearRect(0, 0, W, H);
     tags.forEach(function (g) { flat.label(ctx, g.text, [g.at[0] + 8, g.at[1] + 14], palette.ink); });
-    // The latest instant's collisions named (three at most: a tower's contacts would cover the picture).
-    var latest = shown.length ? shown[shown.length - 1].t : null, named = shown.filter(function (e) { return e.t === latest; });
-    named.slice(0, 3).forEach(function (e, k) {
-      var p = project(V(e.point));
-      flat.label(ctx, 'P = ' + vec(e.impulse) + ' N\u00b7s on ' + e.b, [p[0] + 12, p[1] - 20 - 20 * k], palette.impulse);
+    // Under the picture, from the bottom: the caption (what a jump shows, else how to turn the
+    // view), then the latest instant's impulses, three at most; the first's arrow says on whom.
+    var rows = wrap(ctx, caption || 'Drag the picture to turn it, wheel or pinch to zoom (keys: Tab to it, arrows turn, + and \u2212 zoom, Home)', W - 130).reverse().map(function (l) {
+      return {text: l, colour: caption ? palette.ink : palette.muted};
     });
-    if (named.length > 3) flat.label(ctx, '+ ' + (named.length - 3) + ' other contacts at this instant', [W - 12, H - 40], palette.impulse, 'right');
-    var last = null;
-    lab.run.events.forEach(function (e) { if (e.t <= t + 1e-12) last = e; });
+    if (named.length > 3) rows.push({text: '+ ' + (named.length - 3) + ' other contacts at this instant', colour: palette.impulse});
+    named.slice(0, 3).reverse().forEach(function (e) {
+      rows.push({text: 'P = ' + vec(e.impulse) + ' N\u00b7s on ' + e.b + ' (' + e.a + ' and ' + e.b + ', t = ' + num(e.t) + ' s)',
+                 colour: palette.impulse});
+    });
+    if (named.length) {
+      var tip = project(V(named[0].point).addScaledVector(V(named[0].impulse), view.pscale));
+      flat.label(ctx, 'P on ' + named[0].b, [tip[0] + 8, tip[1] - 10], palette.impulse);
+    }
+    rows.forEach(function (r, k) { flat.label(ctx, r.text, [12, H - 16 - 21 * k], r.colour); });
+    // The legend's rows: at the page's collision its two, else the latest collision's (drawLegend).
+    var last = instant ? {a: instant.a, b: instant.b} : null;
+    if (!instant) lab.run.events.forEach(function (e) { if (e.t <= t + 1e-12) last = e; });
     flat.drawLegend(ctx, legend, last);
     flat.label(ctx, 't = ' + (instant ? num(t) : t.toFixed(3)) + ' s', [W - 12, 19], palette.muted, 'right');
     axes(ctx, [W - 50, H - 50]);
-    if (caption) flat.label(ctx, caption, [12, H - 16], palette.ink);
-    else flat.label(ctx, 'Drag the picture to turn it; wheel or pinch to zoom', [12, H - 16], palette.muted);
     if (!instant && lab.handles.atStart()) {
       lab.handles.list().forEach(function (h) { if (h.track) drawTrack(ctx, h); });
       lab.handles.draw(ctx);
     }
   };
+  // `text` in lines of at most `width` pixels (the labels' font).
+  function wrap(ctx, text, width) {
+    ctx.font = '15px "DejaVu Sans", Arial, sans-serif';
+    var lines = [''];
+    text.split(' ').forEach(function (word) {
+      var line = lines[lines.length - 1], next = line ? line + ' ' + word : word;
+      if (line && ctx.measureText(next).width > width) lines.push(word);
+      else lines[lines.length - 1] = next;
+    });
+    return lines;
+  }
   // The world's axes as the camera sees them, at `o` (the overlay's pixels): x, y, z.
   function axes(ctx, o) {
     var inv = gl.camera.matrixWorldInverse;
