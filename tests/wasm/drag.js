@@ -26,7 +26,7 @@ fs.rmSync(work, {recursive: true, force: true});
 fs.mkdirSync(work, {recursive: true});
 const {check, close, send, openPage, answered, look, mouseDrag, touchDrag, shot, key, lessonWith, sameAsStep, onGrid,
        finish} = require('./cdp.js')(collide, chromium, work, ['--disable-gpu']);
-// Every bundled 1D and 2D lesson (3D lessons have no picture to drag on).
+// Every bundled 1D and 2D lesson (the 3D ones: view3d.js).
 const flat = fs.readdirSync(lessons).filter(f => f.endsWith('.toml')).map(f => fs.readFileSync(path.join(lessons, f), 'utf8'))
                .filter(t => !/^dimension = 3$/m.test(t)).map(t => t.match(/^id = "([^"]*)"/m)[1]);
 execFileSync(collide, ['material', '-o', path.join(work, 'site'), '--size', '320x180', '--quiet'].concat(flat), {stdio: 'inherit'});
