@@ -32,7 +32,7 @@
   }
   if (!THREE) {
     unavailable('The 3D view needs three.js: the file three.min.js beside the lesson pages did not load. ' +
-                '`collide material` copies it there from Debian\u2019s libjs-three (apt-get install libjs-three, ' +
+                'The command collide material copies it there from Debian\u2019s libjs-three (apt-get install libjs-three, ' +
                 'then build the site again).');
   } else {
     try {
