@@ -1,5 +1,6 @@
 #include "cli/material_cmd.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -41,6 +42,14 @@ std::string engine_js_path() {
                              : (exe.parent_path() / COLLIDE_ENGINE_JS_FROM_BINDIR).lexically_normal().string());
 }
 
+std::string three_js_path(std::string* looked) {
+    const char* env = std::getenv("COLLIDE_THREE_JS");
+    const std::string path = env && *env ? env : COLLIDE_THREE_JS_PATH;
+    if (looked) *looked = path;
+    std::error_code ec;
+    return fs::is_regular_file(path, ec) ? path : std::string();
+}
+
 int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& err) {
     const auto start = std::chrono::steady_clock::now();
     // The staged directory is gone with the body's scope when it throws: DIR is untouched.
@@ -66,6 +75,17 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             if (lessons.empty()) throw InputError(lessons_dir(), {}, "", "no lessons found");
             // The WebAssembly module, for the pages' Try-it panels (docs/commands/material.md, "The Try-it panel").
             const std::string engine_js = engine_js_path();
+            // three.js for the 3D lessons' panels: without it they say so on the page, and here.
+            std::string three_js, three_looked;
+            if (!engine_js.empty() &&
+                std::any_of(lessons.begin(), lessons.end(), [](const Lesson& L) { return L.scene.dimension == 3; })) {
+                three_js = three_js_path(&three_looked);
+                if (three_js.empty())
+                    err << "collide material: note: no 3D view in the 3D lessons' Try-it panels: three.js is not at "
+                        << three_looked
+                        << " (Debian: apt-get install libjs-three; or set COLLIDE_THREE_JS); those panels say so "
+                           "and show their numbers and plots\n";
+            }
             // Ctrl-C from here on is one flag for the whole command (lessons, frames, ffmpeg),
             // held until the staging directory is removed again.
             const cli::SignalGuard signals;
@@ -92,7 +112,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
                 std::snprintf(line, sizeof line, "[%zu/%zu] %-24s %5.1f s\n", p.done, p.total, p.id.c_str(), p.seconds);
                 err << line << std::flush;
             };
-            build_site(SiteRequest{lessons, request, engine_js}, tmp, progress, cli::stop_requested);
+            build_site(SiteRequest{lessons, request, engine_js, three_js}, tmp, progress, cli::stop_requested);
             staged.commit();
             if (!opt.quiet) {
                 char line[200];

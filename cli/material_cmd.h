@@ -29,6 +29,11 @@ struct MaterialOptions {
 std::string engine_js_path(const std::string& installed);
 // The same for the running program (installed: its directory/../share/collide/).
 std::string engine_js_path();
+// Where `collide material` finds three.min.js (three.js, Debian's libjs-three), which draws the
+// 3D lessons' Try-it panels: $COLLIDE_THREE_JS when set, else COLLIDE_THREE_JS_PATH (CMake's,
+// /usr/share/javascript/three/three.min.js). "" when the file is not there; `looked` (if
+// given) receives the place looked at, for the warning that says so.
+std::string three_js_path(std::string* looked = nullptr);
 
 // Returns the exit code: 0 done, 2 bad input (nothing written), 1 any other failure.
 int run_material(const MaterialOptions& options, std::ostream& out, std::ostream& err);

@@ -1,5 +1,6 @@
 #include "present/site.h"
 
+#include <algorithm>
 #include <chrono>
 #include <sstream>
 
@@ -90,6 +91,13 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
         render::write_file_atomic((dir / "try-it-picture.js").string(), std::string(assets::site_try_it_picture_js));
         render::write_file_atomic((dir / "try-it-drag.js").string(), std::string(assets::site_try_it_drag_js));
         render::write_file_atomic((dir / "try-it-plot.js").string(), std::string(assets::site_try_it_plot_js));
+        const bool any3d =
+            std::any_of(rq.lessons.begin(), rq.lessons.end(), [](const Lesson& L) { return L.scene.dimension == 3; });
+        if (any3d) {
+            render::write_file_atomic((dir / "try-it-3d.js").string(), std::string(assets::site_try_it_3d_js));
+            if (!rq.three_js.empty())
+                fs::copy_file(rq.three_js, dir / "three.min.js", fs::copy_options::overwrite_existing);
+        }
     }
     if (stop && stop()) throw Interrupted(0);  // the last chance before the command renames it into place
 }

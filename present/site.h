@@ -10,6 +10,9 @@
 //   DIR/collide-engine.js      the WebAssembly module, and the panels' scripts
 //   DIR/try-it*.js             (assets/site/try-it.js and its parts), DIR/ID/try-it-lesson.js the
 //                              lesson for them (teach/html.h try_it_data_js): only with a module
+//   DIR/three.min.js           three.js, which draws the 3D lessons' panels (Debian's libjs-three):
+//                              with a module, a 3D lesson and the file found (else those panels
+//                              say that it is missing)
 #pragma once
 
 #include <cstddef>
@@ -28,6 +31,7 @@ struct SiteRequest {
     std::vector<Lesson> lessons;  // in the site's order
     RenderRequest render;         // how each lesson renders (its scenario and out_dir are set per lesson)
     std::string engine_js;        // collide-engine.js to copy in; "": pages without a Try-it panel
+    std::string three_js;         // three.min.js to copy in beside it for the 3D lessons; "": none
 };
 
 // One lesson done: the k-th (from 1) of `total`, and the seconds it took.

@@ -25,7 +25,7 @@ if (!site || !fs.existsSync(path.join(site, 'collide-engine.js'))) {
 }
 const root = path.join(__dirname, '..');
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'browser-speed.'));
-const cdp = require(path.join(root, 'tests', 'wasm', 'cdp.js')).start(chromium, work);
+const cdp = require(path.join(root, 'tests', 'wasm', 'cdp.js'))(collide, chromium, work);
 const median = xs => { const s = xs.slice().sort((a, b) => a - b); return s[Math.floor(s.length / 2)]; };
 const fixed = x => (x === undefined || isNaN(x) ? '-' : x.toFixed(1));
 
@@ -84,8 +84,8 @@ async function main() {
   console.log(`  answers over the goal (16 ms 1D/2D, 50 ms 3D): ${slow.length ? slow.join(', ') : 'none'}`);
 }
 
-main().then(() => { cdp.close(); fs.rmSync(work, {recursive: true, force: true}); }, e => {
-  cdp.close();
+main().then(() => { cdp.stop(); fs.rmSync(work, {recursive: true, force: true}); }, e => {
+  cdp.stop();
   console.error('browser-speed: ' + e.stack);
   process.exit(1);
 });

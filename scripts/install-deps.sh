@@ -24,6 +24,8 @@ build=(
   python3-dev pybind11-dev python3-numpy  # the Python module collide (optional for the build)
   help2man                          # the man page, from the --help texts (optional for the build)
   dpkg-dev file                     # cpack -G DEB: dpkg-shlibdeps computes the packages' Depends
+  libjs-three                       # three.js: collide material copies it beside the pages for the 3D
+                                    # lessons' Try-it panels (with the WebAssembly module)
 )
 # The tests, benchmarks and CI besides.
 develop=(

@@ -4,8 +4,8 @@
 # start the module, answer once with the lesson's values (the panel at load), then the time the
 # panel waits after a slider moves: lesson(text, values, fps) at the page's 30 frames/s, each
 # [[vary]] input moved one step in turn (a lesson without [[vary]]: its own values again), 9
-# times (goal: the median under 50 ms for every 1D and 2D lesson; 3D lessons show numbers and
-# a plot only); then, after 20 more, 9 again ("warm": V8 has optimised the hot code by then,
+# times (goal: the median under 50 ms for every 1D and 2D lesson, and for the 3D ones, which
+# the page draws with three.js besides); then, after 20 more, 9 again ("warm": V8 has optimised the hot code by then,
 # which a page reaches after some moves). Each lesson in a new Node process, as each page loads its own module (in one
 # process V8 would reuse the code it has optimised). A benchmark, not a test: it prints figures.
 # Usage: scripts/wasm-speed.sh [MODULE]   (default build/wasm/collide-engine.js)

@@ -74,7 +74,7 @@ std::string svg_xy_plot(const std::string& title, const std::string& x_label, co
 // The "Try it" panel of a lesson page (collide material, when the site has the WebAssembly
 // module collide-engine.js; docs/commands/material.md, "The Try-it panel"): a slider for each of the lesson's
 // [[vary]] inputs (its range and step, set at the lesson's own value), a canvas that plays the
-// run (1D and 2D; 3D lessons: numbers and a plot only), play / pause / 0.25x / step, the
+// run (3D: with three.js, `root`three.min.js and try-it-3d.js), play / pause / 0.25x / step, the
 // impulse, energy and momentum of the page's collision and its worked example, all recomputed
 // by the engine in the page (assets/site/try-it.js, with `root`collide-engine.js); `fps` is the
 // frames' rate. The data the script needs is try_it_data_js's, in the page's folder as

@@ -96,9 +96,12 @@ Answer run_answer(const std::string& text) {
 
 using nlohmann::ordered_json;
 
+ordered_json xyz(const Vec3& v) { return ordered_json::array({v.x(), v.y(), v.z()}); }
+
 // What the page draws of each body: its name, whether it is static, its shape (1D: a block of
 // `length`; 2D: a disc's radius, a polygon's vertices in the body's frame, a half plane's
-// normal and offset; 3D: only the names, the page shows numbers and plots).
+// normal and offset; 3D: a sphere's radius, a box's half extents along its own axes, a half
+// space's normal and offset, its solid side normal . p <= offset: engine/shape3d.h Shape3).
 ordered_json bodies_json(const Scene& scene) {
     ordered_json out = ordered_json::array();
     for (const SceneBody& b : scene.bodies) {
@@ -121,6 +124,13 @@ ordered_json bodies_json(const Scene& scene) {
                 j["offset"] = s.offset;
             }
         }
+        if (scene.dimension == 3) switch (const Shape3& s = b.shape3; s.kind) {
+                case Shape3::Kind::sphere: j.update({{"kind", "sphere"}, {"radius", s.radius}}); break;
+                case Shape3::Kind::box: j.update({{"kind", "box"}, {"half", xyz(s.half)}}); break;
+                case Shape3::Kind::half_space:
+                    j.update({{"kind", "half_space"}, {"normal", xyz(s.normal)}, {"offset", s.offset}});
+                    break;
+            }
         out.push_back(j);
     }
     return out;
@@ -256,6 +266,13 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
     out["duration"] = scene.duration;
     out["gravity"] = {scene.gravity.x(), scene.gravity.y(), scene.gravity.z()};
     out["bodies"] = bodies_json(scene);
+    // The camera the lesson's [view] asks for (the 3D view starts there); null where unset.
+    const auto opt = [](const auto& o) { return o ? ordered_json(*o) : ordered_json(nullptr); };
+    const SceneView& sv = lesson.view;
+    out["view"] = {{"azimuth", opt(sv.camera_azimuth)},
+                   {"elevation", opt(sv.camera_elevation)},
+                   {"target", sv.camera_target ? xyz(*sv.camera_target) : ordered_json(nullptr)},
+                   {"distance", opt(sv.camera_distance)}};
     ordered_json vary = ordered_json::array();
     for (const LessonVary& w : original.vary)
         // (body, field and component tell the panel what a drag on the picture sets: "A", "v", 0
@@ -286,6 +303,17 @@ std::string lesson_json(const std::string& text, const std::string& values, doub
             html = html::worked_html_beside_run(problem, solution, run, world_note(scene, *collision, solution.P));
         }
         ordered_json w{{"t", collision->t}, {"a", problem.a.name}, {"b", problem.b.name}, {"html", html}};
+        // 3D: where the two are at the instant (the event's poses, between the page's frames),
+        // with their velocities just before: the 3D view's "at" picture.
+        if (scene.dimension == 3) {
+            const auto pose = [](const CollisionInstant::Side& s) {
+                return ordered_json{{"x", xyz(s.x)},
+                                    {"v", xyz(s.v)},
+                                    {"w", xyz(s.w)},
+                                    {"orientation", {s.q.w(), s.q.x(), s.q.y(), s.q.z()}}};
+            };
+            w["at"] = {{problem.a.name, pose(collision->before_a)}, {problem.b.name, pose(collision->before_b)}};
+        }
         // The solve JSON as `collide solve --format json` prints it, spliced in unchanged; and
         // where the run resolved the collision with other contacts of its instant, its outcome.
         worked = w.dump();

@@ -8,6 +8,9 @@
 // each input to the nearest value of its grid, lo + k step (as the slider and the worksheets:
 // scenario/lesson.h LessonVary::value), never beyond lo or hi (and says so), through the
 // slider: its value, the number beside it, the address, and one answer a frame.
+// In 3D the view (try-it-3d.js, lab.picture there) makes the handles (handles3d): knobs only,
+// each with the words that say what it sets and valuesAt(p), the inputs' values where the
+// pointer is; this part drags them, snaps, says and takes the keys as for the others.
 // Loaded before try-it.js, which calls this part with the panel's shared state `lab` (try-it.js).
 (window.collideTryItParts = window.collideTryItParts || {}).handles = function (lab) {
   'use strict';
@@ -49,8 +52,8 @@
   // Sets the input `v` to the grid value nearest x, as its slider does; returns what to say.
   function setInput(v, x) {
     var s = snapped(v, x), input = byName[v.name];
+    lab.values[v.name] = s.value;  // (before showValue, which shows it)
     if (input) { input.value = String(s.value); showValue(input); }
-    lab.values[v.name] = s.value;
     return {text: say(v, s), end: !!s.beyond};
   }
   function announce(results) {
@@ -62,7 +65,12 @@
   // The handles of the first frame (t = 0) with the current view.
   function makeHandles() {
     handles = [];
-    if (!scene || !lab.run || !lab.run.vary || lab.run.dimension > 2) return;
+    if (!scene || !lab.run || !lab.run.vary) return;
+    if (lab.run.dimension > 2) {
+      handles = picture.handles3d ? picture.handles3d() : [];
+      handles.forEach(function (h) { h.id = h.kind + ':' + h.body; });
+      return;
+    }
     var d = lab.run.dimension, st = lab.run.states[0], of = {};
     lab.run.vary.forEach(function (v) {
       if (v.body !== 'scene' && st.bodies[v.body]) (of[v.body] = of[v.body] || []).push(v);
@@ -126,6 +134,7 @@
     var also = [];
     h.inputs.forEach(function (v) { (v.in_proportion || []).forEach(function (o) { if (also.indexOf(o) < 0) also.push(o); }); });
     var more = also.length ? ' (' + (also.length > 3 ? also.length + ' other bodies' : also.join(', ')) + ' in proportion)' : '';
+    if (h.words) return h.words + ': ' + names + more;
     switch (h.kind) {
       case 'position': return h.body + ' itself (in a dashed outline) moves it: ' + names + more;
       case 'velocity': return 'the blue knob at the head of ' + h.body + '\u2019s velocity arrow: ' + names + more;
@@ -160,7 +169,9 @@
     handles.forEach(function (h) {
       var hot = h.id === focusedId || h.id === hoverId || (drag && drag.h.id === h.id);
       ctx.save();
-      if (h.kind === 'position') {
+      if (h.knobOnly) {  // 3D: the view draws the rest
+        knob(ctx, h.knob, h.colour, hot);
+      } else if (h.kind === 'position') {
         // the outline a little outside the body, dashed
         ctx.strokeStyle = palette.ink; ctx.lineWidth = hot ? 3 : 2; ctx.setLineDash([7, 5]);
         ctx.beginPath();
@@ -257,6 +268,7 @@
       el.setAttribute('aria-valuemin', h.inputs[0].lo);
       el.setAttribute('aria-valuemax', h.inputs[0].hi);
       el.setAttribute('aria-valuenow', current(h.inputs[0]));
+      if (h.grid) el.dataset.grid = JSON.stringify(h.grid);  // 3D: the knob's place at each grid value (canvas px)
     });
     Object.keys(elements).forEach(function (id) {
       if (keep[id]) return;
@@ -312,7 +324,7 @@
   function hit(p, touch) {
     var reach = touch ? 24 : 15, best = null, bestD = Infinity;
     handles.forEach(function (h) {
-      if (h.kind === 'position') return;
+      if (h.kind === 'position' && !h.knobOnly) return;
       var dd = Math.hypot(p[0] - h.knob[0], p[1] - h.knob[1]);
       if (dd <= reach && dd < bestD) { best = h; bestD = dd; }
     });
@@ -324,7 +336,10 @@
   function turnOf(h, p) { return Math.atan2(-(p[1] - h.centre[1]), p[0] - h.centre[0]); }
   function dragTo(p) {
     var h = drag.h, results = [];
-    if (h.kind === 'spin' || h.kind === 'angle') {
+    if (h.valuesAt) {  // 3D: where the knob is let go, in the inputs' values
+      var x = h.valuesAt([p[0] - drag.grab[0], p[1] - drag.grab[1]]);
+      h.inputs.forEach(function (v, k) { results.push(setInput(v, x[k])); });
+    } else if (h.kind === 'spin' || h.kind === 'angle') {
       var a = turnOf(h, [p[0] - drag.grab[0], p[1] - drag.grab[1]]);
       while (a - drag.a > Math.PI) a -= 2 * Math.PI;  // continuous round the circle
       while (a - drag.a < -Math.PI) a += 2 * Math.PI;

@@ -160,8 +160,6 @@
     return centre;
   }
 
-
-
   function drawScene(st) {
     var ctx = scene.getContext('2d'), d = lab.run.dimension, W = scene.width, H = scene.height;
     ctx.fillStyle = palette.background; ctx.fillRect(0, 0, W, H);
@@ -203,9 +201,15 @@
       arrow(ctx, p, [p[0] + P[0] * view.pscale, p[1] - P[1] * view.pscale], palette.impulse, 3.5);
       label(ctx, 'P = ' + vec(e.impulse) + ' N\u00b7s on ' + e.b, [p[0] + 10, p[1] - 20], palette.impulse);
     });
-    // The legend above the scene, three rows at most (a row of dominoes would cover them): with
-    // more moving bodies, the two of the latest collision so far (else the first two) and a
-    // row that says how many are left out.
+    drawLegend(ctx, legend, last);
+    label(ctx, 't = ' + st.t.toFixed(3) + ' s', [W - 12, 19], palette.muted, 'right');
+    if (lab.handles.atStart()) lab.handles.draw(ctx);
+  }
+
+  // The legend above the scene (`legend`: {i, text} a moving body; `last`: the latest collision
+  // so far), three rows at most (a row of dominoes would cover them): with more moving bodies,
+  // the two of the latest collision (else the first two) and a row that says how many are left out.
+  function drawLegend(ctx, legend, last) {
     var rows = legend, others = 0;
     if (legend.length > 3) {
       rows = legend.filter(function (l) {
@@ -223,8 +227,6 @@
     if (others > 0)
       label(ctx, '+ ' + others + ' other moving bodies (listed: ' + (last ? 'the latest collision\u2019s two)' : 'the first two)'),
             [32, 19 + rows.length * 22], palette.muted);
-    label(ctx, 't = ' + st.t.toFixed(3) + ' s', [W - 12, 19], palette.muted, 'right');
-    if (lab.handles.atStart()) lab.handles.draw(ctx);
   }
 
   // The energies against time, as the page's plot (kinetic; with gravity potential and total),
@@ -270,6 +272,9 @@
     toCanvas: toCanvas,
     blockBox: blockBox,
     extentOf: extentOf,
-    label: label
+    label: label,
+    arrow: arrow,
+    fillOf: fillOf,
+    drawLegend: drawLegend
   };
 };

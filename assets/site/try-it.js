@@ -5,8 +5,9 @@
 // for it. The scripts only draw what they get. This one holds the inputs (sliders, the address),
 // the answers, the numbers, the lesson's own [[plot]]s (drawn by the engine: the SVG, alt text and
 // folded table that `collide material` writes on the page, put in as they are) and playback; its
-// parts, loaded before it, draw the picture (try-it-picture.js) and its drag handles
-// (try-it-drag.js), and make the plot of any quantity (try-it-plot.js). They share one object, `lab`: the panel's elements, its number format, the
+// parts, loaded before it, draw the picture (try-it-picture.js; in 3D try-it-3d.js, with three.js)
+// and its drag handles (try-it-drag.js), and make the plot of any quantity (try-it-plot.js). They
+// share one object, `lab`: the panel's elements, its number format, the
 // current run, frame and values (read through getters: this script alone changes them).
 // No network: the module is a file beside the pages, loaded by a <script> tag (file:// works).
 (function () {
@@ -15,10 +16,12 @@
   if (!panel) return;
   var status = panel.querySelector('.tryit-status');
   var parts = window.collideTryItParts || {};
-  if (typeof CollideEngine !== 'function' || !window.collideTryIt || !parts.picture || !parts.handles || !parts.plot) {
+  var d3 = panel.dataset.dimension === '3';
+  if (typeof CollideEngine !== 'function' || !window.collideTryIt || !parts.picture || !parts.handles || !parts.plot ||
+      (d3 && !parts.view3d)) {
     status.textContent = 'The engine (collide-engine.js), the lesson (try-it-lesson.js) or the panel\u2019s scripts ' +
-                         '(try-it-picture.js, try-it-drag.js, try-it-plot.js) did not load: the panel needs them ' +
-                         'beside the pages.';
+                         '(try-it-picture.js, try-it-drag.js, try-it-plot.js' + (d3 ? ', try-it-3d.js' : '') +
+                         ') did not load: the panel needs them beside the pages.';
     return;
   }
   var text = window.collideTryIt.lesson;  // the lesson's file, as `collide` reads it
@@ -264,7 +267,10 @@
   Object.defineProperty(lab, 'frame', {get: function () { return frame; }});
   Object.defineProperty(lab, 'playing', {get: function () { return playing; }});
   Object.defineProperty(lab, 'values', {get: function () { return values; }});
+  // (goTo: a frame, paused: the 3D view's buttons)
+  lab.goTo = function (k) { playing = false; frame = Math.max(0, Math.min(k, run.states.length - 1)); draw(); };
   var picture = lab.picture = parts.picture(lab);
+  if (d3) picture = lab.picture = parts.view3d(lab, picture);  // the 3D view, with the flat one's plot
   var handles = lab.handles = parts.handles(lab);
   var freePlot = parts.plot(lab);
 

@@ -1,16 +1,14 @@
 // Drag to set, in a real browser (issue 35, items 1 and 5): `collide material` writes lesson
 // pages with the WebAssembly module; headless Chromium opens them from file:// and is driven
-// through its DevTools protocol over a pipe (--remote-debugging-pipe: no port, no network, and
-// Node 20 needs no WebSocket for it). Input.dispatchMouseEvent / dispatchTouchEvent make real
-// pointer events (the page's handlers cannot tell them from a hand's), dispatchKeyEvent real
-// keys. After each drag or key:
+// through its DevTools protocol (cdp.js: real pointer, touch and key events). After each drag or key:
 // - the input's slider and the panel's value are the grid value nearest where the pointer was
 //   let go (lo + k step, the input's step; within its range, the end said in words when passed);
 // - the panel's numbers (the impulse and the velocities after, full precision in data-value)
 //   equal what the command gives for the new values: `collide solve --format json` on the
 //   collision (catch-up), else the same pair's event of `collide step --events --json` on the
 //   lesson file with the new values written in (the same collision at the same t), to 1e-9.
-// Every 1D and 2D lesson has at least one handle. Lessons: catch-up (1D: A's velocity arrow dragged with the mouse, then past its range's end;
+// Every 1D and 2D lesson has at least one handle (3D lessons: view3d.js). Lessons: catch-up
+// (1D: A's velocity arrow dragged with the mouse, then past its range's end;
 // B's arrow by a key), general-2d (A's arrow by touch; B moved by the mouse and by keys),
 // centre-of-percussion (ball 2 dragged along bat 2: the hit point), contact-point-velocity (the
 // spin dial by keys, Shift: ten steps), restitution (a mass knob: the lesson whose bodies'
@@ -26,134 +24,12 @@ const here = __dirname;
 const lessons = path.join(here, '..', '..', 'lessons');
 fs.rmSync(work, {recursive: true, force: true});
 fs.mkdirSync(work, {recursive: true});
-let failures = 0;
-function check(ok, what) {
-  console.log((ok ? 'ok   ' : 'FAIL ') + what);
-  if (!ok) failures++;
-}
-function close(a, b, tol = 1e-9) {
-  if (Array.isArray(a) || Array.isArray(b)) {
-    return Array.isArray(a) && Array.isArray(b) && a.length === b.length && a.every((x, k) => close(x, b[k], tol));
-  }
-  return Math.abs(a - b) <= tol * Math.max(1, Math.abs(a), Math.abs(b));
-}
-
-// Every bundled 1D and 2D lesson (3D lessons have no picture to drag on).
+const {check, close, send, openPage, answered, look, mouseDrag, touchDrag, shot, key, lessonWith, sameAsStep, onGrid,
+       finish} = require('./cdp.js')(collide, chromium, work, ['--disable-gpu']);
+// Every bundled 1D and 2D lesson (the 3D ones: view3d.js).
 const flat = fs.readdirSync(lessons).filter(f => f.endsWith('.toml')).map(f => fs.readFileSync(path.join(lessons, f), 'utf8'))
                .filter(t => !/^dimension = 3$/m.test(t)).map(t => t.match(/^id = "([^"]*)"/m)[1]);
 execFileSync(collide, ['material', '-o', path.join(work, 'site'), '--size', '320x180', '--quiet'].concat(flat), {stdio: 'inherit'});
-
-// ---- Chromium through its DevTools protocol (cdp.js) ----
-const cdp = require('./cdp.js').start(chromium, work);
-const {send, openPage, answered, sleep} = cdp;
-// What the page shows: the inputs, the view, the collision's numbers, the handles (CSS pixels).
-function look(page) {
-  return page.eval(`(function () {
-    var p = document.getElementById('try-it'), o = p.querySelector('.tryit-impulse'), r = {inputs: {}, handles: {}};
-    p.querySelectorAll('input[type=range]').forEach(function (i) {
-      r.inputs[i.dataset.name] = {value: i.value, shown: i.parentNode.querySelector('output').textContent};
-    });
-    r.view = JSON.parse(p.dataset.view);
-    r.canvas = p.querySelector('canvas.tryit-scene').getBoundingClientRect().width / p.querySelector('canvas.tryit-scene').width;
-    r.said = p.querySelector('.tryit-drag-said').textContent;
-    r.help = p.querySelector('.tryit-drag-help').textContent;
-    r.address = window.location.search;
-    if (o) r.worked = {a: o.dataset.a, b: o.dataset.b, t: Number(o.dataset.t), impulse: JSON.parse(o.dataset.value),
-                       v: Array.prototype.map.call(p.querySelectorAll('.tryit-numbers table:first-of-type .tryit-v-after'),
-                                                   function (c) { return JSON.parse(c.dataset.value); })};
-    r.figures = Array.prototype.map.call(p.querySelectorAll('.tryit-figure-impulse'), function (c) {
-      return {a: c.dataset.a, b: c.dataset.b, t: Number(c.dataset.t), impulse: JSON.parse(c.dataset.value)};
-    });
-    p.querySelectorAll('.tryit-handle').forEach(function (h) {
-      var b = h.getBoundingClientRect();
-      r.handles[h.dataset.handle] = [b.left + b.width / 2, b.top + b.height / 2];
-    });
-    return r;
-  })()`);
-}
-async function mouseDrag(page, from, to) {
-  const steps = 12;
-  await page('Input.dispatchMouseEvent', {type: 'mouseMoved', x: from[0], y: from[1]});
-  await page('Input.dispatchMouseEvent', {type: 'mousePressed', x: from[0], y: from[1], button: 'left', buttons: 1, clickCount: 1});
-  for (let k = 1; k <= steps; ++k) {
-    const x = from[0] + (to[0] - from[0]) * k / steps, y = from[1] + (to[1] - from[1]) * k / steps;
-    await page('Input.dispatchMouseEvent', {type: 'mouseMoved', x, y, button: 'left', buttons: 1});
-    await sleep(20);
-  }
-  await page('Input.dispatchMouseEvent', {type: 'mouseReleased', x: to[0], y: to[1], button: 'left', buttons: 0, clickCount: 1});
-}
-async function touchDrag(page, from, to) {
-  const steps = 12;
-  await page('Input.dispatchTouchEvent', {type: 'touchStart', touchPoints: [{x: from[0], y: from[1]}]});
-  for (let k = 1; k <= steps; ++k) {
-    const x = from[0] + (to[0] - from[0]) * k / steps, y = from[1] + (to[1] - from[1]) * k / steps;
-    await page('Input.dispatchTouchEvent', {type: 'touchMove', touchPoints: [{x, y}]});
-    await sleep(20);
-  }
-  await page('Input.dispatchTouchEvent', {type: 'touchEnd', touchPoints: []});
-}
-// A screenshot of the panel's top (its inputs, the picture, the lines under it) in WORK/NAME.png.
-async function shot(page, name) {
-  const r = await page.eval(`(function () { var b = document.querySelector('.tryit-player').getBoundingClientRect();
-    return b.bottom + window.scrollY + 10; })()`);
-  const {data} = await page('Page.captureScreenshot', {format: 'png', clip: {x: 0, y: 0, width: 1100, height: r, scale: 1}});
-  fs.writeFileSync(path.join(work, name + '.png'), Buffer.from(data, 'base64'));
-}
-const KEYS = {ArrowUp: 38, ArrowDown: 40, ArrowLeft: 37, ArrowRight: 39};
-async function key(page, handle, name, shift) {
-  await page.eval(`document.querySelector('.tryit-handle[data-handle="${handle}"]').focus()`);
-  const base = {key: name, code: name, windowsVirtualKeyCode: KEYS[name], modifiers: shift ? 8 : 0};
-  await page('Input.dispatchKeyEvent', Object.assign({type: 'rawKeyDown'}, base));
-  await page('Input.dispatchKeyEvent', Object.assign({type: 'keyUp'}, base));
-}
-
-// ---- The command's answers for the new values ----
-// The lesson's file with `field` (component `comp`, -1 for a number) of body `body` set to x.
-let written = 0;  // files written so far (each change its own file)
-function lessonWith(file, changes) {
-  let text = fs.readFileSync(path.join(lessons, file), 'utf8');
-  for (const [body, field, comp, x] of changes) {
-    const lines = text.split('\n');
-    let inBody = false, done = false;
-    for (let k = 0; k < lines.length && !done; ++k) {
-      if (/^\[/.test(lines[k])) inBody = false;
-      if (lines[k] === `name = "${body}"` && /^\[\[body\]\]/.test(lines[k - 1] || '')) inBody = true;
-      const m = inBody && lines[k].match(new RegExp(`^${field} = (.*)$`));
-      if (!m) continue;
-      if (comp < 0) lines[k] = `${field} = ${x}`;
-      else {
-        const v = JSON.parse(m[1]);
-        v[comp] = x;
-        lines[k] = `${field} = [${v.join(', ')}]`;
-      }
-      done = true;
-    }
-    if (!done) throw new Error(`${file}: no ${field} in body ${body}`);
-    text = lines.join('\n');
-  }
-  const out = path.join(work, file.replace('.toml', '') + '-' + (++written) + '.toml');
-  fs.writeFileSync(out, text);
-  return out;
-}
-function stepEvents(file) {
-  return execFileSync(collide, ['step', file, '--events', '--json'], {maxBuffer: 1 << 28}).toString().trim().split('\n').map(JSON.parse);
-}
-// The panel's collision (and each figure's) against the same pair's event of the run.
-function sameAsStep(shown, file, what) {
-  const events = stepEvents(file);
-  const pick = c => events.find(e => e.a === c.a && e.b === c.b && Math.abs(e.t - c.t) < 1e-9);
-  const e = pick(shown.worked);
-  check(!!e && close(shown.worked.impulse, e.impulse) && close(shown.worked.v[0], e.after[e.a].v) &&
-        close(shown.worked.v[1], e.after[e.b].v),
-        `${what}: the panel's impulse ${JSON.stringify(shown.worked.impulse)} and velocities after ` +
-        `${JSON.stringify(shown.worked.v)} are collide step's (${e ? JSON.stringify(e.impulse) : 'no such event'})`);
-  for (const f of shown.figures) {
-    const g = pick(f);
-    check(!!g && close(f.impulse, g.impulse),
-          `${what}: the figures' ${f.a} / ${f.b} impulse ${JSON.stringify(f.impulse)} is collide step's (${g ? JSON.stringify(g.impulse) : 'none'})`);
-  }
-}
-function onGrid(value, lo, step) { return Math.abs((value - lo) / step - Math.round((value - lo) / step)) < 1e-6; }
 
 async function main() {
   await send('Target.setDiscoverTargets', {discover: false});
@@ -207,7 +83,7 @@ async function main() {
     await key(page, 'velocity:B', 'ArrowRight');
     n = await answered(page, n);
     s = await look(page);
-    check(s.inputs['B.v'].value === '0.4' && /^B\.v = 0\.4 m\/s$/.test(s.said), `catch-up: Right on B's knob: B.v = ${s.inputs['B.v'].value}; said: ${s.said}`);
+    check(s.inputs['B.v'].value === '0.4' && s.inputs['B.v'].shown === '0.4' && /^B\.v = 0\.4 m\/s$/.test(s.said), `catch-up: Right on B's knob: B.v = ${s.inputs['B.v'].value}; said: ${s.said}`);
     sameAsStep(s, lessonWith('01-catch-up.toml', [['A', 'v', -1, 3], ['B', 'v', -1, 0.4]]), 'catch-up (A.v = 3, B.v = 0.4)');
     await page.close();
   }
@@ -306,12 +182,4 @@ async function main() {
   }
 }
 
-main().then(() => {
-  cdp.close();
-  console.log(failures ? `drag.js: ${failures} FAILED` : 'drag.js: all passed');
-  process.exit(failures ? 1 : 0);
-}, e => {
-  cdp.close();
-  console.error('drag.js: ' + e.stack);
-  process.exit(1);
-});
+finish(main, 'drag.js');

@@ -21,14 +21,10 @@ const {execFileSync} = require('child_process');
 const [collide, chromium, work] = process.argv.slice(2);
 fs.rmSync(work, {recursive: true, force: true});
 fs.mkdirSync(work, {recursive: true});
-let failures = 0;
-function check(ok, what) {
-  console.log((ok ? 'ok   ' : 'FAIL ') + what);
-  if (!ok) failures++;
-}
 execFileSync(collide, ['material', '-o', path.join(work, 'site'), '--size', '320x180', '--quiet', 'bouncing-ball', 'general-2d'],
              {stdio: 'inherit'});
-const cdp = require('./cdp.js').start(chromium, work);
+const cdp = require('./cdp.js')(collide, chromium, work);
+const check = cdp.check;
 
 // The panel's plot: what it plots and the engine's numbers behind it.
 const plotted = page => page.eval(`JSON.parse(document.getElementById('try-it').dataset.freePlot || 'null')`);
@@ -140,12 +136,4 @@ async function main() {
   }
 }
 
-main().then(() => {
-  cdp.close();
-  console.log(failures ? `plot_any.js: ${failures} FAILED` : 'plot_any.js: all passed');
-  process.exit(failures ? 1 : 0);
-}, e => {
-  cdp.close();
-  console.error('plot_any.js: ' + e.stack);
-  process.exit(1);
-});
+cdp.finish(main, 'plot_any.js');
