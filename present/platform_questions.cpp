@@ -91,9 +91,9 @@ PlatformSheet platform_sheet(const Lesson& L, const StudentSheet& s) {
                    worksheet_givens_html(s.lesson);
     const WorksheetFigure f = worksheet_figure(s, kPlatformFigureMm, L.id + "-" + std::to_string(s.student));
     if (!f.svg.empty())
-        p.figure = PlatformFigure{L.id + "-student-" + std::to_string(s.student) + ".svg",
-                                  "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + f.svg, px(f.width_mm),
-                                  px(f.height_mm)};
+        p.figure =
+            PlatformFigure{L.id + "-student-" + std::to_string(s.student) + ".svg",
+                           "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n" + f.svg, px(f.width_mm), px(f.height_mm)};
     p.worked_html = worked_feedback(s);
     for (std::size_t k = 0; k < s.asked.size(); ++k) p.questions.push_back(question(L, s, k));
     return p;

@@ -27,8 +27,8 @@ namespace collide {
 
 // The figure of a student's 2D set-up (present/worksheet_figure.h), as a file of the question.
 struct PlatformFigure {
-    std::string file;  // "general-2d-student-3.svg"
-    std::string svg;   // the file: an XML declaration, then the SVG
+    std::string file;                 // "general-2d-student-3.svg"
+    std::string svg;                  // the file: an XML declaration, then the SVG
     int width_px = 0, height_px = 0;  // as printed, at 96 dpi
 };
 
