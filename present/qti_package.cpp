@@ -46,8 +46,7 @@ std::string declarations(const PlatformQuestion& q, bool worked) {
             o << "float\">\n<correctResponse><value>" << full_number(q.want[c]) << "</value></correctResponse>\n";
         else if (q.kind == PlatformKind::choice)
             o << "identifier\">\n<correctResponse><value>" << option_id(q.correct) << "</value></correctResponse>\n";
-        else
-            o << "string\">\n";
+        else o << "string\">\n";
         o << "</responseDeclaration>\n";
     }
     o << "<outcomeDeclaration identifier=\"SCORE\" cardinality=\"single\" baseType=\"float\" normalMinimum=\"0\" "
@@ -79,7 +78,8 @@ std::string interaction(const PlatformQuestion& q) {
         case PlatformKind::choice: {
             std::string o = "<choiceInteraction responseIdentifier=\"RESPONSE\" shuffle=\"false\" maxChoices=\"1\">\n";
             for (std::size_t c = 0; c < q.choices.size(); ++c)
-                o += "<simpleChoice identifier=\"" + option_id(c) + "\">" + qti_xhtml(q.choices[c]) + "</simpleChoice>\n";
+                o += "<simpleChoice identifier=\"" + option_id(c) + "\">" + qti_xhtml(q.choices[c]) +
+                     "</simpleChoice>\n";
             return o + "</choiceInteraction>\n";
         }
         case PlatformKind::explain:
@@ -140,7 +140,8 @@ std::string item_xml(const PlatformSheet& sheet, const PlatformQuestion& q) {
         for (std::size_t c = 0; c < q.choices.size(); ++c)
             o << "<modalFeedback outcomeIdentifier=\"FEEDBACK\" identifier=\"" << option_id(c)
               << "\" showHide=\"show\" title=\"Option " << c + 1 << "\">\n<p><b>"
-              << (c == q.correct ? "Right" : "Not right") << ".</b> " << qti_xhtml(q.reasons[c]) << "</p>\n</modalFeedback>\n";
+              << (c == q.correct ? "Right" : "Not right") << ".</b> " << qti_xhtml(q.reasons[c])
+              << "</p>\n</modalFeedback>\n";
     if (worked)
         o << "<modalFeedback outcomeIdentifier=\"SOLUTION\" identifier=\"WORKED\" showHide=\"show\" title=\"Worked "
              "out\">\n"
@@ -221,7 +222,8 @@ std::vector<ZipEntry> qti_package_files(const std::vector<Lesson>& lessons,
         for (std::size_t k = 0; !ps.empty() && k < ps.front().questions.size(); ++k)
             for (const PlatformSheet& s : ps) {
                 const PlatformQuestion& q = s.questions[k];
-                Resource r{q.id, "imsqti_item_xmlv2p1",
+                Resource r{q.id,
+                           "imsqti_item_xmlv2p1",
                            dir + "q" + std::to_string(q.number) + "-s" + std::to_string(s.student) + ".xml",
                            {}};
                 if (s.figure) r.depends.push_back(figure_id(s));
@@ -248,11 +250,11 @@ std::string qti_xhtml(const std::string& html) {
     // QTI 2.1's XHTML elements (its "content model" module), and the attributes each may have
     // besides class, id, label and xml:lang.
     static const std::set<std::string> elements = {
-        "a",   "abbr", "acronym", "address", "b",     "big",   "blockquote", "br",    "caption", "cite",
-        "code", "col", "colgroup", "dd",     "dfn",   "div",   "dl",         "dt",    "em",      "h1",
-        "h2",  "h3",   "h4",      "h5",      "h6",    "hr",    "i",          "img",   "kbd",     "li",
-        "ol",  "p",    "pre",     "q",       "samp",  "small", "span",       "strong", "sub",    "sup",
-        "table", "tbody", "td",   "tfoot",   "th",    "thead", "tr",         "tt",    "ul",      "var"};
+        "a",     "abbr",  "acronym",  "address", "b",    "big",   "blockquote", "br",     "caption", "cite",
+        "code",  "col",   "colgroup", "dd",      "dfn",  "div",   "dl",         "dt",     "em",      "h1",
+        "h2",    "h3",    "h4",       "h5",      "h6",   "hr",    "i",          "img",    "kbd",     "li",
+        "ol",    "p",     "pre",      "q",       "samp", "small", "span",       "strong", "sub",     "sup",
+        "table", "tbody", "td",       "tfoot",   "th",   "thead", "tr",         "tt",     "ul",      "var"};
     static const std::set<std::string> empty = {"br", "col", "hr", "img"};
     static const std::map<std::string, std::set<std::string>> own = {
         {"a", {"href", "type"}},
@@ -331,8 +333,8 @@ std::string qti_xhtml(const std::string& html) {
             attributes += " " + attribute + "=\"" + value + "\"";
             n = close + 1;
         }
-        if (name == "img" && (attributes.find(" src=\"") == std::string::npos ||
-                              attributes.find(" alt=\"") == std::string::npos))
+        if (name == "img" &&
+            (attributes.find(" src=\"") == std::string::npos || attributes.find(" alt=\"") == std::string::npos))
             fail("<img> without src or alt");
         if (name == "tr" && !open.empty() && open.back() == "table") {
             out += "<tbody>";

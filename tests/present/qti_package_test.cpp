@@ -21,10 +21,10 @@ TEST(QtiXhtml, RowsGoInATbodyAndEmptyElementsClose) {
 }
 
 TEST(QtiXhtml, RefusesWhatQtiDoesNotHave) {
-    for (const char* bad : {"<svg width=\"1\"></svg>", "<p style=\"color: red\">a</p>", "<div data-x=\"1\">a</div>",
-                            "<p>a&nbsp;b</p>", "<p>a&times;b</p>", "<p><b>a</p></b>", "<p>a", "a</p>", "<img src=\"a\">",
-                            "<p class='a'>x</p>", "<button>a</button>", "<p>a<img src=\"x\" alt=\"y\"></img></p>",
-                            "<p/>", "<p class=\"a>x</p>"})
+    for (const char* bad :
+         {"<svg width=\"1\"></svg>", "<p style=\"color: red\">a</p>", "<div data-x=\"1\">a</div>", "<p>a&nbsp;b</p>",
+          "<p>a&times;b</p>", "<p><b>a</p></b>", "<p>a", "a</p>", "<img src=\"a\">", "<p class='a'>x</p>",
+          "<button>a</button>", "<p>a<img src=\"x\" alt=\"y\"></img></p>", "<p/>", "<p class=\"a>x</p>"})
         EXPECT_THROW(qti_xhtml(bad), std::logic_error) << bad;
 }
 
