@@ -67,13 +67,15 @@ std::string interaction(const PlatformQuestion& q) {
             return "<p>Your answer: <textEntryInteraction responseIdentifier=\"RESPONSE\" expectedLength=\"12\"/>" +
                    unit + "</p>\n" +
                    (q.unit.empty() ? std::string("<p><small>A whole number.</small></p>\n")
-                                   : "<p><small>The number in " + xml_text(q.unit) + ".</small></p>\n");
+                                   : "<p><small>The number in " + xml_text(q.unit) +
+                                         ", with a decimal point (1.25), without the unit.</small></p>\n");
         case PlatformKind::vector: {
             std::string o = "<p>Your answer: (";
             for (const std::string& r : responses(q))
                 o += (r == "RESPONSE_X" ? "" : ", ") + std::string("<textEntryInteraction responseIdentifier=\"") + r +
                      "\" expectedLength=\"10\"/>";
-            return o + ")" + unit + "</p>\n<p><small>Each component in " + xml_text(q.unit) + ".</small></p>\n";
+            return o + ")" + unit + "</p>\n<p><small>Each component in " + xml_text(q.unit) +
+                   ", with a decimal point (1.25).</small></p>\n";
         }
         case PlatformKind::choice: {
             std::string o = "<choiceInteraction responseIdentifier=\"RESPONSE\" shuffle=\"false\" maxChoices=\"1\">\n";
