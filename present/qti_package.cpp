@@ -92,6 +92,14 @@ std::string interaction(const PlatformQuestion& q) {
     return "";
 }
 
+// Every response given: QTI's operators make a NULL (no answer) NULL and the test false, but a
+// player that reads an empty field as 0 would find a 0 component right without it.
+std::string answered(const PlatformQuestion& q) {
+    std::string o;
+    for (const std::string& r : responses(q)) o += "<not><isNull><variable identifier=\"" + r + "\"/></isNull></not>";
+    return o;
+}
+
 // SCORE 1 when `right`, else 0.
 std::string score_if(const std::string& right) {
     return "<responseCondition>\n<responseIf>\n" + right + set_outcome("SCORE", float_value(1)) +
@@ -103,8 +111,9 @@ std::string processing(const PlatformQuestion& q, bool worked) {
     std::string o = "<responseProcessing>\n";
     switch (q.kind) {
         case PlatformKind::number:
-            o += score_if("<equal toleranceMode=\"absolute\" tolerance=\"" + full_number(q.allowance) +
-                          "\">\n<variable identifier=\"RESPONSE\"/>\n" + float_value(q.want[0]) + "\n</equal>\n");
+            o += score_if("<and>\n" + answered(q) + "\n<equal toleranceMode=\"absolute\" tolerance=\"" +
+                          full_number(q.allowance) + "\">\n<variable identifier=\"RESPONSE\"/>\n" +
+                          float_value(q.want[0]) + "\n</equal>\n</and>\n");
             break;
         case PlatformKind::vector: {
             // |got - want|^2 <= allowance^2: the length of the difference, without a square root.
@@ -115,7 +124,8 @@ std::string processing(const PlatformQuestion& q, bool worked) {
                     "<subtract><variable identifier=\"" + r[c] + "\"/>" + float_value(q.want[c]) + "</subtract>";
                 sum += "<product>" + d + d + "</product>\n";
             }
-            o += score_if("<lte>\n" + sum + "</sum>\n" + float_value(q.allowance * q.allowance) + "\n</lte>\n");
+            o += score_if("<and>\n" + answered(q) + "\n<lte>\n" + sum + "</sum>\n" +
+                          float_value(q.allowance * q.allowance) + "\n</lte>\n</and>\n");
             break;
         }
         case PlatformKind::choice:

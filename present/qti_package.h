@@ -6,6 +6,7 @@
 //                      (imsqti_item_xmlv2p1; its file and, in 2D, a dependency on its figure),
 //                      per figure (webcontent) and per lesson's test (imsqti_test_xmlv2p1)
 //   ID/qK-sS.xml       question K of student S of lesson ID (namespace imsqti_v2p1):
+//     (a number and a vector right only when every field is answered: <not><isNull>)
 //     number   a textEntryInteraction, baseType float; right when |got - want| <= allowance
 //              (<equal toleranceMode="absolute">, marking_allowance of teach/answers.h: the
 //              rule of every face), the unit written after the field

@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
-# Installs the QTI reader the tests run on `collide worksheet --format qti` (tests/qti/): the
-# npm registry's @citolab/qti-convert and the XML and zip readers of the checks, exactly as
-# tests/qti/package-lock.json pins them, into BUILD_DIR/qti-reader/node_modules. Needs the
+# Installs the QTI software the tests run on `collide worksheet --format qti` (tests/qti/): the
+# npm registry's @citolab/qti-convert (a QTI 2 to 3 reader), @citolab/qti-components (a QTI
+# player, run in Chromium) and the XML and zip readers of the checks, exactly as
+# tests/qti/package-lock.json pins them, into BUILD_DIR/qti-reader/node_modules: tools of the
+# tests only, nothing of them is built into collide or installed with it. Needs the
 # network the first time (npm's cache after that); the tests themselves run offline. Runs on
 # Debian 12's Node 18 and npm 9 (scripts/install-deps.sh installs them). scripts/build.sh calls
 # it; again with an unchanged lock file it does nothing.

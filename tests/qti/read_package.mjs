@@ -46,7 +46,8 @@ try {
     simpleChoice: 'qti-simple-choice', extendedTextInteraction: 'qti-extended-text-interaction',
     rubricBlock: 'qti-rubric-block', modalFeedback: 'qti-modal-feedback', equal: 'qti-equal', lte: 'qti-lte',
     sum: 'qti-sum', product: 'qti-product', subtract: 'qti-subtract', match: 'qti-match',
-    responseIf: 'qti-response-if', responseElse: 'qti-response-else', assessmentItemRef: 'qti-assessment-item-ref',
+    responseIf: 'qti-response-if', responseElse: 'qti-response-else', and: 'qti-and', not: 'qti-not',
+    isNull: 'qti-is-null', assessmentItemRef: 'qti-assessment-item-ref',
     assessmentSection: 'qti-assessment-section', selection: 'qti-selection'
   };
   let items = 0, tests = 0, figures = 0;
