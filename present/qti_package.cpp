@@ -172,16 +172,15 @@ std::string test_xml(const Lesson& L, const std::vector<PlatformSheet>& sheets) 
       << "<testPart identifier=\"collide-" << L.id
       << "-part\" navigationMode=\"nonlinear\" submissionMode=\"individual\">\n"
          "<itemSessionControl maxAttempts=\"1\" showFeedback=\"true\" allowReview=\"true\" showSolution=\"false\"/>\n";
-    if (!sheets.empty())
-        for (std::size_t k = 0; k < sheets.front().questions.size(); ++k) {
-            const int number = sheets.front().questions[k].number;
-            o << "<assessmentSection identifier=\"collide-" << L.id << "-q" << number << "\" title=\"Question "
-              << number << "\" visible=\"true\">\n<selection select=\"1\"/>\n";
-            for (const PlatformSheet& s : sheets)
-                o << "<assessmentItemRef identifier=\"" << s.questions[k].id << "\" href=\"q" << number << "-s"
-                  << s.student << ".xml\"/>\n";
-            o << "</assessmentSection>\n";
-        }
+    for (std::size_t k = 0; k < sheets.front().questions.size(); ++k) {
+        const int number = sheets.front().questions[k].number;
+        o << "<assessmentSection identifier=\"collide-" << L.id << "-q" << number << "\" title=\"Question " << number
+          << "\" visible=\"true\">\n<selection select=\"1\"/>\n";
+        for (const PlatformSheet& s : sheets)
+            o << "<assessmentItemRef identifier=\"" << s.questions[k].id << "\" href=\"q" << number << "-s" << s.student
+              << ".xml\"/>\n";
+        o << "</assessmentSection>\n";
+    }
     o << "</testPart>\n<outcomeProcessing>\n"
       << set_outcome("SCORE", "<sum><testVariables variableIdentifier=\"SCORE\"/></sum>")
       << "</outcomeProcessing>\n</assessmentTest>\n";
@@ -224,6 +223,8 @@ std::vector<ZipEntry> qti_package_files(const std::vector<Lesson>& lessons,
         std::vector<PlatformSheet> ps;
         for (const StudentSheet& s : sheets[l]) ps.push_back(platform_sheet(L, s));
         const std::string dir = L.id + "/";
+        // A test needs a section: none for a lesson whose sheet asks nothing (nor any item).
+        if (ps.empty() || ps.front().questions.empty()) continue;
         Resource test{"collide-" + L.id + "-test", "imsqti_test_xmlv2p1", dir + "test.xml", {}};
         files.push_back({test.href, test_xml(L, ps)});
         const std::size_t test_at = resources.size();

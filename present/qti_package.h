@@ -22,6 +22,7 @@
 //   ID/student-S.svg   the figure of student S's set-up (2D lessons)
 //   ID/test.xml        an assessmentTest of the lesson: a section per question, each drawing
 //                      one of its variants (selection select="1"), SCORE the sum of the items'
+//                      (a lesson whose sheet asks no question has no test and no item)
 // Files in that order, lesson by lesson (questions, then students, as in moodle.xml); the same
 // seed gives the same bytes (present/stored_zip.h).
 #pragma once
