@@ -187,7 +187,7 @@ int main(int argc, char** argv) {
     worksheet
         ->add_option("--format", worksheet_options.format,
                      "what to write, comma-separated: html (sheets.html, key.html, PDFs), moodle (DIR/moodle.xml, "
-                     "Moodle XML questions); key.json always")
+                     "Moodle XML questions), qti (DIR/qti.zip, an IMS QTI 2.1 package); key.json always")
         ->capture_default_str();
     worksheet->footer(
         "Each student's values are drawn from the lesson's [[vary]] ranges and the engine answers\n"
@@ -195,7 +195,8 @@ int main(int argc, char** argv) {
         "sheets.html (one page per student: givens, questions, blanks), key.html (every student's\n"
         "values, answers and worked example), key.json (for scripts) and, when weasyprint is\n"
         "installed, sheets.pdf and key.pdf; with --format moodle also DIR/moodle.xml (a question\n"
-        "category per lesson question, a variant per student). Built beside DIR and renamed into\n"
+        "category per lesson question, a variant per student), with --format qti DIR/qti.zip (an\n"
+        "IMS QTI 2.1 package: an item per question and student). Built beside DIR and renamed into\n"
         "place when complete. Mark the answers with collide grade DIR/key.json ANSWERS.csv.\n"
         "Example: collide worksheet catch-up -o out/ws --students 30 --seed 7\n"
         "See docs/commands/worksheet.md.");

@@ -11,6 +11,7 @@
 #include "cli/signals.h"
 #include "cli/terminal.h"
 #include "present/moodle_xml.h"
+#include "present/qti_package.h"
 #include "present/staged_dir.h"
 #include "present/worksheets.h"
 #include "render/video.h"
@@ -45,14 +46,10 @@ std::vector<std::string> worksheet_formats(const std::string& text) {
     while (true) {
         const std::size_t comma = text.find(',', at);
         const std::string f = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
-        if (f == "qti")
-            throw InputError("", {}, "--format",
-                             "qti (an IMS QTI 2.1 package) is not written yet (issue 36); use html or moodle");
-        if (f != "html" && f != "moodle")
+        if (f != "html" && f != "moodle" && f != "qti")
             throw InputError("", {}, "--format",
                              "unknown format '" + one_line(f) +
-                                 "': expected html or moodle, "
-                                 "comma-separated (html,moodle)");
+                                 "': expected html, moodle or qti, comma-separated (html,moodle,qti)");
         if (std::find(out.begin(), out.end(), f) != out.end())
             throw InputError("", {}, "--format", "'" + f + "' is given twice");
         out.push_back(f);
@@ -78,6 +75,7 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
             const std::vector<std::string> formats = worksheet_formats(opt.format);
             const bool html = std::find(formats.begin(), formats.end(), "html") != formats.end();
             const bool moodle = std::find(formats.begin(), formats.end(), "moodle") != formats.end();
+            const bool qti = std::find(formats.begin(), formats.end(), "qti") != formats.end();
             const std::vector<Lesson> lessons = load_worksheet_lessons(opt.lessons);
             const cli::SignalGuard signals;  // (held until the staging directory is removed again)
             StagedDirectory staged(opt.out_dir, opt.force);
@@ -114,6 +112,8 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
             }
             // One file for every lesson: a category each (present/moodle_xml.h).
             if (moodle) write_text_file(tmp / "moodle.xml", moodle_xml(lessons, all, opt.seed));
+            // And one IMS QTI 2.1 package (present/qti_package.h).
+            if (qti) write_text_file(tmp / "qti.zip", qti_package(lessons, all, opt.seed));
             if (cli::stop_requested()) throw Interrupted(0);
             staged.commit();
             if (html && weasyprint.empty())
@@ -127,7 +127,7 @@ int run_worksheet(const WorksheetOptions& opt, std::ostream& out, std::ostream& 
                           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
             out << "wrote " << opt.students << " worksheets of " << ids << " to " << opt.out_dir
                 << (lessons.size() > 1 ? "/ID" : "") << " (" << list << (lessons.size() > 1 ? "; index.html" : "")
-                << (moodle ? "; moodle.xml" : "") << ") in " << secs << " s\n";
+                << (moodle ? "; moodle.xml" : "") << (qti ? "; qti.zip" : "") << ") in " << secs << " s\n";
             // Not an error (a sheet of the lesson's own numbers is still a sheet), but rarely meant:
             // said in the summary, where the teacher reads what was written.
             for (const Lesson& L : lessons)

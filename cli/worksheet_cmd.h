@@ -18,11 +18,12 @@ struct WorksheetOptions {
     int students = 30;                 // --students N, 1 to 1000
     std::uint64_t seed = 1;            // --seed S
     bool force = false;                // replace a DIR that is not empty
-    std::string format = "html";       // --format: html, moodle (DIR/moodle.xml), comma-separated
+    std::string format = "html";       // --format: html, moodle (DIR/moodle.xml), qti (DIR/qti.zip),
+                                       // comma-separated
 };
 
 // The formats of --format, each once, in the order given ("html,moodle" -> {"html", "moodle"}).
-// Throws InputError naming --format for an unknown or repeated one, or qti (not written yet).
+// Throws InputError naming --format for an unknown or repeated one.
 std::vector<std::string> worksheet_formats(const std::string& text);
 
 // Returns the exit code: 0 done, 2 bad input (nothing written), 1 any other failure.

@@ -126,6 +126,8 @@ std::string histogram_svg(const QuestionSummary& q, double tolerance) {
 
 }  // namespace
 
+std::string question_words(const KeyAnswer& answer) { return answer.text.empty() ? answer.quantity : answer.text; }
+
 double answer_ratio(const Mark& m) {
     if (!m.key || m.got.size() != m.key->value.size()) return std::numeric_limits<double>::quiet_NaN();
     double dot = 0, nn = 0;
@@ -144,6 +146,7 @@ std::vector<QuestionSummary> summarize_questions(const std::vector<Mark>& marks)
         QuestionSummary& q = by[m.question];
         q.question = m.question;
         if (m.key) {
+            q.words = question_words(*m.key);
             q.quantity = m.key->quantity;
             q.unit = m.key->unit;
         }
@@ -187,7 +190,11 @@ std::string grade_tables(const AnswerKey& key, const std::vector<Mark>& marks) {
         if (std::find(questions.begin(), questions.end(), m.question) == questions.end())
             questions.push_back(m.question);
     std::sort(questions.begin(), questions.end());
-    o << "Lesson " << key.lesson << ": 1 mark per question (within its tolerance).\n\nstudent";
+    const std::vector<QuestionSummary> summaries = summarize_questions(marks);
+    o << "Lesson " << key.lesson << ": 1 mark per question (within its tolerance).\n\n";
+    for (const QuestionSummary& q : summaries)
+        o << "Q" << q.question << "  " << q.words << (q.unit.empty() ? "" : " (" + q.unit + ")") << "\n";
+    o << "\nstudent";
     for (int q : questions) o << "  Q" << q;
     o << "  total\n";
     std::map<int, std::vector<const Mark*>> by;
@@ -217,9 +224,10 @@ std::string grade_tables(const AnswerKey& key, const std::vector<Mark>& marks) {
     if (!absent.empty())
         o << "Not marked: the key's student" << (absent.find(',') == std::string::npos ? " " : "s ") << absent
           << ", with no row in the answers.\n";
-    o << "\nquestion  quantity                       right  answered  most common wrong answer\n";
-    for (const QuestionSummary& q : summarize_questions(marks)) {
-        std::snprintf(buf, sizeof buf, "%8d  %-30s %5d  %8d  ", q.question, q.quantity.c_str(), q.right, q.answered);
+    o << "\nquestion  right  answered  most common wrong answer\n";
+    for (const QuestionSummary& q : summaries) {
+        std::snprintf(buf, sizeof buf, "%8s  %5d  %8d  ", ("Q" + std::to_string(q.question)).c_str(), q.right,
+                      q.answered);
         o << buf;
         if (q.common_count == 0) o << "-";
         else if (!q.common_slip.empty()) o << q.common_slip << " (" << q.common_count << ")";
@@ -266,20 +274,20 @@ std::string grade_report_html(const AnswerKey& key, const std::vector<Mark>& mar
     else {
         o << "<ul>\n";
         for (const QuestionSummary* q : hard) {
-            o << "<li><a href=\"#q" << q->question << "\">Question " << q->question << "</a> (" << escape(q->quantity)
+            o << "<li><a href=\"#q" << q->question << "\">Question " << q->question << "</a> (" << html::math(q->words)
               << "): " << q->right << " of " << q->answered << " right";
             if (!q->common_slip.empty()) o << "; most often " << escape(q->common_slip);
             o << "</li>\n";
         }
         o << "</ul>\n";
     }
-    o << "<h2>Per question</h2>\n<table>\n<tr><th>question</th><th>quantity</th><th>right</th><th>answered</th>"
+    o << "<h2>Per question</h2>\n<table>\n<tr><th colspan=\"2\">question</th><th>right</th><th>answered</th>"
          "<th>most common wrong answer</th></tr>\n";
     for (const QuestionSummary& q : qs) {
         o << "<tr" << (q.answered > 0 && 2 * q.right < q.answered ? " class=\"low\"" : "") << "><td class=\"num\">"
-          << q.question << "</td><td>" << escape(q.quantity) << " (" << escape(q.unit.empty() ? "count" : q.unit)
-          << ")</td><td class=\"num\">" << q.right << "</td><td class=\"num\">" << q.answered << " of " << q.students
-          << "</td><td>";
+          << q.question << "</td><td>" << html::math(q.words) << "&nbsp;("
+          << escape(q.unit.empty() ? "a count" : q.unit) << ")</td><td class=\"num\">" << q.right
+          << "</td><td class=\"num\">" << q.answered << " of " << q.students << "</td><td>";
         if (q.common_count == 0) o << "\u2013";
         else if (!q.common_slip.empty()) o << escape(q.common_slip) << " (" << q.common_count << ")";
         else o << sig(q.common_ratio, 2) << " \u00d7 the right value (" << q.common_count << "; no known slip)";
@@ -290,9 +298,10 @@ std::string grade_report_html(const AnswerKey& key, const std::vector<Mark>& mar
         double tol = 0.0;
         for (const Mark& m : marks)
             if (m.question == q.question && m.key) tol = m.key->tolerance;
-        o << "<div class=\"q\" id=\"q" << q.question << "\">\n<h3>Question " << q.question << ": " << escape(q.quantity)
-          << "</h3>\n<p><span class=\"right\">" << q.right << " right</span>, <span class=\"wrong\">"
-          << q.answered - q.right << " wrong</span>, " << q.students - q.answered << " not answered.";
+        o << "<div class=\"q\" id=\"q" << q.question << "\">\n<h3>Question " << q.question << ": "
+          << html::math(q.words) << "</h3>\n<p><span class=\"right\">" << q.right
+          << " right</span>, <span class=\"wrong\">" << q.answered - q.right << " wrong</span>, "
+          << q.students - q.answered << " not answered.";
         if (q.common_count > 0) {
             o << " The most common wrong answer: ";
             if (!q.common_slip.empty()) o << "<b>" << escape(q.common_slip) << "</b>";

@@ -1,5 +1,6 @@
 // `collide worksheet --format moodle` (docs/commands/worksheet.md, "Moodle"): the students'
-// sheets as Moodle XML questions, DIR/moodle.xml, for Moodle's question bank import.
+// sheets as Moodle XML questions, DIR/moodle.xml, for Moodle's question bank import. Each
+// question is present/platform_questions.h's (shared with the QTI package).
 //
 // A category per lesson ("$course$/top/Collide worksheets/TITLE (ID)"), under it a category per
 // question of the sheet ("Question K"), holding one question per student variant, so that a

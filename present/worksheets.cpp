@@ -325,6 +325,7 @@ std::string key_json(const Lesson& L, const std::vector<StudentSheet>& sheets, s
                 value = a.value;
             }
             answers.push_back({{"question", question_number(L, s.asked[k])},
+                               {"text", q.text},
                                {"quantity", quantity_name(*q.quantity)},
                                {"value", value},
                                {"unit", a.unit},

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Configures and builds Collide in ./build (Release, warnings as errors).
+# Configures and builds Collide in ./build (Release, warnings as errors), and installs the npm
+# packages the tests read QTI packages with (scripts/install-qti-reader.sh).
 # Extra arguments go to CMake, e.g. scripts/build.sh -DCOLLIDE_SANITIZE=ON -B build-asan
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -10,3 +11,5 @@ while [[ $# -gt 0 ]]; do
 done
 cmake -S . -B "$dir" -DCOLLIDE_WERROR=ON "${args[@]}" >/dev/null
 cmake --build "$dir" -j "$(nproc)"
+# The QTI reader of the qti tests (npm; tests/qti/): without it those tests fail, saying so.
+scripts/install-qti-reader.sh "$dir" || echo "build: the QTI reader is not installed: the qti tests will fail" >&2

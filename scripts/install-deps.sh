@@ -41,6 +41,7 @@ develop=(
   jupyter-nbconvert python3-ipykernel python3-matplotlib  # the example notebook, run in the tests
   emscripten node-acorn             # the WebAssembly module collide-engine.js (wasm/; acorn for em++'s optimizer)
   nodejs chromium                   # its tests: under Node and in headless Chromium (tests/wasm)
+  npm                               # the QTI reader of the qti tests (scripts/install-qti-reader.sh)
 )
 
 case ${1:-} in
@@ -51,6 +52,8 @@ esac
 
 missing=()
 for p in "${packages[@]}"; do
+  # npm: a nodejs of NodeSource's brings its own (and conflicts with Debian's package)
+  if [[ $p == npm ]] && command -v npm >/dev/null; then continue; fi
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [[ ${#missing[@]} -eq 0 ]]; then

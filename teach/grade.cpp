@@ -128,6 +128,10 @@ AnswerKey read_answer_key(const std::string& path) {
             if (!q.is_string() || !u.is_string()) throw InputError(path, {}, at + "unit", "expected strings");
             a.quantity = q.get<std::string>();
             a.unit = u.get<std::string>();
+            if (aj.contains("text")) {  // (not in a key written before it was)
+                if (!aj["text"].is_string()) throw InputError(path, {}, at + "text", "expected a string");
+                a.text = aj["text"].get<std::string>();
+            }
             a.tolerance = number_field(aj, "tolerance", path, at);
             const json& v = field(aj, "value", path, at);
             if (v.is_number()) {

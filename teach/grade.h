@@ -16,6 +16,8 @@ namespace collide {
 // One numeric question of one student's sheet, as key.json gives it.
 struct KeyAnswer {
     int question = 0;           // its number on the lesson page
+    std::string text;           // the question as asked ("What impulse J does B receive?"); "" in a
+                                // key written before key.json had it
     std::string quantity;       // "impulse"
     std::vector<double> value;  // one number, or a vector's 2 or 3 components
     bool is_vector = false;

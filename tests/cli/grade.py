@@ -107,6 +107,32 @@ check(any(line.split()[:1] == ["1"] and line.split()[-1] == "3/4" for line in r.
       f"student 1: 3/4 in\n{r.stdout}")
 html = open(os.path.join(report, "report.html")).read()
 check(html.count("<svg") == 4, "a histogram per question")
+# The questions in the key's words (key.json's "text"), in the tables and the report; the
+# CSV's columns as they were (a public format).
+for a in students[0]["answers"]:
+    check(a["text"].endswith("?"), f"question {a['question']}: words {a['text']!r} in key.json")
+    check(f"Q{a['question']}  {a['text']} ({a['unit']})\n" in r.stdout, f"question {a['question']} in words on stdout")
+    if "_" not in a["text"]:
+        words = a["text"].replace('"', "&quot;")
+        check(f"Question {a['question']}: {words}</h3>" in html,
+              f"question {a['question']} in words in the report")
+check(open(os.path.join(report, "marks.csv")).readline() ==
+      "student,question,quantity,answer,value,unit,right_value,mark,note,slip\n", "marks.csv's columns")
+# A key written before key.json had the words: the quantity names the question.
+old_key = json.load(open(key_path))
+for st in old_key["students"]:
+    for a in st["answers"]:
+        del a["text"]
+old_path = os.path.join(tmp, "old-key.json")
+json.dump(old_key, open(old_path, "w"))
+r_old, _ = grade(old_path, text)
+check(r_old.returncode == 0 and f"Q1  {students[0]['answers'][0]['quantity']} (" in r_old.stdout,
+      f"an older key: {r_old.returncode} {r_old.stdout!r}")
+old_key["students"][0]["answers"][0]["text"] = 3
+json.dump(old_key, open(old_path, "w"))
+r_bad, _ = grade(old_path, text)
+check(r_bad.returncode == 2 and "students[0].answers[0].text" in r_bad.stderr and "expected a string" in r_bad.stderr,
+      f"a text that is not a string: {r_bad.returncode} {r_bad.stderr!r}")
 check("the sign flipped" in html and "without the factor (1 + e)" in html, "the slips named in the report")
 
 # ---- 2D vectors: general-2d (question 1 the impulse, a vector) ----

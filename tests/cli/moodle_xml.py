@@ -142,7 +142,7 @@ check(any(q.get("type") == "multichoice" for qs in by_category.values() for q in
 check(any(q.get("type") == "essay" for qs in by_category.values() for q in qs), "an essay was checked")
 
 # --format refusals: exit 2, one line naming --format, nothing written.
-for bad in ["pdf", "html,html", "moodle,", "qti"]:
+for bad in ["pdf", "html,html", "moodle,", "qti,moodle,qti", "QTI"]:
     d = os.path.join(tmp, "bad")
     r = subprocess.run([collide, "worksheet", "catch-up", "-o", d, "--format", bad], capture_output=True, text=True,
                        env=env)

@@ -120,6 +120,7 @@ TEST(Worksheet, CatchUpAnswersAreTheClosedForms) {
                 << "student " << s["student"] << ", question " << i + 1;
         }
         EXPECT_EQ(s["answers"][0]["unit"], "N s");
+        EXPECT_EQ(s["answers"][0]["text"], "What impulse J does B receive?");  // the lesson's words
         EXPECT_EQ(s["answers"][1]["unit"], "m/s");
         EXPECT_EQ(s["answers"][3]["unit"], "J");
     }
