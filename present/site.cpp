@@ -6,6 +6,7 @@
 
 #include "assets/site.h"
 #include "present/site_pages.h"
+#include "present/try_it_answer.h"
 #include "present/site_plots.h"
 #include "render/png.h"
 #include "teach/html.h"
@@ -75,9 +76,19 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
                       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()});
     }
     for (std::size_t k = 0; k < built.size(); ++k) {
-        if (built[k].try_it)
+        if (built[k].try_it) {
+            // The panel's answer for the lesson's own values, as its module gives it: shown at
+            // once, before the module has started. A lesson it cannot answer gets none: its
+            // page waits for the module, which says why.
+            std::string first;
+            try {
+                first = try_it_answer_json(built[k].lesson.source, "{}", built[k].fps());
+            } catch (const std::exception&) {
+                first.clear();
+            }
             render::write_file_atomic((dir / built[k].lesson.id / "try-it-lesson.js").string(),
-                                      html::try_it_data_js(built[k].lesson, palette_json()));
+                                      html::try_it_data_js(built[k].lesson, palette_json(), first));
+        }
         render::write_file_atomic(
             (dir / built[k].lesson.id / "index.html").string(),
             lesson_page(built[k], k > 0 ? &built[k - 1] : nullptr, k + 1 < built.size() ? &built[k + 1] : nullptr));

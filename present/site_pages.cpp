@@ -228,7 +228,7 @@ struct Shown {
         std::ostringstream o;
         o << "<section class=\"animation noprint\">\n<h3>Animation</h3>\n";
         if (r().video == "animation.mp4") {
-            const double fps = r().t.size() > 1 && r().t[1] > r().t[0] ? 1.0 / (r().t[1] - r().t[0]) : 30.0;
+            const double fps = b.fps();
             // The page's own buttons play it: the browser's controls would cover the bottom of
             // the frame (the plots' axes, the last worked line).
             o << "<video class=\"lesson\" loop muted playsinline preload=\"metadata\" data-fps=\""
@@ -437,10 +437,7 @@ std::string lesson_page(const SitePage& b, const SitePage* prev, const SitePage*
         // Without what-if questions it holds only the panels, which do not print: nor does it.
         o << "<section class=\"what-if" << (what_if.empty() ? " noprint" : "") << "\">\n<h2>What if</h2>\n";
         if (!what_if.empty()) o << questions_html(L, r.answers, what_if);
-        if (b.try_it) {
-            const double fps = r.t.size() > 1 && r.t[1] > r.t[0] ? 1.0 / (r.t[1] - r.t[0]) : 30.0;
-            o << html::try_it_html(L, fps, "../");
-        }
+        if (b.try_it) o << html::try_it_html(L, b.fps(), "../");
         if (r.penalty) o << "<div class=\"penalty noprint\">\n" << penalty_html(*r.penalty) << "</div>\n";
         o << "</section>\n";
     }

@@ -23,6 +23,10 @@ struct SitePage {
     int variants_width = 0;          // of variants.png
     // "Check yourself"'s other numbers (teach/check_variant.h); none for a lesson without [[vary]].
     std::optional<CheckVariant> check;
+    // The page's frame rate: its render's (frames per simulated second; 30 with fewer than two).
+    double fps() const {
+        return report.t.size() > 1 && report.t[1] > report.t[0] ? 1.0 / (report.t[1] - report.t[0]) : 30.0;
+    }
 };
 
 // ID/index.html, the student's page: goals, the set-up, predictions, the figures, animation and

@@ -95,9 +95,12 @@ std::string number_attr(double x);
 // A query string's name as a URL writes it: every byte but letters, digits and -_.~ as %XX
 // ("A (e=0.1).mass" -> "A%20%28e%3D0.1%29.mass"), as the panel's URLSearchParams reads it back.
 std::string percent_encoded(const std::string& text);
-// try-it-lesson.js: the lesson's file as text (the engine reads it as `collide` does) and the
-// figures' colours (`palette`, a JSON object: render/style.h), as `window.collideTryIt`. A
-// script rather than text in the page: a page opened from file:// cannot fetch a file.
-std::string try_it_data_js(const Lesson& lesson, const std::string& palette);
+// try-it-lesson.js: the lesson's file as text (the engine reads it as `collide` does), the
+// figures' colours (`palette`, a JSON object: render/style.h) and `first`, the panel's answer
+// for the lesson's own values (present/try_it_answer.h, computed by the command: the page shows
+// it before its module has started; empty: null, the page waits for the module), as
+// `window.collideTryIt`. A script rather than text in the page: a page opened from file://
+// cannot fetch a file.
+std::string try_it_data_js(const Lesson& lesson, const std::string& palette, const std::string& first);
 
 }  // namespace collide::html

@@ -174,10 +174,12 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     return o.str();
 }
 
-std::string try_it_data_js(const Lesson& L, const std::string& palette) {
-    return "// The Try-it panel's data (teach/html.h try_it_data_js): the lesson's file and the figures' colours.\n"
+std::string try_it_data_js(const Lesson& L, const std::string& palette, const std::string& first) {
+    return "// The Try-it panel's data (teach/html.h try_it_data_js): the lesson's file, the figures' colours\n"
+           "// and the engine's answer for the lesson's own values.\n"
            "window.collideTryIt = {\"lesson\": " +
-           nlohmann::json(L.source).dump() + ",\n\"palette\": " + palette + "};\n";
+           nlohmann::json(L.source).dump() + ",\n\"palette\": " + palette +
+           ",\n\"first\": " + (first.empty() ? std::string("null") : first) + "};\n";
 }
 
 }  // namespace collide::html

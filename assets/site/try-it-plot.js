@@ -104,6 +104,10 @@
   function show() {
     if (!spec || !lab.run) return;
     if (!built) { fill(); built = true; }  // the first answer: the quantities on offer are known
+    if (lab.run.precomputed) {  // the command's answer at the page's load: without this plot
+      out.innerHTML = '<p class="note">Drawn by the engine in this page when it has started.</p>';
+      return;
+    }
     var p = lab.run.plots[lab.run.plots.length - 1];
     var open = out.querySelector('details.plot-data');
     out.innerHTML = '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs.</figcaption>' +

@@ -148,6 +148,7 @@
   }
 
   function answer() {
+    if (!engine) return;  // the module has not started: it answers when it has (below)
     var t0 = performance.now(), next;
     try {
       next = JSON.parse(engine.lesson(text + freePlot.extraText(), values, fps));
@@ -158,14 +159,19 @@
     }
     var ms = performance.now() - t0;
     delete panel.dataset.error;
-    run = next;
     panel.dataset.answerMs = ms.toFixed(1);
     panel.dataset.answers = ++answers;
-    followAddress();
     var changed = Object.keys(values);
     status.textContent = (changed.length ? 'With ' + changed.map(function (k) { return k + ' = ' + num(values[k]); }).join(', ')
                                           : 'With the lesson\u2019s own values') +
                          ': answered by the engine in ' + (ms < 1 ? 'under 1' : ms.toFixed(0)) + ' ms.';
+    show(next, t0);
+  }
+
+  // Shows a run: the engine's answer, or at the page's load the command's (window.collideTryIt.first).
+  function show(next, t0) {
+    run = next;
+    followAddress();
     // While a handle is dragged the picture keeps its scale, so that what is dragged stays under
     // the pointer; it is fitted to the new run when the drag ends.
     if (!handles.dragging() || !lab.view) picture.prepare();
@@ -179,7 +185,7 @@
     // (for scripts/browser-speed.js: the whole answer shown, and when the page first showed one,
     // in ms from the page's navigation)
     panel.dataset.shownMs = (performance.now() - t0).toFixed(1);
-    if (answers === 1) panel.dataset.firstShownAt = performance.now().toFixed(1);
+    if (!panel.dataset.firstShownAt) panel.dataset.firstShownAt = performance.now().toFixed(1);
   }
 
   // ---- The lesson's [[plot]]s of this run: the engine's SVG, alt text and folded table ----
@@ -187,7 +193,8 @@
     if (!lessonPlots) return;
     var open = {};  // a table the reader unfolded stays unfolded when the inputs move
     lessonPlots.querySelectorAll('details.plot-data').forEach(function (d, k) { if (d.open) open[k] = true; });
-    var h = '', own = run.plots.slice(0, run.plots.length - freePlot.extra());  // the last: the panel's plot
+    // (the last: the panel's plot; the command's answer at the page's load has none)
+    var h = '', own = run.plots.slice(0, run.plots.length - (run.precomputed ? 0 : freePlot.extra()));
     own.forEach(function (p) {
       h += '<section class="lesson-plot" data-file="' + escapeHtml(p.file) + '"><h3>' + escapeHtml(p.title) + '</h3>' +
            '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs. ' +
@@ -314,6 +321,17 @@
       }
     });
   });
+
+  // The lesson's own values, as the page opens: the answer the command wrote into the page's data
+  // (present/try_it_answer.h, the module's function run by `collide material`), shown at once;
+  // the engine in the page answers again when it has started, and every change after.
+  var first = window.collideTryIt.first;
+  if (first && Object.keys(values).length === 0) {
+    first.precomputed = true;
+    status.textContent = 'With the lesson\u2019s own values: the answer collide material wrote into this page ' +
+                         '(the same engine, run by the command). The engine in this page is starting\u2026';
+    show(first, performance.now());
+  }
 
   CollideEngine().then(function (m) {
     engine = m;

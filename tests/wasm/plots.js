@@ -4,6 +4,8 @@
 // rate (data-fps), must give
 //   (a) each plot's SVG byte-equal to the page's plot-K.svg, its alt text the page's <img alt>,
 //       and its folded table (data_html) the page's;
+//   (d) the answer the command wrote into the page for the lesson's own values (try-it-lesson.js
+//       `first`, shown before the module has started) is the module's, to the last bit;
 // and with other inputs, numbers that follow from the closed forms, not from copied output:
 //   (b) bouncing-ball with e = 0.4 (scene.restitution): bounce k (from 1) comes
 //       2 e^(k-1) v0 / g after the one before (v0 = sqrt(2 g H), H = 1 m), so every ratio is
@@ -47,7 +49,7 @@ function page(id) {
   vm.runInNewContext(fs.readFileSync(path.join(dir, 'try-it-lesson.js'), 'utf8'), sandbox);
   const html = fs.readFileSync(path.join(dir, 'index.html'), 'utf8');
   const fps = Number((html.match(/id="try-it"[^>]*data-fps="([^"]*)"/) || [])[1]);
-  return { dir, html, text: sandbox.window.collideTryIt.lesson, fps };
+  return { dir, html, text: sandbox.window.collideTryIt.lesson, fps, first: sandbox.window.collideTryIt.first };
 }
 
 require(path.resolve(modulePath))().then(m => {
@@ -59,6 +61,11 @@ require(path.resolve(modulePath))().then(m => {
     if (!(p.fps > 0) || typeof p.text !== 'string') { fail(`${id}: the page has no lesson text or frame rate`); continue; }
     const a = JSON.parse(m.lesson(p.text, {}, p.fps));
     answers[id] = a;
+    // (d) the answer the command wrote into the page (shown before the module has started) is
+    // the module's, to the last bit.
+    if (JSON.stringify(p.first) !== JSON.stringify(a))
+      fail(`${id}: the page's first answer (the command's) differs from the module's`);
+    else console.log(`ok   ${id}: the page's first answer (the command's) is the module's, to the last bit`);
     const files = fs.readdirSync(p.dir).filter(f => /^plot-\d+\.svg$/.test(f)).sort();
     if (!Array.isArray(a.plots) || a.plots.length !== files.length || files.length === 0) {
       fail(`${id}: the module gives ${a.plots && a.plots.length} plots, the page has ${files.length}`);
