@@ -9,6 +9,13 @@ import { join } from 'node:path';
 
 export function reader(dir) {
   if (!existsSync(join(dir, 'node_modules', '@citolab', 'qti-convert'))) {
+    // Set-up tried and npm could not install it: skipped (ctest's SKIP_RETURN_CODE 77), saying why.
+    const why = join(dir, 'not-installed.txt');
+    if (existsSync(why)) {
+      console.error('SKIPPED: the QTI reader could not be installed at set-up (scripts/install-qti-reader.sh needs ' +
+                    'the npm registry once):\n' + readFileSync(why, 'utf8'));
+      process.exit(77);
+    }
     console.error(`the QTI reader is not installed in ${dir}: run scripts/install-qti-reader.sh BUILD_DIR ` +
                   '(scripts/build.sh does; it needs npm and, the first time, the npm registry)');
     process.exit(1);
