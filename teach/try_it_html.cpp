@@ -165,9 +165,10 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";
-    std::vector<std::string> scripts = {"collide-engine.js", "try-it-picture.js", "try-it-drag.js", "try-it-plot.js",
-                                        "try-it.js"};
-    if (d == 3) scripts.insert(scripts.begin() + 1, {"three.min.js", "try-it-3d.js"});  // Debian's libjs-three
+    // (collide-engine.js is not among them: try-it.js loads it once the page's first answer is
+    // shown, so that its 2 MB do not hold the page up)
+    std::vector<std::string> scripts = {"try-it-picture.js", "try-it-drag.js", "try-it-plot.js", "try-it.js"};
+    if (d == 3) scripts.insert(scripts.begin(), {"three.min.js", "try-it-3d.js"});  // Debian's libjs-three
     o << "<script src=\"try-it-lesson.js\"></script>\n";
     for (const std::string& js : scripts) o << "<script src=\"" << root << js << "\"></script>\n";
     o << "</section>\n";

@@ -17,13 +17,14 @@
   var status = panel.querySelector('.tryit-status');
   var parts = window.collideTryItParts || {};
   var d3 = panel.dataset.dimension === '3';
-  if (typeof CollideEngine !== 'function' || !window.collideTryIt || !parts.picture || !parts.handles || !parts.plot ||
-      (d3 && !parts.view3d)) {
-    status.textContent = 'The engine (collide-engine.js), the lesson (try-it-lesson.js) or the panel\u2019s scripts ' +
-                         '(try-it-picture.js, try-it-drag.js, try-it-plot.js' + (d3 ? ', try-it-3d.js' : '') +
-                         ') did not load: the panel needs them beside the pages.';
+  if (!window.collideTryIt || !parts.picture || !parts.handles || !parts.plot || (d3 && !parts.view3d)) {
+    status.textContent = 'The lesson (try-it-lesson.js) or the panel\u2019s scripts (try-it-picture.js, try-it-drag.js, ' +
+                         'try-it-plot.js' + (d3 ? ', try-it-3d.js' : '') + ') did not load: the panel needs them beside ' +
+                         'the pages.';
     return;
   }
+  // The engine, beside this script: loaded once the page's first answer is shown (below).
+  var engineSrc = document.currentScript.src.replace(/try-it\.js(\?.*)?$/, 'collide-engine.js');
   var text = window.collideTryIt.lesson;  // the lesson's file, as `collide` reads it
   var palette = window.collideTryIt.palette;
   var fps = parseFloat(panel.dataset.fps) || 30;
@@ -333,12 +334,21 @@
     show(first, performance.now());
   }
 
-  CollideEngine().then(function (m) {
-    engine = m;
-    panel.dataset.engineAt = performance.now().toFixed(1);
-    answer();
-    if (window.location.hash === '#try-it') panel.scrollIntoView();
-  }, function (e) {
-    status.textContent = 'The engine did not start: ' + e;
-  });
+  if (window.location.hash === '#try-it') panel.scrollIntoView();
+  var script = document.createElement('script');
+  script.src = engineSrc;
+  script.onerror = function () {
+    status.textContent = 'The engine (collide-engine.js) did not load: the panel needs it beside the pages.';
+  };
+  script.onload = function () {
+    if (typeof CollideEngine !== 'function') { script.onerror(); return; }
+    CollideEngine().then(function (m) {
+      engine = m;
+      panel.dataset.engineAt = performance.now().toFixed(1);
+      answer();
+    }, function (e) {
+      status.textContent = 'The engine did not start: ' + e;
+    });
+  };
+  document.body.appendChild(script);
 })();
