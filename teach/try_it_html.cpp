@@ -135,7 +135,7 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     // it; try-it-3d.js), over it the handles a drag or the keyboard sets inputs with (try-it.js
     // puts them in: a focusable element at each handle, the picture draws them), what can be
     // dragged, and the last value a drag or a key set (read out by screen readers).
-    o << "<div class=\"tryit-stage\">\n"
+    o << (d == 3 ? "<div class=\"tryit-stage tryit-stage-3d\">\n" : "<div class=\"tryit-stage\">\n")
       << (d == 3 ? "<canvas class=\"tryit-scene3d\" width=\"960\" height=\"540\" aria-hidden=\"true\"></canvas>\n" : "")
       << "<canvas class=\"tryit-scene\" width=\"960\" height=\"" << std::array{0, 300, 480, 540}.at(d)
       << "\" role=\"img\" aria-label=\"The run with these inputs\"></canvas>\n<div class=\"tryit-handles\"></div>\n</div>\n";

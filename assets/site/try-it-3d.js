@@ -338,7 +338,7 @@
   };
   // `text` in lines of at most `width` pixels (the labels' font).
   function wrap(ctx, text, width) {
-    ctx.font = '15px "DejaVu Sans", Arial, sans-serif';
+    flat.useFont(ctx);
     var lines = [''];
     text.split(' ').forEach(function (word) {
       var line = lines[lines.length - 1], next = line ? line + ' ' + word : word;

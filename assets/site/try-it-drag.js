@@ -118,7 +118,7 @@
         if (!list.length || b.kind === 'half_plane') return;
         var v = list[0], centre = centreOf(b), r = d === 1 ? (blockBox(b, st.bodies[b.name]).x1 - centre[0]) : extentOf(b) * lab.view.scale;
         var ctx = scene.getContext('2d');
-        ctx.font = '15px "DejaVu Sans", Arial, sans-serif';  // the name's label, right of the centre (drawBody)
+        lab.picture.useFont(ctx);  // the name's label, right of the centre (drawBody)
         var right = Math.max(r + 26, 8 + ctx.measureText(b.name).width + 18);
         var len = 100, x = centre[0] + (centre[0] < middle ? -(r + 26) : right), y0 = centre[1] + len / 2;
         var f = (current(v) - v.lo) / (v.hi - v.lo);

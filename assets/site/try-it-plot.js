@@ -105,20 +105,21 @@
     if (!spec || !lab.run) return;
     if (!built) { fill(); built = true; }  // the first answer: the quantities on offer are known
     if (lab.run.precomputed) {  // the command's answer at the page's load: without this plot
-      out.innerHTML = '<p class="note">Drawn by the engine in this page when it has started.</p>';
+      lab.setHtml(out, '<p class="note">Drawn by the engine in this page when it has started.</p>');
       return;
     }
     var p = lab.run.plots[lab.run.plots.length - 1];
     var open = out.querySelector('details.plot-data');
-    out.innerHTML = '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs.</figcaption>' +
-                    '</figure>' + p.data_html;
-    var svg = out.querySelector('svg');
-    if (svg) svg.setAttribute('aria-label', p.alt);
-    if (open && open.open) out.querySelector('details.plot-data').open = true;
+    if (lab.setHtml(out, '<figure>' + p.svg + '<figcaption>From the engine in this page: the run with these inputs.' +
+                         '</figcaption></figure>' + p.data_html)) {
+      var svg = out.querySelector('svg');
+      if (svg) svg.setAttribute('aria-label', p.alt);
+      if (open && open.open) out.querySelector('details.plot-data').open = true;
+    }
     toml.textContent = plotToml();
-    // (for the browser test: what is plotted, and the engine's numbers behind it)
-    lab.panel.dataset.freePlot = JSON.stringify({per: spec.per, x: spec.x, y: spec.y, fit: spec.fit || null,
-                                                 series: p.series.map(function (r) { return {name: r.name, x: r.x, y: r.y}; })});
+    // (for the browser test: what is plotted, and the engine's numbers behind it; a property of
+    // the panel, not made into text at every answer)
+    lab.panel.collideFreePlot = {per: spec.per, x: spec.x, y: spec.y, fit: spec.fit || null, series: p.series};
   }
 
   // A lesson's own plot, opened here to change its axes.

@@ -38,6 +38,7 @@
   var values = {};  // the inputs changed from the lesson's own values, by name ("A.mass")
   var engine = null, run = null, frame = 0, playing = false, rate = 1, clock = 0, last = null, pending = false;
   var answers = 0;  // how many answers the engine gave (panel.dataset.answers: the browser test waits on it)
+  var times = {};  // where the next answer's time goes (show: panel.collideTimes)
 
   // ---- Numbers as the site writes them: 4 significant figures, a true minus sign ----
   function num(x) {
@@ -52,6 +53,41 @@
     return String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
   }
 
+  // ---- Putting an answer's HTML in: only where it changed, a folded table when it is opened ----
+  // (Each answer brings the worked example, the numbers and the plots' SVG and tables anew; the
+  // browser's style and layout of them took longer than the engine. A part whose HTML is the
+  // same is left as it is, and a folded table, hundreds of cells no one sees until it is
+  // unfolded, goes in when the reader unfolds it.) Returns whether the element changed.
+  var FOLD = '<details class="plot-data">';
+  function setHtml(el, html) {
+    if (el.collideHtml === html) return false;
+    el.collideHtml = html;
+    var bodies = [], out = '', at = 0;
+    for (;;) {
+      var start = html.indexOf(FOLD, at);
+      var head = start < 0 ? -1 : html.indexOf('<table', start);  // (its summary and words stay)
+      var end = head < 0 ? -1 : html.indexOf('</details>', head);
+      if (end < 0) break;
+      out += html.slice(at, head);
+      bodies.push(html.slice(head, end));
+      at = end;
+    }
+    el.innerHTML = out + html.slice(at);
+    if (bodies.length) {
+      el.querySelectorAll('details.plot-data').forEach(function (d, k) {
+        var body = bodies[k];
+        function unfold() {
+          if (!d.open || body === null) return;
+          d.insertAdjacentHTML('beforeend', body);
+          body = null;
+          d.removeEventListener('toggle', unfold);
+        }
+        d.addEventListener('toggle', unfold);
+      });
+    }
+    return true;
+  }
+
   // ---- The inputs: the lesson's values, a query string's (?A.mass=3), the sliders' ----
   function valueOf(input) {
     var name = input.dataset.name;
@@ -64,7 +100,10 @@
   var query = new URLSearchParams(window.location.search);
   // ?show=try-it: the panel alone on the page (the browser test's screenshots: a headless
   // screenshot shows the top of a page, wherever it is scrolled to).
-  if (query.get('show') === 'try-it') document.body.classList.add('tryit-only');
+  if (query.get('show') === 'try-it') {
+    document.body.classList.add('tryit-only');
+    for (var up = panel.parentNode; up && up !== document.body; up = up.parentNode) up.classList.add('tryit-path');
+  }
   // The address's inputs (?A.mass=3, ?ball.v.x=5): each sets its slider; what cannot be done
   // as asked is said in a line on the page (.tryit-query), never ignored without a word.
   var queryLines = panel.querySelector('.tryit-query');
@@ -120,8 +159,15 @@
     });
   });
   // The address follows the inputs (?A.v.x=2.25: a link to this run), the lesson's own values
-  // left out. A browser that refuses to change a file:// address keeps the one it has.
+  // left out, once they rest for 50 ms (history.replaceState took as long as the engine's answer
+  // when called at every move of a slider). A browser that refuses to change a file:// address
+  // keeps the one it has.
+  var addressTimer = null;
   function followAddress() {
+    if (addressTimer !== null) window.clearTimeout(addressTimer);
+    addressTimer = window.setTimeout(function () { addressTimer = null; setAddress(); }, 50);
+  }
+  function setAddress() {
     try {
       var q = new URLSearchParams(window.location.search);
       inputs.forEach(function (input) {
@@ -150,9 +196,11 @@
 
   function answer() {
     if (!engine) return;  // the module has not started: it answers when it has (below)
-    var t0 = performance.now(), next;
+    var t0 = performance.now(), next, reply;
     try {
-      next = JSON.parse(engine.lesson(text + freePlot.extraText(), values, fps));
+      reply = engine.lesson(text + freePlot.extraText(), values, fps);
+      times.engine = performance.now() - t0;
+      next = JSON.parse(reply);
     } catch (e) {
       status.textContent = 'The engine refuses these values: ' + e.message;
       panel.dataset.error = e.message;
@@ -171,6 +219,9 @@
 
   // Shows a run: the engine's answer, or at the page's load the command's (window.collideTryIt.first).
   function show(next, t0) {
+    var t = performance.now();
+    function took(stage) { var now = performance.now(); times[stage] = now - t; t = now; }
+    times.parse = t - t0 - (times.engine || 0);
     run = next;
     followAddress();
     // While a handle is dragged the picture keeps its scale, so that what is dragged stays under
@@ -178,14 +229,28 @@
     if (!handles.dragging() || !lab.view) picture.prepare();
     handles.make();
     frame = Math.min(frame, run.states.length - 1);
+    took('prepare');
     showNumbers();
-    worked.innerHTML = run.worked ? run.worked.html : '<p>No collision in this run.</p>';
+    took('numbers');
+    setHtml(worked, run.worked ? run.worked.html : '<p>No collision in this run.</p>');
+    took('worked');
     showPlots();
+    took('plots');
     freePlot.show();
+    took('free');
     draw();
+    took('picture');
     // (for scripts/browser-speed.js: the whole answer shown, and when the page first showed one,
-    // in ms from the page's navigation)
+    // in ms from the page's navigation; panel.collideTimes: the last answer's stages, ms)
     panel.dataset.shownMs = (performance.now() - t0).toFixed(1);
+    panel.collideTimes = times;
+    // ... and painted: the browser's style, layout and paint of what changed, after this task
+    // (the next animation frame's callbacks run before its paint; a task queued there runs after)
+    var painted = times;
+    window.requestAnimationFrame(function () {
+      window.setTimeout(function () { painted.painted = performance.now() - t0; panel.dataset.paintedMs = painted.painted.toFixed(1); }, 0);
+    });
+    times = {};
     if (!panel.dataset.firstShownAt) panel.dataset.firstShownAt = performance.now().toFixed(1);
   }
 
@@ -202,7 +267,7 @@
            '<button type="button" class="tryit-open-plot">Change its axes</button></figcaption></figure>' +
            p.data_html + '</section>';
     });
-    lessonPlots.innerHTML = h;
+    if (!setHtml(lessonPlots, h)) return;
     lessonPlots.querySelectorAll('section.lesson-plot').forEach(function (section, k) {
       var svg = section.querySelector('svg');
       if (svg) svg.setAttribute('aria-label', run.plots[k].alt);  // what it shows, as the page's alt text
@@ -216,7 +281,7 @@
   function showNumbers() {
     var w = run.worked;
     if (!w) {
-      numbers.innerHTML = '<p>No collision in this run: change the inputs.</p>';
+      setHtml(numbers, '<p>No collision in this run: change the inputs.</p>');
       return;
     }
     // The run's numbers: where other contacts act at the same instant (a tower, a row of
@@ -264,12 +329,12 @@
       });
       h += '</table>';
     }
-    numbers.innerHTML = h;
+    setHtml(numbers, h);
   }
 
   // ---- What the parts share: the panel, its number format, the state (read-only to them) ----
   var lab = {panel: panel, scene: scene, plot: plot, palette: palette, byName: byName, num: num, vec: vec,
-             escapeHtml: escapeHtml,
+             escapeHtml: escapeHtml, setHtml: setHtml,
              valueOf: valueOf, showValue: showValue, request: request, draw: draw, view: null, named: null};
   Object.defineProperty(lab, 'run', {get: function () { return run; }});
   Object.defineProperty(lab, 'frame', {get: function () { return frame; }});

@@ -27,7 +27,10 @@ const cdp = require('./cdp.js')(collide, chromium, work);
 const check = cdp.check;
 
 // The panel's plot: what it plots and the engine's numbers behind it.
-const plotted = page => page.eval(`JSON.parse(document.getElementById('try-it').dataset.freePlot || 'null')`);
+const plotted = page => page.eval(`(function (f) {
+  return f ? {per: f.per, x: f.x, y: f.y, fit: f.fit,
+              series: f.series.map(function (r) { return {name: r.name, x: r.x, y: r.y}; })} : null;
+})(document.getElementById('try-it').collideFreePlot)`);
 // Sets the select `name` of the plot's form to `value` and sends the change a hand would.
 async function choose(page, name, value) {
   const ok = await page.eval(`(function () {
@@ -92,6 +95,9 @@ async function main() {
           'bouncing-ball: the intervals plot opened with its per, y and fit: ' + JSON.stringify([p.per, p.x, p.y, p.fit]));
     check(/Opened from the lesson’s plot “Time between one bounce and the next”: the collisions of ball and floor; fitted with a ratio/.test(from),
           'bouncing-ball: it says what it carries: ' + from);
+    // (the table's rows go in when it is unfolded, as a reader unfolds it)
+    await page.eval(`document.querySelectorAll('.tryit-lesson-plots section')[1].querySelector('details.plot-data').open = true`);
+    await cdp.sleep(100);
     const lessonSeries = await page.eval(`(function () {
       var rows = document.querySelectorAll('.tryit-lesson-plots section')[1].querySelectorAll('details.plot-data tr');
       return rows.length; })()`);
