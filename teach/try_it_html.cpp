@@ -65,14 +65,19 @@ std::string vary_label(const LessonVary& v) {
 
 // A number as an HTML attribute: the shortest decimal that reads back as the same double
 // ("0.1", not "0.10000000000000001": a browser would take the longer one at its word, and a
-// slider from 0 to 1 in such steps would stop at 0.9).
+// slider from 0 to 1 in such steps would stop at 0.9), without an exponent where one of 17
+// digits or fewer does without ("30", not "3e+01"; a page's address shows these values).
 std::string number_attr(double x) {
+    std::string shortest;
     for (int precision = 1; precision <= 17; ++precision) {
         std::ostringstream o;
         o.precision(precision);
         o << x;
-        if (std::stod(o.str()) == x) return o.str();
+        if (std::stod(o.str()) != x) continue;
+        if (o.str().find('e') == std::string::npos) return o.str();
+        if (shortest.empty()) shortest = o.str();
     }
+    if (!shortest.empty()) return shortest;
     std::ostringstream o;
     o.precision(17);
     o << x;
