@@ -44,14 +44,8 @@ void simulate_one_second(benchmark::State& state, const Scene& scene, const comp
     for (const SceneBody& b : scene.bodies) start.push_back(b.body2);
     const double e0 = energy(start, scene, potential);
     std::optional<compare::Box2DWorld> world;
-    for (auto _ : state) {
-        state.PauseTiming();
-        world.reset();
-        world.emplace(scene, settings);
-        state.ResumeTiming();
-        world->advance_to(1.0, nullptr);
-        benchmark::ClobberMemory();
-    }
+    bench::time_fresh_worlds(
+        state, &world, [](compare::Box2DWorld& w) { w.advance_to(1.0, nullptr); }, scene, settings);
     if (world) {
         state.counters["steps"] = static_cast<double>(world->steps());
         state.counters["energy_drift"] = (energy(world->bodies(), scene, potential) - e0) / e0;
@@ -85,33 +79,13 @@ void pyramid20_awake(benchmark::State& state) {
     simulate_one_second(state, scenes::pyramid({}), at(60.0, false), true);
 }
 
-// The bin (the same seed as world2d/bin/N): a fresh world run through one second in 60 frames
-// (bench/settling.h; Box2D's fixed steps are the same as in one advance_to(1.0)), then the
-// settling counters from the last iteration's world and from one more, untimed run of the same
-// frames.
+// The bin (the same seed as world2d/bin/N), through bench/settling.h.
 void simulate_bin(benchmark::State& state, double hz) {
     scenes::BinSpec b;
     b.n = static_cast<int>(state.range(0));
     b.seed = 2024;
-    const Scene scene = scenes::bin(2, b);
-    const compare::Box2DSettings settings = at(hz);
-    std::optional<compare::Box2DWorld> world;
-    for (auto _ : state) {
-        state.PauseTiming();
-        world.reset();
-        world.emplace(scene, settings);
-        state.ResumeTiming();
-        bench::run_frames([&](double t) { world->advance_to(t, nullptr); });
-        benchmark::ClobberMemory();
-    }
-    if (!world) return;
-    state.counters["steps"] = static_cast<double>(world->steps());
-    compare::Box2DWorld framed(scene, settings);
-    const double deepest = bench::deepest_overlap_over_frames(scene, [&](double t) {
-        framed.advance_to(t, nullptr);
-        return framed.bodies();
-    });
-    bench::settling_counters(state, scene, world->bodies(), deepest);
+    bench::simulate_settling<compare::Box2DWorld>(state, scenes::bin(2, b), at(hz),
+                                                  [](compare::Box2DWorld& w, double t) { w.advance_to(t, nullptr); });
 }
 void bin600(benchmark::State& state) { simulate_bin(state, 600.0); }
 void bin60(benchmark::State& state) { simulate_bin(state, 60.0); }

@@ -12,8 +12,6 @@
 // world with the timer paused. Counters: "steps", and "penetration_mm", "penetration_max_mm"
 // and "resting_speed" (bench/settling.h: measured with collide's narrow phase on the poses
 // Bullet ends with, as for collide's world). Benchmarks measure; they assert nothing.
-#include <optional>
-
 #include <benchmark/benchmark.h>
 
 #include "bench/settling.h"
@@ -24,28 +22,10 @@ namespace {
 
 using namespace collide;
 
-// Timed: a fresh world run through one second in 60 frames (bench/settling.h; Bullet's fixed
-// steps are the same as in one advance_to(1.0)). Then the settling counters from the last
-// iteration's world and from one more, untimed run of the same frames.
-void simulate_settling(benchmark::State& state, const Scene& scene) {
-    const compare::BulletSettings settings;  // 600 Hz
-    std::optional<compare::BulletWorld> world;
-    for (auto _ : state) {
-        state.PauseTiming();
-        world.reset();
-        world.emplace(scene, settings);
-        state.ResumeTiming();
-        bench::run_frames([&](double t) { world->advance_to(t); });
-        benchmark::ClobberMemory();
-    }
-    if (!world) return;
-    state.counters["steps"] = static_cast<double>(world->steps());
-    compare::BulletWorld framed(scene, settings);
-    const double deepest = bench::deepest_overlap_over_frames(scene, [&](double t) {
-        framed.advance_to(t);
-        return framed.bodies();
-    });
-    bench::settling_counters(state, scene, world->bodies(), deepest);
+// Bullet's world at its default 600 Hz (compare::BulletSettings), through bench/settling.h.
+void bullet_settling(benchmark::State& state, const Scene& scene) {
+    bench::simulate_settling<compare::BulletWorld>(state, scene, compare::BulletSettings(),
+                                                   [](compare::BulletWorld& w, double t) { w.advance_to(t); });
 }
 
 // The same seed as world3d/bin/N.
@@ -53,13 +33,13 @@ void bin(benchmark::State& state) {
     scenes::BinSpec b;
     b.n = static_cast<int>(state.range(0));
     b.seed = 2024;
-    simulate_settling(state, scenes::bin(3, b));
+    bullet_settling(state, scenes::bin(3, b));
 }
 
 void tower(benchmark::State& state) {
     scenes::TowerSpec t;
     t.levels = static_cast<int>(state.range(0));
-    simulate_settling(state, scenes::tower3d(t));
+    bullet_settling(state, scenes::tower3d(t));
 }
 
 [[maybe_unused]] const bool registered = [] {

@@ -87,7 +87,7 @@ render::RenderSettings settings(int w, int h, bool aa, bool view3d, bool region 
     return s;
 }
 
-void end_to_end(benchmark::State& state, const Run& run, int w, int h, bool aa, bool view3d, bool region = true) {
+void end_to_end(benchmark::State& state, const Run& run, int w, int h, bool aa, bool view3d, bool region) {
     render::Renderer renderer(context(), run.scene, settings(w, h, aa, view3d, region));
     renderer.prepare(run.frames, run.impacts);
     const fs::path dir = fs::temp_directory_path() / ("collide-bench-" + std::to_string(::getpid()));
@@ -134,40 +134,32 @@ void encode_only(benchmark::State& state, int w, int h) {
     state.counters["png_kB"] = static_cast<double>(bytes) / static_cast<double>(k) / 1000.0;
 }
 
-}  // namespace
+// Every benchmark: kFrames frames, timed on the wall clock (the encoder thread works beside the
+// timed one).
+void per_frame(benchmark::internal::Benchmark* b) {
+    b->Iterations(kFrames)->Unit(benchmark::kMillisecond)->UseRealTime();
+}
 
-BENCHMARK_CAPTURE(end_to_end, 720p_aa, billiards(), 1280, 720, true, false)
-    ->Name("render/720p/aa")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(end_to_end, 720p_plain, billiards(), 1280, 720, false, false)
-    ->Name("render/720p/plain")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(end_to_end, 1080p_aa, billiards(), 1920, 1080, true, false)
-    ->Name("render/1080p/aa")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(encode_only, 720p, 1280, 720)
-    ->Name("encode/720p")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(end_to_end, 3d_720p_aa, dropped_box(), 1280, 720, true, true)
-    ->Name("render3d/720p/aa")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(end_to_end, 3d_720p_plain, dropped_box(), 1280, 720, false, true)
-    ->Name("render3d/720p/plain")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
-BENCHMARK_CAPTURE(end_to_end, 3d_720p_aa_whole, dropped_box(), 1280, 720, true, true, false)
-    ->Name("render3d/720p/aa-whole")
-    ->Iterations(kFrames)
-    ->Unit(benchmark::kMillisecond)
-    ->UseRealTime();
+[[maybe_unused]] const bool registered = [] {
+    struct EndToEnd {
+        const char* name;
+        const Run& (*run)();  // the frames, simulated at the benchmark's first run
+        int w, h;
+        bool aa, view3d, region;
+    };
+    const EndToEnd runs[] = {
+        {"render/720p/aa", billiards, 1280, 720, true, false, true},
+        {"render/720p/plain", billiards, 1280, 720, false, false, true},
+        {"render/1080p/aa", billiards, 1920, 1080, true, false, true},
+        {"render3d/720p/aa", dropped_box, 1280, 720, true, true, true},
+        {"render3d/720p/plain", dropped_box, 1280, 720, false, true, true},
+        {"render3d/720p/aa-whole", dropped_box, 1280, 720, true, true, false},
+    };
+    for (const EndToEnd& r : runs)
+        per_frame(benchmark::RegisterBenchmark(
+            r.name, [r](benchmark::State& state) { end_to_end(state, r.run(), r.w, r.h, r.aa, r.view3d, r.region); }));
+    per_frame(benchmark::RegisterBenchmark("encode/720p", encode_only, 1280, 720));
+    return true;
+}();
+
+}  // namespace

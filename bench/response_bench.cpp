@@ -1,6 +1,7 @@
 // response/...: nanoseconds per collision response, for each model, with general (non-diagonal)
 // world inertia tensors. Each iteration solves one collision from a fixed pool of random
 // approaching pairs, so branch prediction and caches see realistic variety.
+#include <cstdint>
 #include <random>
 #include <vector>
 
@@ -50,53 +51,74 @@ ImpactBody3 random_body3(std::mt19937_64& rng) {
     return b;
 }
 
+// A 3D body's motion in the xy plane: its mass, its zz moment, and the x, y parts of its lever
+// arm and velocity with the z part of its spin.
+ImpactBody2 flat(const ImpactBody3& b) {
+    ImpactBody2 o;
+    o.inv_m = b.inv_m;
+    o.I = b.I(2, 2);
+    o.inv_I = 1.0 / o.I;
+    o.r = b.r.head<2>();
+    o.v = b.v.head<2>();
+    o.w = b.w.z();
+    return o;
+}
+
+// The pair with n turned, if need be, so that its bodies approach along it.
+template <class Pair>
+Pair approaching(Pair c) {
+    if (relative_velocity(c.a, c.b).dot(c.n) > 0) c.n = -c.n;
+    return c;
+}
+
+Pair3 random_pair3(std::mt19937_64& rng) {
+    return approaching(Pair3{random_body3(rng), random_body3(rng), Vec3::Random().normalized()});
+}
+Pair2 random_pair2(std::mt19937_64& rng) {
+    const ImpactBody3 a = random_body3(rng), b = random_body3(rng);
+    return approaching(Pair2{flat(a), flat(b), Vec2::Random().normalized()});
+}
+
+// kPool pairs made by make(rng) from `seed`, those that keep() accepts.
+template <class Make, class Keep>
+auto draw(std::uint64_t seed, Make make, Keep keep) {
+    std::mt19937_64 rng(seed);
+    std::vector<decltype(make(rng))> p;
+    while (p.size() < kPool) {
+        const auto c = make(rng);
+        if (keep(c)) p.push_back(c);
+    }
+    return p;
+}
+
+// Each of `pool`'s pairs made another by make().
+template <class Pool, class Make>
+auto each(const Pool& pool, Make make) {
+    std::vector<decltype(make(pool[0]))> p;
+    for (const auto& c : pool) p.push_back(make(c));
+    return p;
+}
+
 const std::vector<Pair3>& pool3() {
-    static const std::vector<Pair3> pool = [] {
-        std::mt19937_64 rng(42);
-        std::vector<Pair3> p;
-        while (p.size() < kPool) {
-            Pair3 c{random_body3(rng), random_body3(rng), Vec3::Random().normalized()};
-            if (relative_velocity(c.a, c.b).dot(c.n) > 0) c.n = -c.n;  // approaching
-            p.push_back(c);
-        }
-        return p;
-    }();
+    static const std::vector<Pair3> pool = draw(42, random_pair3, [](const Pair3&) { return true; });
     return pool;
 }
 
+// pool3()'s pairs in the xy plane, each with a new random normal.
 const std::vector<Pair2>& pool2() {
-    static const std::vector<Pair2> pool = [] {
-        std::vector<Pair2> p;
-        for (const Pair3& c : pool3()) {
-            auto flat = [](const ImpactBody3& b) {
-                ImpactBody2 o;
-                o.inv_m = b.inv_m;
-                o.I = b.I(2, 2);
-                o.inv_I = 1.0 / o.I;
-                o.r = b.r.head<2>();
-                o.v = b.v.head<2>();
-                o.w = b.w.z();
-                return o;
-            };
-            Pair2 q{flat(c.a), flat(c.b), Vec2::Random().normalized()};
-            if (relative_velocity(q.a, q.b).dot(q.n) > 0) q.n = -q.n;
-            p.push_back(q);
-        }
-        return p;
-    }();
+    static const std::vector<Pair2> pool = each(pool3(), [](const Pair3& c) {
+        return approaching(Pair2{flat(c.a), flat(c.b), Vec2::Random().normalized()});
+    });
     return pool;
 }
 
+// pool3()'s pairs along x.
 const std::vector<Pair1>& pool1() {
-    static const std::vector<Pair1> pool = [] {
-        std::vector<Pair1> p;
-        for (const Pair3& c : pool3()) {
-            Pair1 q{{c.a.inv_m, c.a.v.x()}, {c.b.inv_m, c.b.v.x()}, 1.0};
-            if (q.b.v > q.a.v) q.n = -1.0;
-            p.push_back(q);
-        }
-        return p;
-    }();
+    static const std::vector<Pair1> pool = each(pool3(), [](const Pair3& c) {
+        Pair1 q{{c.a.inv_m, c.a.v.x()}, {c.b.inv_m, c.b.v.x()}, 1.0};
+        if (q.b.v > q.a.v) q.n = -1.0;
+        return q;
+    });
     return pool;
 }
 
@@ -106,46 +128,20 @@ const std::vector<Pair1>& pool1() {
 constexpr double e = 0.5, mu = 0.4;
 constexpr double kRouthMu = mu;
 
+template <class Pair>
+bool slip_stops(const Pair& c) {
+    RouthDetail d;
+    routh(c.a, c.b, c.n, e, kRouthMu, RestitutionLaw::stronge, &d);
+    return d.phases.size() >= 2;
+}
+
 const std::vector<Pair3>& pool3_slip_stops() {
-    static const std::vector<Pair3> pool = [] {
-        std::mt19937_64 rng(43);
-        std::vector<Pair3> p;
-        RouthDetail d;
-        while (p.size() < kPool) {
-            Pair3 c{random_body3(rng), random_body3(rng), Vec3::Random().normalized()};
-            if (relative_velocity(c.a, c.b).dot(c.n) > 0) c.n = -c.n;
-            routh(c.a, c.b, c.n, e, kRouthMu, RestitutionLaw::stronge, &d);
-            if (d.phases.size() >= 2) p.push_back(c);
-        }
-        return p;
-    }();
+    static const std::vector<Pair3> pool = draw(43, random_pair3, slip_stops<Pair3>);
     return pool;
 }
 
 const std::vector<Pair2>& pool2_slip_stops() {
-    static const std::vector<Pair2> pool = [] {
-        std::mt19937_64 rng(44);
-        std::vector<Pair2> p;
-        RouthDetail d;
-        while (p.size() < kPool) {
-            const ImpactBody3 a = random_body3(rng), b = random_body3(rng);
-            auto flat = [](const ImpactBody3& x) {
-                ImpactBody2 o;
-                o.inv_m = x.inv_m;
-                o.I = x.I(2, 2);
-                o.inv_I = 1.0 / o.I;
-                o.r = x.r.head<2>();
-                o.v = x.v.head<2>();
-                o.w = x.w.z();
-                return o;
-            };
-            Pair2 q{flat(a), flat(b), Vec2::Random().normalized()};
-            if (relative_velocity(q.a, q.b).dot(q.n) > 0) q.n = -q.n;
-            routh(q.a, q.b, q.n, e, kRouthMu, RestitutionLaw::stronge, &d);
-            if (d.phases.size() >= 2) p.push_back(q);
-        }
-        return p;
-    }();
+    static const std::vector<Pair2> pool = draw(44, random_pair2, slip_stops<Pair2>);
     return pool;
 }
 

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <algorithm>
+#include <optional>
 
 #include <benchmark/benchmark.h>
 
@@ -47,6 +48,40 @@ void settling_counters(benchmark::State& state, const Scene& scene, const Bodies
     state.counters["penetration_mm"] = 1e3 * scenes::deepest_overlap(scene, end);
     state.counters["penetration_max_mm"] = 1e3 * deepest_over_frames;
     state.counters["resting_speed"] = scenes::fastest_surface_speed(scene, end);
+}
+
+// Times `run(world)` on a fresh world each iteration: the world is built from `args` (and the
+// previous one destroyed) with the timer paused, so only the run is measured. `world` is left
+// holding the last iteration's world, for the counters.
+template <class World, class Run, class... Args>
+void time_fresh_worlds(benchmark::State& state, std::optional<World>* world, Run&& run, const Args&... args) {
+    for (auto _ : state) {
+        state.PauseTiming();
+        world->reset();
+        world->emplace(args...);
+        state.ResumeTiming();
+        run(**world);
+        benchmark::ClobberMemory();
+    }
+}
+
+// The settling benchmark of another engine's world (compare/): a fresh World(scene, settings)
+// run through one second in 60 frames, timed; then "steps" and the settling counters from the
+// last iteration's world and from one more, untimed run of the same frames. `advance(world, t)`
+// moves a world to t (the fixed steps of Box2D and Bullet are the same as in one advance to 1 s).
+template <class World, class Settings, class Advance>
+void simulate_settling(benchmark::State& state, const Scene& scene, const Settings& settings, Advance&& advance) {
+    std::optional<World> world;
+    time_fresh_worlds(
+        state, &world, [&](World& w) { run_frames([&](double t) { advance(w, t); }); }, scene, settings);
+    if (!world) return;
+    state.counters["steps"] = static_cast<double>(world->steps());
+    World framed(scene, settings);
+    const double deepest = deepest_overlap_over_frames(scene, [&](double t) {
+        advance(framed, t);
+        return framed.bodies();
+    });
+    settling_counters(state, scene, world->bodies(), deepest);
 }
 
 }  // namespace collide::bench

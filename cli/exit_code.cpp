@@ -29,4 +29,8 @@ int run_command(std::ostream& err, const std::function<int()>& body,
     }
 }
 
+int run_staged_command(std::ostream& err, const std::string& dir, const std::function<int()>& body) {
+    return run_command(err, body, [&dir](const Interrupted&) { return dir + " is untouched"; });
+}
+
 }  // namespace collide::cli

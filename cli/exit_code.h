@@ -24,4 +24,9 @@ constexpr int kExitInterrupted = 130;
 int run_command(std::ostream& err, const std::function<int()>& body,
                 const std::function<std::string(const Interrupted&)>& interrupted_note = nullptr);
 
+// run_command for a command that builds its output directory `dir` beside it and renames it
+// into place when complete (present/staged_dir.h: material, worksheet): what the body throws
+// leaves `dir` untouched, and an interruption says "DIR is untouched".
+int run_staged_command(std::ostream& err, const std::string& dir, const std::function<int()>& body);
+
 }  // namespace collide::cli

@@ -5,12 +5,18 @@
 
 #include <unistd.h>
 
+#include <chrono>
 #include <iostream>
 
 namespace collide::cli {
 
 inline bool progress_watched(const std::ostream& err) {
     return err.rdbuf() == std::cerr.rdbuf() && isatty(STDERR_FILENO);
+}
+
+// Wall-clock seconds since `start`, for the progress and summary lines.
+inline double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace collide::cli

@@ -71,17 +71,18 @@ void explain(const Scene& scene, const Box2DSettings& settings, Comparison* c) {
     const bool suppressed = theirs.threshold > 0.0 && theirs.approach < theirs.threshold && theirs.restitution > 0.0;
 
     std::vector<Cause> causes;
+    // The causes with no estimate of their size: always named, or named only when the
+    // estimated ones leave most of the difference unexplained.
+    const auto always = [&](std::string text) { causes.push_back({-1.0, std::move(text), false}); };
+    const auto if_unexplained = [&](std::string text) { causes.push_back({-1.0, std::move(text), true}); };
     const std::string cap = speed_cap(scene, *c, settings.dt);
-    if (!cap.empty()) causes.push_back({-1.0, cap, false});
+    if (!cap.empty()) always(cap);
     if (scene.model == Model::matrix || scene.model == Model::stick)
-        causes.push_back(
-            {-1.0, std::string("model (collide's ") + model_name(scene.model) + "; Box2D has Coulomb friction only)",
-             false});
+        always(std::string("model (collide's ") + model_name(scene.model) + "; Box2D has Coulomb friction only)");
     if (theirs.points == 2 && scene.policy == Policy::sequential)
-        causes.push_back({-1.0,
-                          "two-point contact (Box2D's block solver solved both points "
-                          "together; collide's sequential policy one at a time)",
-                          false});
+        always(
+            "two-point contact (Box2D's block solver solved both points together; collide's sequential policy "
+            "one at a time)");
     if (suppressed)
         causes.push_back({e * theirs.approach / scale,
                           "restitution threshold (approach " + short_number(theirs.approach) + " m/s < " +
@@ -102,21 +103,15 @@ void explain(const Scene& scene, const Box2DSettings& settings, Comparison* c) {
         causes.push_back({(1.0 + e) * std::abs(un) * std::sin(*c->normal_degrees / kDegrees) / scale,
                           "normal off by " + short_number(*c->normal_degrees) + " degrees"});
     if (theirs.points == 2 && scene.policy == Policy::simultaneous)
-        causes.push_back({-1.0, "two-point contact (Box2D had two manifold points)", true});
+        if_unexplained("two-point contact (Box2D had two manifold points)");
     if (theirs.others > 0)
-        causes.push_back({-1.0,
-                          "other contacts in the same step (Box2D solves this one with " +
-                              std::to_string(theirs.others) +
-                              " more together, by iteration; collide resolves each at its "
-                              "own instant)",
-                          true});
+        if_unexplained("other contacts in the same step (Box2D solves this one with " + std::to_string(theirs.others) +
+                       " more together, by iteration; collide resolves each at its own instant)");
     if (theirs.friction > 0.0)
-        causes.push_back({-1.0,
-                          "friction (Box2D iterates Coulomb friction per point, " +
-                              std::to_string(settings.velocity_iterations) +
-                              " velocity iterations, against the slip as it ends; "
-                              "collide's one-step model against the slip before)",
-                          true});
+        if_unexplained("friction (Box2D iterates Coulomb friction per point, " +
+                       std::to_string(settings.velocity_iterations) +
+                       " velocity iterations, against the slip as it ends; collide's one-step model against the "
+                       "slip before)");
 
     // Named: the causes without an estimate, then the estimated ones that matter, largest
     // first; then, if those leave most of it unexplained, the conditional ones.

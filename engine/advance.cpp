@@ -295,15 +295,15 @@ void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on
         if (!islands_.asleep[i] && !predicted.count(i)) predict(i, t0);
 }
 
-template double World<2>::predict_pair(std::size_t, std::size_t, double, double);
-template void World<2>::predict(std::size_t, double);
-template void World<2>::check_finite(const std::vector<Body>&, double) const;
-template void World<2>::advance_to(double, std::vector<Event<2>>*, const ImpactHook&);
-template void World<2>::begin_substep(std::vector<Event<2>>*, const ImpactHook&);
-template double World<3>::predict_pair(std::size_t, std::size_t, double, double);
-template void World<3>::predict(std::size_t, double);
-template void World<3>::check_finite(const std::vector<Body>&, double) const;
-template void World<3>::advance_to(double, std::vector<Event<3>>*, const ImpactHook&);
-template void World<3>::begin_substep(std::vector<Event<3>>*, const ImpactHook&);
+// The members defined here, for World<2> and World<3>.
+#define COLLIDE_INSTANTIATE_ADVANCE(D)                                                                                 \
+    template double World<D>::predict_pair(std::size_t, std::size_t, double, double);                                  \
+    template void World<D>::predict(std::size_t, double);                                                              \
+    template void World<D>::check_finite(const std::vector<Body>&, double) const;                                      \
+    template void World<D>::advance_to(double, std::vector<Event<D>>*, const ImpactHook&);                             \
+    template void World<D>::begin_substep(std::vector<Event<D>>*, const ImpactHook&);
+COLLIDE_INSTANTIATE_ADVANCE(2)
+COLLIDE_INSTANTIATE_ADVANCE(3)
+#undef COLLIDE_INSTANTIATE_ADVANCE
 
 }  // namespace collide

@@ -226,11 +226,13 @@ void World<D>::solve_island(std::vector<Contact>* contacts, const std::vector<st
     }
 }
 
-template bool World<2>::same_island(std::size_t, std::size_t) const;
-template void World<2>::settle(const std::vector<std::size_t>&, double);
-template void World<2>::solve_island(std::vector<Contact>*, const std::vector<std::size_t>&, double);
-template bool World<3>::same_island(std::size_t, std::size_t) const;
-template void World<3>::settle(const std::vector<std::size_t>&, double);
-template void World<3>::solve_island(std::vector<Contact>*, const std::vector<std::size_t>&, double);
+// The members defined here, for World<2> and World<3>.
+#define COLLIDE_INSTANTIATE_ISLANDS(D)                                                                                 \
+    template bool World<D>::same_island(std::size_t, std::size_t) const;                                               \
+    template void World<D>::settle(const std::vector<std::size_t>&, double);                                           \
+    template void World<D>::solve_island(std::vector<Contact>*, const std::vector<std::size_t>&, double);
+COLLIDE_INSTANTIATE_ISLANDS(2)
+COLLIDE_INSTANTIATE_ISLANDS(3)
+#undef COLLIDE_INSTANTIATE_ISLANDS
 
 }  // namespace collide

@@ -260,18 +260,38 @@ Impact<D> integrate(const Eigen::Matrix<double, D, D>& R, const Eigen::Matrix<do
     return s;
 }
 
+// Whether the bodies approach along n (u_n < 0, false for a NaN). When they do not there is
+// no impact, and no detail.
+template <class V>
+bool approaching(const V& u, const V& n, RouthDetail* detail) {
+    if (u.dot(n) < 0.0) return true;
+    if (detail) *detail = RouthDetail();
+    return false;
+}
+
+// The contact frame R (file comment): its columns n, then t = perp(n) in 2D, or t1 (any unit
+// vector orthogonal to n) and t2 = n x t1 in 3D.
+Mat2 contact_frame(const Vec2& n) {
+    Mat2 R;
+    R.col(0) = n;
+    R.col(1) = perp(n);
+    return R;
+}
+Mat3 contact_frame(const Vec3& n) {
+    Mat3 R;
+    R.col(0) = n;
+    R.col(1) = n.unitOrthogonal();
+    R.col(2) = n.cross(R.col(1));
+    return R;
+}
+
 }  // namespace
 
 Response2 routh(const ImpactBody2& a, const ImpactBody2& b, const Vec2& n, double e, double mu, RestitutionLaw law,
                 RouthDetail* detail) {
     const Vec2 u = relative_velocity(a, b);
-    if (!(u.dot(n) < 0.0)) {
-        if (detail) *detail = RouthDetail();
-        return unchanged(a, b);
-    }
-    Mat2 R;
-    R.col(0) = n;
-    R.col(1) = perp(n);
+    if (!approaching(u, n, detail)) return unchanged(a, b);
+    const Mat2 R = contact_frame(n);
     const Impact<2> s = integrate<2>(R, collision_matrix(a, b), u, e, mu, law, RouthIntegration(), detail);
     Response2 r;
     r.P = R * s.P;
@@ -288,14 +308,8 @@ Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, doubl
 Response3 routh(const ImpactBody3& a, const ImpactBody3& b, const Vec3& n, double e, double mu, RestitutionLaw law,
                 const RouthIntegration& how, RouthDetail* detail) {
     const Vec3 u = relative_velocity(a, b);
-    if (!(u.dot(n) < 0.0)) {
-        if (detail) *detail = RouthDetail();
-        return unchanged(a, b);
-    }
-    Mat3 R;
-    R.col(0) = n;
-    R.col(1) = n.unitOrthogonal();
-    R.col(2) = n.cross(R.col(1));
+    if (!approaching(u, n, detail)) return unchanged(a, b);
+    const Mat3 R = contact_frame(n);
     const Impact<3> s = integrate<3>(R, collision_matrix(a, b), u, e, mu, law, how, detail);
     if (s.jammed) {
         // A straight stretch on which compression cannot end (u_n falling as P_n grows: a

@@ -221,17 +221,16 @@ void World<D>::step_islands(double t, std::vector<Event<D>>* events, bool within
     steps_.reseed.clear();
 }
 
-template bool World<2>::may_step(std::size_t) const;
-template void World<2>::join(std::size_t, double);
-template void World<2>::wake(std::size_t);
-template void World<2>::count_impact(std::size_t, std::size_t, double);
-template double World<2>::surface_speed(std::size_t) const;
-template void World<2>::step_islands(double, std::vector<Event<2>>*, bool);
-template bool World<3>::may_step(std::size_t) const;
-template void World<3>::join(std::size_t, double);
-template void World<3>::wake(std::size_t);
-template void World<3>::count_impact(std::size_t, std::size_t, double);
-template double World<3>::surface_speed(std::size_t) const;
-template void World<3>::step_islands(double, std::vector<Event<3>>*, bool);
+// The members defined here, for World<2> and World<3>.
+#define COLLIDE_INSTANTIATE_STEPPED(D)                                                                                 \
+    template bool World<D>::may_step(std::size_t) const;                                                               \
+    template void World<D>::join(std::size_t, double);                                                                 \
+    template void World<D>::wake(std::size_t);                                                                         \
+    template void World<D>::count_impact(std::size_t, std::size_t, double);                                            \
+    template double World<D>::surface_speed(std::size_t) const;                                                        \
+    template void World<D>::step_islands(double, std::vector<Event<D>>*, bool);
+COLLIDE_INSTANTIATE_STEPPED(2)
+COLLIDE_INSTANTIATE_STEPPED(3)
+#undef COLLIDE_INSTANTIATE_STEPPED
 
 }  // namespace collide

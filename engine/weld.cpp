@@ -141,19 +141,17 @@ void World<D>::unweld(std::size_t i) {
     w.members.clear();
 }
 
-template bool World<2>::same_weld(std::size_t, std::size_t) const;
-template void World<2>::weld_to(Weld*, double) const;
-template void World<2>::place(std::size_t);
-template World<2>::Body* World<2>::mobile(std::size_t);
-template void World<2>::moved(std::size_t);
-template void World<2>::weld(std::size_t, std::size_t, double);
-template void World<2>::unweld(std::size_t);
-template bool World<3>::same_weld(std::size_t, std::size_t) const;
-template void World<3>::weld_to(Weld*, double) const;
-template void World<3>::place(std::size_t);
-template World<3>::Body* World<3>::mobile(std::size_t);
-template void World<3>::moved(std::size_t);
-template void World<3>::weld(std::size_t, std::size_t, double);
-template void World<3>::unweld(std::size_t);
+// The members defined here, for World<2> and World<3>.
+#define COLLIDE_INSTANTIATE_WELD(D)                                                                                    \
+    template bool World<D>::same_weld(std::size_t, std::size_t) const;                                                 \
+    template void World<D>::weld_to(Weld*, double) const;                                                              \
+    template void World<D>::place(std::size_t);                                                                        \
+    template World<D>::Body* World<D>::mobile(std::size_t);                                                            \
+    template void World<D>::moved(std::size_t);                                                                        \
+    template void World<D>::weld(std::size_t, std::size_t, double);                                                    \
+    template void World<D>::unweld(std::size_t);
+COLLIDE_INSTANTIATE_WELD(2)
+COLLIDE_INSTANTIATE_WELD(3)
+#undef COLLIDE_INSTANTIATE_WELD
 
 }  // namespace collide

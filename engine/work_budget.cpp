@@ -57,13 +57,14 @@ void World<D>::refuse_work(double t) const {
                    run_number(scene_.work_budget) + " (--max-work raises it; see docs/stepping.md, \"Work budget\")");
 }
 
-template std::uint64_t World<2>::work_done() const;
-template std::uint64_t World<3>::work_done() const;
-template std::uint64_t World<2>::work_budget() const;
-template std::uint64_t World<3>::work_budget() const;
-template double World<2>::estimate_work() const;
-template double World<3>::estimate_work() const;
-template void World<2>::refuse_work(double) const;
-template void World<3>::refuse_work(double) const;
+// The members defined here, for World<2> and World<3>.
+#define COLLIDE_INSTANTIATE_WORK_BUDGET(D)                                                                             \
+    template std::uint64_t World<D>::work_done() const;                                                                \
+    template std::uint64_t World<D>::work_budget() const;                                                              \
+    template double World<D>::estimate_work() const;                                                                   \
+    template void World<D>::refuse_work(double) const;
+COLLIDE_INSTANTIATE_WORK_BUDGET(2)
+COLLIDE_INSTANTIATE_WORK_BUDGET(3)
+#undef COLLIDE_INSTANTIATE_WORK_BUDGET
 
 }  // namespace collide

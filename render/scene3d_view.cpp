@@ -276,6 +276,22 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
     const auto label_body = [&](int body) {
         if (body >= 0 && static_cast<std::size_t>(body) < n) labelled[static_cast<std::size_t>(body)] = true;
     };
+    // A velocity or spin arrow's label, "symbol = |value| unit", pointing from the body's centre
+    // toward the arrow's tip, where motion_labels() gives the body one (`shown`).
+    const auto motion_label = [&](const Annotation& a, int of, ImVec2 tip, const std::vector<bool>& shown,
+                                  const char* symbol, const char* unit, Colour colour) {
+        if (!gets(shown, a.body)) return;
+        const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
+        const double size = norm_of(a.value);
+        motion.push_back({of,
+                          tip,
+                          toward(from, tip),
+                          std::string(symbol) + " = " + format_number(size) + " " + unit,
+                          {size},
+                          colour,
+                          false});
+        label_body(a.body);
+    };
     for (std::size_t k = 0; k < items.size(); ++k) {
         const Annotation& a = items[k];
         const int of = static_cast<int>(k);
@@ -299,26 +315,8 @@ Annotations Scene3dView::annotate(const FontSet& fonts, const FrameState& frame,
                                    c.lever,
                                    false});
                 break;
-            case Mark::velocity: {
-                const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
-                const double v = norm_of(a.value);
-                if (gets(labels_of.speed, a.body)) {
-                    motion.push_back(
-                        {of, tip, toward(from, tip), "v = " + format_number(v) + " m/s", {v}, c.velocity, false});
-                    label_body(a.body);
-                }
-                break;
-            }
-            case Mark::spin: {
-                const ImVec2 from = screen(frame.bodies[static_cast<std::size_t>(a.body)].x);
-                const double w = norm_of(a.value);
-                if (gets(labels_of.spin, a.body)) {
-                    motion.push_back(
-                        {of, tip, toward(from, tip), "\u03C9 = " + format_number(w) + " rad/s", {w}, c.spin, false});
-                    label_body(a.body);
-                }
-                break;
-            }
+            case Mark::velocity: motion_label(a, of, tip, labels_of.speed, "v", "m/s", c.velocity); break;
+            case Mark::spin: motion_label(a, of, tip, labels_of.spin, "\u03C9", "rad/s", c.spin); break;
             default: break;
         }
     }

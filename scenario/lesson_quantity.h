@@ -116,6 +116,7 @@ constexpr QuantityInfo quantity_info(Quantity quantity) {
     using Q = Quantity;
     using I = QuantityInfo;
     constexpr Readout vector = Readout::vector;
+    constexpr QuantityPoint at = QuantityPoint::at, about = QuantityPoint::about;
     switch (quantity) {
         case Q::impulse: return I("impulse", "N s").of_collision().reads(vector);
         case Q::impulse_normal: return I("impulse_normal", "N s").of_collision();
@@ -125,25 +126,17 @@ constexpr QuantityInfo quantity_info(Quantity quantity) {
         case Q::spin_before: return I("spin_before", "rad/s").of_collision().of_body().turning().reads(vector);
         case Q::spin_after: return I("spin_after", "rad/s").of_collision().of_body().turning().reads(vector);
         case Q::point_velocity_before:
-            return I("point_velocity_before", "m/s").of_collision().of_body().takes(QuantityPoint::at).reads(vector);
+            return I("point_velocity_before", "m/s").of_collision().of_body().takes(at).reads(vector);
         case Q::point_velocity_after:
-            return I("point_velocity_after", "m/s").of_collision().of_body().takes(QuantityPoint::at).reads(vector);
+            return I("point_velocity_after", "m/s").of_collision().of_body().takes(at).reads(vector);
         case Q::normal_velocity_before: return I("normal_velocity_before", "m/s").of_collision();
         case Q::normal_velocity_after: return I("normal_velocity_after", "m/s").of_collision();
         case Q::momentum_before: return I("momentum_before", "kg m/s").of_collision().reads(vector);
         case Q::momentum_after: return I("momentum_after", "kg m/s").of_collision().reads(vector);
         case Q::angular_momentum_before:
-            return I("angular_momentum_before", "kg m^2/s")
-                .of_collision()
-                .turning()
-                .takes(QuantityPoint::about)
-                .reads(vector);
+            return I("angular_momentum_before", "kg m^2/s").of_collision().turning().takes(about).reads(vector);
         case Q::angular_momentum_after:
-            return I("angular_momentum_after", "kg m^2/s")
-                .of_collision()
-                .turning()
-                .takes(QuantityPoint::about)
-                .reads(vector);
+            return I("angular_momentum_after", "kg m^2/s").of_collision().turning().takes(about).reads(vector);
         case Q::spin_angular_momentum_before:
             return I("spin_angular_momentum_before", "kg m^2/s").of_collision().of_body().turning().reads(vector);
         case Q::spin_angular_momentum_after:

@@ -328,19 +328,28 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
         out << "\n";
     }
     if (!L.setup.empty()) out << "## The set-up\n\n" << L.setup << "\n\n";
-    const auto answer_at = [&](std::size_t i) { return i < answers.size() ? &answers[i] : nullptr; };
     std::vector<std::size_t> predict, others;
     for (std::size_t i = 0; i < L.questions.size(); ++i)
         (L.questions[i].kind == QuestionKind::predict ? predict : others).push_back(i);
-    // Predictions before the figure: it shows what happens.
-    if (!predict.empty()) {
-        out << "## Before you watch\n\nWrite down what you expect before you look at the figure and the animation.\n\n";
-        for (std::size_t k = 0; k < predict.size(); ++k) {
-            const LessonQuestion& q = L.questions[predict[k]];
-            out << k + 1 << ". " << question_line(q) << "\n\n";
-            if (q.has_choices()) write_choices(q, out);
+    // The questions `which` (indices into L.questions), numbered from 1 under `heading`, each
+    // item written by write(question, its answer); nothing when there are none.
+    const auto numbered = [&](const std::vector<std::size_t>& which, const char* heading, const auto& write) {
+        if (which.empty()) return;
+        out << heading;
+        for (std::size_t k = 0; k < which.size(); ++k) {
+            out << k + 1 << ". ";
+            write(L.questions[which[k]], which[k] < answers.size() ? &answers[which[k]] : nullptr);
         }
-    }
+    };
+    // A question as asked: its line, and its choices when it has them.
+    const auto ask = [&](const LessonQuestion& q) {
+        out << question_line(q) << "\n\n";
+        if (q.has_choices()) write_choices(q, out);
+    };
+    // Predictions before the figure: it shows what happens.
+    numbered(predict,
+             "## Before you watch\n\nWrite down what you expect before you look at the figure and the animation.\n\n",
+             [&](const LessonQuestion& q, const LessonAnswer*) { ask(q); });
     // The figures: the lesson's [[figure]] entries (figure.png, figure-2.png, ...), each with
     // its caption, or the run's first collision.
     if (L.figures.empty()) out << "![before, at and after the first collision](figure.png)\n\n";
@@ -351,25 +360,16 @@ void write_lesson_markdown(const Lesson& L, const std::vector<LessonAnswer>& ans
         out << "![" << what << "](figure" << (k == 0 ? std::string() : "-" + std::to_string(k + 1)) << ".png)\n\n";
         if (!f.caption.empty()) out << "*" << f.caption << "*\n\n";
     }
-    if (!predict.empty()) {
-        out << "## Check your predictions\n\n";
-        for (std::size_t k = 0; k < predict.size(); ++k) {
-            const LessonQuestion& q = L.questions[predict[k]];
-            out << k + 1 << ". " << q.text << "\n\n";
-            write_answer(q, answer_at(predict[k]), "Check your prediction", out);
-        }
-    }
+    numbered(predict, "## Check your predictions\n\n", [&](const LessonQuestion& q, const LessonAnswer* a) {
+        out << q.text << "\n\n";
+        write_answer(q, a, "Check your prediction", out);
+    });
     // The explanation after the figures and the predictions checked, as the lesson page has it.
     if (!L.explanation.empty()) out << "## Explanation\n\n" << L.explanation << "\n\n";
-    if (!others.empty()) {
-        out << "## Questions\n\n";
-        for (std::size_t k = 0; k < others.size(); ++k) {
-            const LessonQuestion& q = L.questions[others[k]];
-            out << k + 1 << ". " << question_line(q) << "\n\n";
-            if (q.has_choices()) write_choices(q, out);
-            write_answer(q, answer_at(others[k]), "Answer", out);
-        }
-    }
+    numbered(others, "## Questions\n\n", [&](const LessonQuestion& q, const LessonAnswer* a) {
+        ask(q);
+        write_answer(q, a, "Answer", out);
+    });
     out << "The first collision worked out step by step: [worked-example.md](worked-example.md).\n";
     if (!L.teacher_notes.empty()) out << "\n## For the teacher\n\n" << L.teacher_notes << "\n";
 }

@@ -23,6 +23,10 @@ Mat3 embed(const Mat2& m) {
 Mat3 embed(const Mat3& m) { return m; }
 Mat3 embed_inertia(double I) { return Vec3(0.0, 0.0, I).asDiagonal(); }
 Mat3 embed_inertia(const Mat3& I) { return I; }
+Combined3 embed(const Combined2& c) {
+    return {c.M, embed(c.xc), embed(c.da), embed(c.db), embed_inertia(c.I), embed(c.v), embed(c.L), embed(c.w)};
+}
+const Combined3& embed(const Combined3& c) { return c; }
 
 // A 2D body as a 3D one moving in the xy plane (for the page's 3D listing): every torque is
 // along z, so an isotropic inertia equal to the 2D moment acts exactly like it.
@@ -63,17 +67,7 @@ void compute(const IB& a, const IB& b, const V& n, const SolveProblem& P, Soluti
     const auto t = slip_direction(K, u, n);
     s->slip = embed(t);
     s->slide_denominator = sliding_denominator(K, n, t, mu);
-    if (!a.is_static() && !b.is_static()) {
-        const auto c = combined_body(a, b);
-        s->M = c.M;
-        s->xc = embed(c.xc);
-        s->da = embed(c.da);
-        s->db = embed(c.db);
-        s->Ic = embed_inertia(c.I);
-        s->vc = embed(c.v);
-        s->Lc = embed(c.L);
-        s->wc = embed(c.w);
-    }
+    if (!a.is_static() && !b.is_static()) s->combined = embed(combined_body(a, b));
     s->listing = page::listing(as_3d(a), as_3d(b), embed(n), e);
 
     // The page's listing is filled from s->listing by solve(): its P is the page's J.
@@ -177,8 +171,9 @@ Solution solve(const SolveProblem& P) {
         s.u = s.vpb - s.vpa;
         s.un = s.u.x() * n;
         s.K = Mat3::Identity() * (a.inv_m + b.inv_m);
-        s.M = (a.is_static() || b.is_static()) ? 0.0 : 1.0 / a.inv_m + 1.0 / b.inv_m;
-        if (s.M > 0) s.vc = Vec3((a.v / a.inv_m + b.v / b.inv_m) / s.M, 0, 0);
+        double& M = s.combined.M;
+        M = (a.is_static() || b.is_static()) ? 0.0 : 1.0 / a.inv_m + 1.0 / b.inv_m;
+        if (M > 0) s.combined.v = Vec3((a.v / a.inv_m + b.v / b.inv_m) / M, 0, 0);
         const page::Listing1 L = page::listing(a, b, n, e);
         s.listing.scalar = L.scalar;
         s.listing.Jmod = L.Jmod;

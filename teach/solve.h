@@ -25,16 +25,12 @@ struct Solution {
     double inv_ma = 0.0, inv_mb = 0.0, rot_a = 0.0, rot_b = 0.0;
     Mat3 inv_Ia = Mat3::Zero(), inv_Ib = Mat3::Zero();  // world; 2D: zz
     Mat3 Ia = Mat3::Zero(), Ib = Mat3::Zero();
-    Mat3 K = Mat3::Zero();           // collision matrix (2D: 2x2 block)
-    Vec3 P_stick = Vec3::Zero();     // coulomb: sticking impulse
-    Vec3 slip = Vec3::Zero();        // coulomb: sliding direction t
-    double slide_denominator = 0.0;  // n . K (n - mu t)
-    RouthDetail routh;               // routh: its phases, impulses and works
-    // stick: the combined body (centre relative to the contact point).
-    double M = 0.0;
-    Vec3 xc = Vec3::Zero(), da = Vec3::Zero(), db = Vec3::Zero();
-    Mat3 Ic = Mat3::Zero();
-    Vec3 vc = Vec3::Zero(), Lc = Vec3::Zero(), wc = Vec3::Zero();
+    Mat3 K = Mat3::Zero();                 // collision matrix (2D: 2x2 block)
+    Vec3 P_stick = Vec3::Zero();           // coulomb: sticking impulse
+    Vec3 slip = Vec3::Zero();              // coulomb: sliding direction t
+    double slide_denominator = 0.0;        // n . K (n - mu t)
+    RouthDetail routh;                     // routh: its phases, impulses and works
+    Combined3 combined;                    // stick: the combined body (xc relative to the contact point)
     double newton_euler_difference = 0.0;  // |6x6 result - direct result|, m/s and rad/s
     page::Listing3 listing;                // page-listing (1D: rotational parts zero)
     // The outcome.

@@ -313,25 +313,26 @@ private:
             final_values();
             return;
         }
+        const Combined3& c = s.combined;
         if (d == 1) {
             step({"Combined body", "M = m_a + m_b,  v = (m_a v_a + m_b v_b)/M"},
-                 {f("M = ") + num(s.M) + unit("kg") + f(",  v = ") + num(s.vc.x()) + unit("m/s")},
+                 {f("M = ") + num(c.M) + unit("kg") + f(",  v = ") + num(c.v.x()) + unit("m/s")},
                  {"Perfectly inelastic on a line: both move on with the centre-of-mass velocity."});
             final_values();
             impulse_from_change();
             return;
         }
-        const Vec3 xc = P.point + s.xc;
+        const Vec3 xc = P.point + c.xc;
         step({"Combined body", "M = m_a + m_b,  x_c = (m_a x_a + m_b x_b)/M"},
-             {f("M = ") + num(s.M) + unit("kg") + f(",  x_c = ") + V(xc) + unit("m"),
-              f("d_a = x_a − x_c = ") + V(s.da) + unit("m") + f(",  d_b = x_b − x_c = ") + V(s.db) + unit("m")});
+             {f("M = ") + num(c.M) + unit("kg") + f(",  x_c = ") + V(xc) + unit("m"),
+              f("d_a = x_a − x_c = ") + V(c.da) + unit("m") + f(",  d_b = x_b − x_c = ") + V(c.db) + unit("m")});
         step({"Inertia about x_c (parallel axis)",
               d == 2 ? "I = I_a + m_a |d_a|² + I_b + m_b |d_b|²" : "I = Σ (I_i + m_i (|d_i|² E − d_i d_iᵀ))"},
-             {f("I = ") + (d == 2 ? num(s.Ic(2, 2)) : mat(s.Ic, 3)) + unit("kg·m²")});
+             {f("I = ") + (d == 2 ? num(c.I(2, 2)) : mat(c.I, 3)) + unit("kg·m²")});
         step("Momentum and angular momentum about x_c",
-             {f("v = (m_a v_a + m_b v_b)/M = ") + V(s.vc) + unit("m/s"),
-              f("L = I_a ω_a + m_a d_a × v_a + I_b ω_b + m_b d_b × v_b = ") + W(s.Lc) + unit("kg·m²/s"),
-              f("ω = I⁻¹ L = ") + W(s.wc) + unit("rad/s")});
+             {f("v = (m_a v_a + m_b v_b)/M = ") + V(c.v) + unit("m/s"),
+              f("L = I_a ω_a + m_a d_a × v_a + I_b ω_b + m_b d_b × v_b = ") + W(c.L) + unit("kg·m²/s"),
+              f("ω = I⁻¹ L = ") + W(c.w) + unit("rad/s")});
         final_values();
         impulse_from_change();
         if (d == 3)
