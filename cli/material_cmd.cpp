@@ -6,6 +6,8 @@
 #include <cstdlib>
 #include <filesystem>
 #include <ostream>
+#include <sstream>
+#include <string>
 
 #include "cli/exit_code.h"
 #include "cli/terminal.h"
@@ -109,8 +111,11 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
             std::snprintf(line, sizeof line, "[%zu/%zu] %-24s %5.1f s\n", p.done, p.total, p.id.c_str(), p.seconds);
             err << line << std::flush;
         };
-        build_site(SiteRequest{lessons, request, engine_js, three_js}, tmp, progress, cli::stop_requested);
+        std::ostringstream notes;  // what a page lacks, and why: said even with --quiet
+        build_site(SiteRequest{lessons, request, engine_js, three_js, &notes}, tmp, progress, cli::stop_requested);
         staged.commit();
+        std::istringstream said(notes.str());
+        for (std::string line; std::getline(said, line);) err << "collide material: " << line << "\n";
         if (!opt.quiet) {
             char line[200];
             std::snprintf(line, sizeof line, "wrote %zu lessons to %s/index.html in %.1f s%s\n", lessons.size(),

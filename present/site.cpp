@@ -78,13 +78,16 @@ void build_site(const SiteRequest& rq, const fs::path& dir, const std::function<
     for (std::size_t k = 0; k < built.size(); ++k) {
         if (built[k].try_it) {
             // The panel's answer for the lesson's own values, as its module gives it: shown at
-            // once, before the module has started. A lesson it cannot answer gets none: its
-            // page waits for the module, which says why.
+            // once, before the module has started. A lesson it cannot answer gets none, and the
+            // command says so: its page waits for the module, which says why.
             std::string first;
             try {
                 first = try_it_answer_json(built[k].lesson.source, "{}", built[k].fps());
-            } catch (const std::exception&) {
+            } catch (const std::exception& e) {
                 first.clear();
+                if (rq.notes)
+                    *rq.notes << built[k].lesson.id << ": the Try-it panel opens without the command's answer ("
+                              << e.what() << "): the engine in the page answers when it has started\n";
             }
             render::write_file_atomic((dir / built[k].lesson.id / "try-it-lesson.js").string(),
                                       html::try_it_data_js(built[k].lesson, palette_json(), first));

@@ -18,6 +18,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,9 @@ struct SiteRequest {
     RenderRequest render;         // how each lesson renders (its scenario and out_dir are set per lesson)
     std::string engine_js;        // collide-engine.js to copy in; "": pages without a Try-it panel
     std::string three_js;         // three.min.js to copy in beside it for the 3D lessons; "": none
+    // Where a page lacks something asked for (a Try-it panel without the command's first
+    // answer), a line each, "ID: what and why" (the command prints them on stderr); nullptr: none.
+    std::ostream* notes = nullptr;
 };
 
 // One lesson done: the k-th (from 1) of `total`, and the seconds it took.
