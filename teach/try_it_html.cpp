@@ -170,10 +170,11 @@ std::string try_it_html(const Lesson& L, double fps, const std::string& root) {
     o << "<div class=\"tryit-numbers\" aria-live=\"polite\"></div>\n";
     o << "<details class=\"tryit-worked-box\" open><summary>The collision worked out with these numbers</summary>\n"
          "<div class=\"tryit-worked\"></div></details>\n";
-    // (collide-engine.js is not among them: try-it.js loads it once the page's first answer is
-    // shown, so that its 2 MB do not hold the page up)
+    // (collide-engine.js and, in 3D, three.min.js, Debian's libjs-three, are not among them:
+    // try-it.js loads them once the page's first answer is shown, so that their 2 MB and 850 KB
+    // do not hold the page up)
     std::vector<std::string> scripts = {"try-it-picture.js", "try-it-drag.js", "try-it-plot.js", "try-it.js"};
-    if (d == 3) scripts.insert(scripts.begin(), {"three.min.js", "try-it-3d.js"});  // Debian's libjs-three
+    if (d == 3) scripts.insert(scripts.begin(), "try-it-3d.js");
     o << "<script src=\"try-it-lesson.js\"></script>\n";
     for (const std::string& js : scripts) o << "<script src=\"" << root << js << "\"></script>\n";
     o << "</section>\n";

@@ -16,7 +16,7 @@
   var panel = lab.panel, overlay = lab.scene, palette = lab.palette, num = lab.num, vec = lab.vec;
   var canvas = panel.querySelector('canvas.tryit-scene3d'), stage = overlay.parentNode;
   var self = Object.create(flat);  // the plot and the rest as the flat picture; the scene here
-  var THREE = window.THREE, gl = null, view = null, refit = true, orbit = null;
+  var THREE = null, gl = null, view = null, refit = true, orbit = null;
   var FOV = 30;  // degrees, vertical: as the figures' camera (render/camera.h kFovY)
   var mode = null, caption = null;  // a jump's: 'before' | 'at' | 'after' | 'next', and its words
 
@@ -30,11 +30,17 @@
     stage.hidden = true;
     panel.dataset.view3d = 'missing';
   }
-  if (!THREE) {
+  // three.js is read after the page has shown its first answer (850 KB of script that the
+  // numbers need not wait for): try-it.js loads three.min.js and calls start when it has
+  // loaded, or missing when it has not. Until then the picture is blank.
+  self.missing = function () {
     unavailable('The 3D view needs three.js: the file three.min.js beside the lesson pages did not load. ' +
                 'The command collide material copies it there from Debian\u2019s libjs-three (apt-get install libjs-three, ' +
                 'then build the site again).');
-  } else {
+  };
+  self.start = function () {  // whether there is a 3D view to draw
+    THREE = window.THREE;
+    if (!THREE) { self.missing(); return false; }
     try {
       gl = {renderer: new THREE.WebGLRenderer({canvas: canvas, antialias: true, preserveDrawingBuffer: true})};
       gl.renderer.setPixelRatio(1);
@@ -43,8 +49,12 @@
     } catch (e) {
       gl = null;
       unavailable('This browser gives the page no WebGL, which the 3D view needs (' + e.message + ').');
+      return false;
     }
-  }
+    controls();
+    jumps();
+    return true;
+  };
   // three.js renamed its geometries (BoxBufferGeometry in r111, BoxGeometry later): either.
   function geometry(name) { return THREE[name + 'BufferGeometry'] || THREE[name + 'Geometry']; }
   function V(a) { return new THREE.Vector3(a[0], a[1], a[2]); }
@@ -435,7 +445,7 @@
     var p = Object.keys(pointers).map(function (k) { return pointers[k]; });
     return p.length === 2 ? Math.hypot(p[0][0] - p[1][0], p[0][1] - p[1][1]) : null;
   }
-  if (gl) {
+  function controls() {
     overlay.tabIndex = 0;
     overlay.setAttribute('aria-label', 'The run in 3D. Arrow keys turn the camera, + and \u2212 zoom, Home: the first view.');
     // After try-it-drag.js's own listeners on the canvas: a drag it took (a knob) is not an orbit.
@@ -521,7 +531,7 @@
                    (others ? '; the other bodies as at t = ' + num(run.states[before].t) + ' s.' : '.');
     lab.goTo(what === 'after' ? frameWhere(function (t) { return t > w.t + 1e-12; }) : before);
   }
-  if (gl) {
+  function jumps() {
     var bar = document.createElement('div');
     bar.className = 'player tryit-jumps';
     bar.setAttribute('role', 'group');

@@ -5,7 +5,8 @@
 // for it. The scripts only draw what they get. This one holds the inputs (sliders, the address),
 // the answers, the numbers, the lesson's own [[plot]]s (drawn by the engine: the SVG, alt text and
 // folded table that `collide material` writes on the page, put in as they are) and playback; its
-// parts, loaded before it, draw the picture (try-it-picture.js; in 3D try-it-3d.js, with three.js)
+// parts, loaded before it, draw the picture (try-it-picture.js; in 3D try-it-3d.js, with three.js,
+// which this script loads after the first answer)
 // and its drag handles (try-it-drag.js), and make the plot of any quantity (try-it-plot.js). They
 // share one object, `lab`: the panel's elements, its number format, the
 // current run, frame and values (read through getters: this script alone changes them).
@@ -417,6 +418,20 @@
   }
 
   if (window.location.hash === '#try-it') panel.scrollIntoView();
+  // In 3D, three.js (beside the pages, as the engine) once the first answer is shown; the 3D
+  // view draws the run it has when it has loaded.
+  if (d3) {
+    var three = document.createElement('script');
+    three.src = engineSrc.replace(/collide-engine\.js$/, 'three.min.js');
+    three.onerror = function () { picture.missing(); };
+    three.onload = function () {
+      if (!picture.start() || !run) return;
+      picture.prepare();
+      handles.make();
+      draw();
+    };
+    document.body.appendChild(three);
+  }
   var script = document.createElement('script');
   script.src = engineSrc;
   script.onerror = function () {
