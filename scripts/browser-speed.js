@@ -3,6 +3,8 @@
 // fresh tab, driven through the DevTools protocol (tests/wasm/cdp.js). Per lesson:
 //   engine  when the module had started (ms from the page's navigation)
 //   first   when the panel showed its first answer (ms from navigation: the page load's answer)
+//   load    when the page's load event ended (ms from navigation: its images, video and scripts
+//           read), for comparison with first
 //   answer  the median of 9 answers after a slider moves (each [[vary]] input one step in turn,
 //           set as a hand sets it: the slider's value and its input event): the engine's call
 //   shown   the same answers' median including the panel's drawing (numbers, worked example,
@@ -41,7 +43,7 @@ async function main() {
   console.log(`browser-speed: ${site}, collide-engine.js ${(module / 1e6).toFixed(2)} MB; ` +
               `${execFileSync(chromium, ['--version']).toString().trim()}; ${os.cpus()[0].model}, ${os.cpus().length} cores, ` +
               `load ${os.loadavg().map(x => x.toFixed(2)).join(' ')}`);
-  console.log('  lesson                     dim  engine   first  answer   shown painted  native  (ms; medians of 9 slider moves, native of 3)');
+  console.log('  lesson                     dim  engine   first    load  answer   shown painted  native  (ms; medians of 9 slider moves, native of 3)');
   const rows = [];
   for (const f of files) {
     const text = fs.readFileSync(path.join(root, 'lessons', f), 'utf8');
@@ -49,8 +51,10 @@ async function main() {
     const page = await cdp.openPage('file://' + path.resolve(site, id, 'index.html') + '?show=try-it');
     let n = await cdp.answered(page, 0);
     for (let k = 0; k < 100 && !(await page.eval(`document.getElementById('try-it').dataset.warmRuns`)); ++k) await cdp.sleep(50);
+    for (let k = 0; k < 100 && (await page.eval('document.readyState')) !== 'complete'; ++k) await cdp.sleep(50);
     const first = await page.eval(`(function () { var d = document.getElementById('try-it').dataset;
-      return {engine: Number(d.engineAt), first: Number(d.firstShownAt)}; })()`);
+      var nav = performance.getEntriesByType('navigation')[0];
+      return {engine: Number(d.engineAt), first: Number(d.firstShownAt), load: nav ? nav.loadEventEnd : NaN}; })()`);
     const inputs = await page.eval(`Array.prototype.map.call(document.querySelectorAll('#try-it input[type=range]'),
       function (i) { return i.dataset.name; })`);
     const answer = [], shown = [], painted = [], stages = {};
@@ -78,10 +82,10 @@ async function main() {
       execFileSync(collide, ['step', path.join(root, 'lessons', f), '--events', '--json'], {stdio: ['ignore', 'ignore', 'ignore']});
       native.push(Number(process.hrtime.bigint() - t0) / 1e6);
     }
-    const row = {id, dim, engine: first.engine, first: first.first, answer: median(answer), shown: median(shown),
+    const row = {id, dim, engine: first.engine, first: first.first, load: first.load, answer: median(answer), shown: median(shown),
                  painted: median(painted), native: median(native)};
     rows.push(row);
-    console.log(`  ${id.padEnd(26)} ${dim}D ${fixed(row.engine).padStart(7)} ${fixed(row.first).padStart(7)} ` +
+    console.log(`  ${id.padEnd(26)} ${dim}D ${fixed(row.engine).padStart(7)} ${fixed(row.first).padStart(7)} ${fixed(row.load).padStart(7)} ` +
                 `${fixed(row.answer).padStart(7)} ${fixed(row.shown).padStart(7)} ${fixed(row.painted).padStart(7)} ` +
                 `${fixed(row.native).padStart(7)}`);
     console.log('      stages: ' + Object.keys(stages).map(k => k + ' ' + fixed(median(stages[k]))).join(', '));
@@ -89,10 +93,12 @@ async function main() {
   const goal = r => (r.dim === 3 ? 50 : 16);
   const slow = rows.filter(r => r.painted > goal(r)).map(r => `${r.id} ${fixed(r.painted)}`);
   const late = rows.filter(r => r.first > 100).map(r => `${r.id} ${fixed(r.first)}`);
+  const afterLoad = rows.filter(r => !(r.first < r.load)).map(r => `${r.id} ${fixed(r.first)} (load ${fixed(r.load)})`);
   console.log(`  medians over the lessons: first ${fixed(median(rows.map(r => r.first)))} ms, painted ` +
               `${fixed(median(rows.filter(r => r.dim < 3).map(r => r.painted)))} ms (1D, 2D), ` +
               `${fixed(median(rows.filter(r => r.dim === 3).map(r => r.painted)))} ms (3D)`);
-  console.log(`  first answer over 100 ms: ${late.length ? late.join(', ') : 'none'}`);
+  console.log(`  first answer over 100 ms after the navigation: ${late.length ? late.join(', ') : 'none'}`);
+  console.log(`  first answer not before the page's load event: ${afterLoad.length ? afterLoad.join(', ') : 'none'}`);
   console.log(`  answers painted over the goal (16 ms 1D/2D, 50 ms 3D): ${slow.length ? slow.join(', ') : 'none'}`);
 }
 
