@@ -4,10 +4,12 @@
 # / at / after figures, worked examples, plots, questions with answers, and on each lesson page
 # a Try-it panel run by the engine compiled to WebAssembly, which the build makes in
 # build/wasm/; open out/site/index.html in a browser).
+# Only what that needs is installed and built: the tests' tools, collide-bench and the Python
+# module come with scripts/test.sh (or scripts/install-deps.sh and scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scripts/install-deps.sh
-scripts/build.sh
+scripts/install-deps.sh --demo
+scripts/build.sh -DCOLLIDE_BUILD_TESTS=OFF -DCOLLIDE_BUILD_BENCH=OFF -DCOLLIDE_PYTHON=OFF
 build/cli/collide solve lessons/solve/rod-on-ground.toml
 build/cli/collide lessons
 build/cli/collide material -o out/site --force

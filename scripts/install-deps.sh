@@ -2,6 +2,9 @@
 # Installs every Debian 12 package the build needs. Idempotent; run as root (or with sudo).
 # The list grows with the project: see ../shared/STACK.md for how each is found from CMake.
 # Usage: scripts/install-deps.sh              everything: build, tests, benchmarks, CI
+#        scripts/install-deps.sh --demo       only what scripts/demo.sh needs: the command, the
+#                                             WebAssembly module and the site's videos (no test
+#                                             tools, no Python module)
 #        scripts/install-deps.sh --package    only what building the Debian packages needs
 #                                             (scripts/package.sh)
 set -euo pipefail
@@ -44,10 +47,19 @@ develop=(
   npm                               # the QTI reader of the qti tests (scripts/install-qti-reader.sh)
 )
 
+# The demo (scripts/demo.sh): the build without the Python module's packages, and the site's
+# WebAssembly module (emscripten) and videos (ffmpeg).
+demo=()
+for p in "${build[@]}"; do
+  case $p in python3-dev | pybind11-dev | python3-numpy) ;; *) demo+=("$p") ;; esac
+done
+demo+=(ffmpeg emscripten node-acorn nodejs)
+
 case ${1:-} in
   "") packages=("${build[@]}" "${develop[@]}") ;;
+  --demo) packages=("${demo[@]}") ;;
   --package) packages=("${build[@]}") ;;
-  *) echo "usage: $0 [--package]" >&2; exit 2 ;;
+  *) echo "usage: $0 [--demo | --package]" >&2; exit 2 ;;
 esac
 
 missing=()
