@@ -24,8 +24,9 @@
                          'the pages.';
     return;
   }
-  // The engine, beside this script: loaded once the page's first answer is shown (below).
-  var engineSrc = document.currentScript.src.replace(/try-it\.js(\?.*)?$/, 'collide-engine.js');
+  // The folder of this script, where the engine and three.js are (loaded once the page's first
+  // answer is shown, below).
+  var here = document.currentScript.src.replace(/try-it\.js(\?.*)?$/, '');
   var text = window.collideTryIt.lesson;  // the lesson's file, as `collide` reads it
   var palette = window.collideTryIt.palette;
   var fps = parseFloat(panel.dataset.fps) || 30;
@@ -189,6 +190,9 @@
     request();
   });
 
+  // The engine's run of the lesson with the panel's values and plot (its JSON text).
+  function ask() { return engine.lesson(text + freePlot.extraText(), values, fps); }
+
   // The browser compiles the module's code first plainly, and again optimised once it has run
   // for a while (V8's tiers): in Chromium general-2d's answers took 19 ms until the 7th and 6 ms
   // from the 8th on. So once the page has answered, the engine answers a few more times in the
@@ -199,7 +203,7 @@
     window.setTimeout(function () {
       if (pending) { warmUp(runs, spent); return; }
       var t0 = performance.now();
-      try { engine.lesson(text + freePlot.extraText(), values, fps); } catch (e) { return; }  // answer() says why
+      try { ask(); } catch (e) { return; }  // answer() says why
       warmUp(runs + 1, spent + performance.now() - t0);
     }, 20);
   }
@@ -215,7 +219,7 @@
     if (!engine) return;  // the module has not started: it answers when it has (below)
     var t0 = performance.now(), next, reply;
     try {
-      reply = engine.lesson(text + freePlot.extraText(), values, fps);
+      reply = ask();
       times.engine = performance.now() - t0;
       next = JSON.parse(reply);
     } catch (e) {
@@ -420,25 +424,25 @@
   if (window.location.hash === '#try-it') panel.scrollIntoView();
   // In 3D, three.js (beside the pages, as the engine) once the first answer is shown; the 3D
   // view draws the run it has when it has loaded.
-  if (d3) {
-    var three = document.createElement('script');
-    three.src = engineSrc.replace(/collide-engine\.js$/, 'three.min.js');
-    three.onerror = function () { picture.missing(); };
-    three.onload = function () {
-      if (!picture.start() || !run) return;
-      picture.prepare();
-      handles.make();
-      draw();
-    };
-    document.body.appendChild(three);
+  // (a script beside this one, by a script element: file:// works)
+  function loadBeside(file, loaded, failed) {
+    var script = document.createElement('script');
+    script.src = here + file;
+    script.onerror = failed;
+    script.onload = loaded;
+    document.body.appendChild(script);
   }
-  var script = document.createElement('script');
-  script.src = engineSrc;
-  script.onerror = function () {
+  if (d3) loadBeside('three.min.js', function () {
+    if (!picture.start() || !run) return;
+    picture.prepare();
+    handles.make();
+    draw();
+  }, function () { picture.missing(); });
+  function engineMissing() {
     status.textContent = 'The engine (collide-engine.js) did not load: the panel needs it beside the pages.';
-  };
-  script.onload = function () {
-    if (typeof CollideEngine !== 'function') { script.onerror(); return; }
+  }
+  loadBeside('collide-engine.js', function () {
+    if (typeof CollideEngine !== 'function') { engineMissing(); return; }
     CollideEngine().then(function (m) {
       engine = m;
       panel.dataset.engineAt = performance.now().toFixed(1);
@@ -447,6 +451,5 @@
     }, function (e) {
       status.textContent = 'The engine did not start: ' + e;
     });
-  };
-  document.body.appendChild(script);
+  }, engineMissing);
 })();
