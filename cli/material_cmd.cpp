@@ -115,7 +115,7 @@ int run_material(const MaterialOptions& opt, std::ostream& out, std::ostream& er
         build_site(SiteRequest{lessons, request, engine_js, three_js, &notes}, tmp, progress, cli::stop_requested);
         staged.commit();
         std::istringstream said(notes.str());
-        for (std::string line; std::getline(said, line);) err << "collide material: " << line << "\n";
+        for (std::string line; std::getline(said, line);) err << "collide material: note: " << line << "\n";
         if (!opt.quiet) {
             char line[200];
             std::snprintf(line, sizeof line, "wrote %zu lessons to %s/index.html in %.1f s%s\n", lessons.size(),
