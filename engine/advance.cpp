@@ -235,12 +235,10 @@ void World<D>::check_finite(const std::vector<Body>& bodies, double t) const {
 template <int D>
 void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on_impact) {
     const double t0 = loop_.time;
-    // Substep: bodies move about four radii each (the grid stays tight: longer substeps mean
-    // larger swept boxes, shorter ones more rebuilds), and at most kRestStep while anything
-    // rests or falls. Chosen from the bodies alone, never from where an advance stops.
-    double h = kLongestSubstep;
+    // Substep: free motion's (free_substep()), at most kRestStep while anything rests or falls.
+    // Chosen from the bodies alone, never from where an advance stops.
+    double h = free_substep();
     bool any_rest = false, any_stepped = false;
-    double speed = 0.0, size = 0.0;
     std::size_t moving = 0;
     steps_.exact_bodies = false;
     for (std::size_t i = 0; i < bodies_.size(); ++i) {
@@ -248,11 +246,8 @@ void World<D>::begin_substep(std::vector<Event<D>>* events, const ImpactHook& on
         steps_.exact_bodies = steps_.exact_bodies || !steps_.stepped[i];
         any_rest = any_rest || (islands_.of[i] != 0 && !islands_.asleep[i]);
         any_stepped = any_stepped || (steps_.stepped[i] && !islands_.asleep[i]);
-        speed += bodies_[i].v.norm() + track_[i].a.norm() * h;
-        size += shapes_.radius[i];
         ++moving;
     }
-    if (moving > 0 && speed > 0.0) h = std::min(h, std::max(kShortestSubstep, 4.0 * size / speed));
     // Stepped islands: a substep never crosses a step's end; at a step's start they are solved.
     bool step_now = false;
     if (any_stepped) {

@@ -67,6 +67,13 @@ void BroadPhase<D>::insert(std::size_t i, const Vec& lo, const Vec& hi) {
             box.hi[d] = std::max(box.hi[d], had.hi[d]);
         }
     had = box;
+    std::array<Vec, 2>& b = boxes_[i];
+    if (skip.empty()) {
+        b = {lo, hi};
+    } else {
+        b[0] = b[0].cwiseMin(lo);
+        b[1] = b[1].cwiseMax(hi);
+    }
     for_each_cell(box, skip, [&](std::size_t c) {
         if (cells_[c].empty()) used_cells_.push_back(c);
         cells_[c].push_back(static_cast<std::uint32_t>(i));
@@ -110,6 +117,7 @@ void BroadPhase<D>::build(const std::vector<std::array<Vec, 2>>& moving) {
     }
     if (cells_.size() < total) cells_.resize(total);
     placed_.assign(plane_.size(), CellBox{});
+    boxes_.resize(plane_.size());
 }
 
 template class BroadPhase<2>;

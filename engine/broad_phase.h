@@ -1,8 +1,8 @@
 // The broad phase: which bodies may meet within a substep. A uniform grid over the bodies'
 // swept bounding boxes (the box a body's centre covers during the substep, widened by its
 // reach), rebuilt each substep: a body's neighbours are the bodies in the cells its own box
-// covers, about N log N per second simulated instead of N^2 pairs. Planes are unbounded: they
-// are in no cell and every body's neighbours.
+// covers whose boxes overlap it, about N log N per second simulated instead of N^2 pairs.
+// Planes are unbounded: they are in no cell and every body's neighbours.
 #pragma once
 
 #include <array>
@@ -54,6 +54,9 @@ private:
     std::vector<std::vector<std::uint32_t>> cells_;
     std::vector<std::size_t> used_cells_;
     std::vector<CellBox> placed_;  // per body: the cells it is in this substep
+    // Per body: the union of its swept boxes this substep (as its cells are a union): a body in
+    // a shared cell whose box does not overlap the query's is not a neighbour.
+    std::vector<std::array<Vec, 2>> boxes_;
     std::vector<std::uint32_t> seen_;
     std::vector<std::uint32_t> scratch_;
     std::uint32_t query_ = 0;
@@ -90,7 +93,8 @@ void BroadPhase<D>::for_each_neighbour(std::size_t i, const Box& box, F&& f) {
             for (std::uint32_t j : cells_[c])
                 if (seen_[j] != query_) {
                     seen_[j] = query_;
-                    found.push_back(j);
+                    const std::array<Vec, 2>& b = boxes_[j];
+                    if ((b[0].array() <= hi.array()).all() && (lo.array() <= b[1].array()).all()) found.push_back(j);
                 }
         });
         for (std::uint32_t j : found) f(static_cast<std::size_t>(j));

@@ -54,12 +54,53 @@ Quat exp_map(const Vec3& phi) {
     return Quat(half.cos, v.x(), v.y(), v.z());
 }
 
+namespace {
+
+// The body-frame axis of a symmetric top's distinct moment (0, 1, 2), or -1: the inertia is
+// diagonal in the body frame with exactly two principal moments equal and all three positive.
+// (An isotropic inertia, a sphere's, is not a top: rotate_free turns it first.)
+int symmetry_axis(const Mat3& Ib) {
+    if (!(Ib - Mat3(Ib.diagonal().asDiagonal())).isZero(0.0)) return -1;
+    const Vec3 d = Ib.diagonal();
+    if (!(d.minCoeff() > 0.0)) return -1;
+    for (int k = 0; k < 3; ++k) {
+        const double a = d[(k + 1) % 3], b = d[(k + 2) % 3];
+        if (a == b && d[k] != a) return k;
+    }
+    return -1;
+}
+
+}  // namespace
+
+bool rotation_integrated(const Body3& body) {
+    const Mat3& Ib = body.inertia;
+    return !body.is_static && !body.w.isZero(0.0) && Ib != Mat3::Identity() * Ib(0, 0) && symmetry_axis(Ib) < 0;
+}
+
 std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings, std::uint64_t max_steps) {
     if (body->is_static || dt == 0.0) return 0;
     const Mat3& Ib = body->inertia;
     if (Ib == Mat3::Identity() * Ib(0, 0)) {
         // A sphere's inertia is isotropic: w stays constant and one exact turn does.
         body->orientation = (exp_map(body->w * dt) * body->orientation).normalized();
+        return 1;
+    }
+    if (const int k = symmetry_axis(Ib); k >= 0) {
+        // A symmetric top (moments I1 = I2 about the axes across its symmetry axis e3, I3 along
+        // it): with L = R Ib R^T w fixed and L3 = L.e3 kept (Euler's third equation: I1 = I2),
+        //     w = I^-1 L = L / I1 + L3 (1/I3 - 1/I1) e3,
+        // a turn about the fixed L at |L| / I1 (precession) plus one about its own e3 at
+        // b = L3 (1/I3 - 1/I1) (spin): q(t) = exp(L t / I1) q0 exp(e3_body b t), whose spin is
+        // L / I1 + b q(t) e3_body. Exact for any dt.
+        const double I1 = Ib((k + 1) % 3, (k + 1) % 3), I3 = Ib(k, k);
+        const Quat q0 = body->orientation.normalized();
+        const Vec3 Lb = Ib * (q0.conjugate() * body->w);
+        const Vec3 L = q0 * Lb;
+        const Vec3 e3 = Vec3::Unit(k);
+        const double b = Lb[k] * (1.0 / I3 - 1.0 / I1);
+        const Quat q = (exp_map(L * (dt / I1)) * q0 * exp_map(e3 * (b * dt))).normalized();
+        body->orientation = q;
+        body->w = L / I1 + b * (q * e3);
         return 1;
     }
     const Mat3 inv_Ib = inertia_pseudo_inverse(Ib);

@@ -27,7 +27,13 @@ Quat exp_map(const Vec3& phi);
 // Static bodies and bodies at rest are left alone (0 steps). Throws RunError
 // (engine/run_error.h), before taking any, if the steps would number more than max_steps (a
 // world passes what its work budget has left) or 2^53.
+// A sphere's inertia (isotropic) and a symmetric top's (diagonal in the body frame, two
+// principal moments equal, all three positive) turn in closed form: one exact step whatever dt.
 std::uint64_t rotate_free(Body3* body, double dt, const RotationSettings& settings = {},
                           std::uint64_t max_steps = UINT64_MAX);
+
+// True when rotate_free integrates the body's turn in steps (neither a sphere's inertia nor a
+// symmetric top's, and spinning): its pose later costs steps from where it is now.
+bool rotation_integrated(const Body3& body);
 
 }  // namespace collide

@@ -20,10 +20,11 @@ public:
 // What a RunError's message starts with: "FILE: " (Scene::file), or nothing.
 inline std::string run_source(const std::string& file) { return file.empty() ? std::string() : file + ": "; }
 
-// A number in a RunError's message: 6 significant figures, as %g writes them (0.01, 2.5e+09).
-inline std::string run_number(double x) {
+// A number in a RunError's message: 6 significant figures (an estimate: fewer), as %g writes
+// them (0.01, 2.5e+09).
+inline std::string run_number(double x, int figures = 6) {
     char text[32];
-    std::snprintf(text, sizeof text, "%.6g", x);
+    std::snprintf(text, sizeof text, "%.*g", figures, x);
     return text;
 }
 

@@ -34,6 +34,8 @@ bool is_round(const Shape2& s) { return s.kind == Shape2::Kind::disc; }
 bool is_round(const Shape3& s) { return s.kind == Shape3::Kind::sphere; }
 bool is_plane(const Shape2& s) { return s.kind == Shape2::Kind::half_plane; }
 bool is_plane(const Shape3& s) { return s.kind == Shape3::Kind::half_space; }
+bool turn_integrated(const Body2&) { return false; }  // a 2D turn is w t: exact
+bool turn_integrated(const Body3& b) { return rotation_integrated(b); }
 
 // Turning for dt seconds with a constant angular acceleration alpha (resting forces; 0 when
 // free); returns the rotation steps taken (3D), refusing (RunError) a turn of more than
@@ -122,7 +124,7 @@ World<D>::World(const Scene& scene) : scene_(scene) {
     for (std::size_t i = 0; i < n; ++i) set_free(i);
     estimate_ = estimate_work();
     if (estimate_ > static_cast<double>(work_budget()))
-        throw RunError(run_source(scene.file) + "the scene would take about " + run_number(estimate_) +
+        throw RunError(run_source(scene.file) + "the scene would take about " + run_number(estimate_, 3) +
                        " units of work (" + run_duration(estimate_) + ") to run its " + run_number(scene.duration) +
                        " s, more than its budget of " + run_number(scene.work_budget) +
                        " (--max-work raises it; see docs/stepping.md, \"Work budget\")");
@@ -141,6 +143,31 @@ void World<D>::set_free(std::size_t i) {
     ++k.version;
     islands_.of[i] = 0;
     islands_.asleep[i] = 0;
+}
+
+template <int D>
+bool World<D>::turns_in_steps(std::size_t i) const {
+    if (bodies_[i].is_static || islands_.asleep[i]) return false;
+    return turn_integrated(welds_.of[i] >= 0 ? welds_.all[welds_.of[i]].body : bodies_[i]);
+}
+
+template <int D>
+double World<D>::free_substep() const {
+    double h = kLongestSubstep, speed = 0.0, size = 0.0;
+    for (std::size_t i = 0; i < bodies_.size(); ++i) {
+        if (bodies_[i].is_static) continue;
+        speed += bodies_[i].v.norm() + track_[i].a.norm() * kSpeedSpan;
+        size += shapes_.radius[i];
+        if (turns_in_steps(i)) {
+            const bool welded = welds_.of[i] >= 0;
+            const double spin = welded
+                                    ? spin_bound(welds_.all[welds_.of[i]].body, welds_.all[welds_.of[i]].inv_min_moment)
+                                    : spin_bound(bodies_[i], shapes_.inv_min_moment[i]);
+            h = std::min(h, std::max(kRestStep, kTurnPerSubstep / spin));
+        }
+    }
+    if (speed > 0.0) h = std::min(h, 4.0 * size / speed);
+    return std::max(kShortestSubstep, h);
 }
 
 template <int D>

@@ -42,6 +42,40 @@ TEST(Rotation, SymmetricTopPrecessesAtTheEulerRate) {
     EXPECT_LE((body_w(b) - Vec3(A * std::cos(W * T), A * std::sin(W * T), w3)).norm(), 1e-9);
 }
 
+// The regular precession of a torque-free symmetric top, in closed form: its figure axis e3
+// turns about the fixed L at |L| / I1 (any mechanics text), and its orientation q(t) obeys
+// dq/dt = w q / 2 with w = I(t)^-1 L: checked against a central difference of q (to 1e-7 of
+// |w|), with |L|, L and the energy kept to 1e-12 and one exact step whatever the time.
+TEST(Rotation, SymmetricTopTurnsInClosedForm) {
+    const double Ip = 2.0, I3 = 0.5;
+    const Quat q0(Eigen::AngleAxisd(0.4, Vec3(1, 2, 3).normalized()));
+    const Body3 start = body_with(Vec3(Ip, Ip, I3), Vec3(0.8, -0.3, 6.0), q0);
+    EXPECT_FALSE(rotation_integrated(start));
+    EXPECT_TRUE(rotation_integrated(body_with(Vec3(1, 2, 3), Vec3(0.8, -0.3, 6.0), q0)));
+    const Vec3 L0 = world_L(start);
+    const double E0 = energy(start);
+    auto at = [&](double t) {
+        Body3 b = start;
+        EXPECT_EQ(rotate_free(&b, t), 1u);
+        return b;
+    };
+    for (double T : {0.3, 3.3, 100.0}) {
+        const Body3 b = at(T);
+        EXPECT_LE((world_L(b) - L0).norm(), 1e-12 * L0.norm()) << T;
+        EXPECT_NEAR(energy(b), E0, 1e-12 * E0) << T;
+        // The figure axis: turned about L by |L| T / I1 from where it was.
+        const Vec3 e3 = b.orientation * Vec3::UnitZ();
+        const Vec3 expected = Eigen::AngleAxisd(L0.norm() * T / Ip, L0.normalized()) * (q0 * Vec3::UnitZ());
+        EXPECT_LE((e3 - expected).norm(), 1e-11 * std::max(1.0, T)) << T;
+        // dq/dt = w q / 2: (q(T + d) q(T - d)^*) is the turn by w 2d.
+        const double d = 1e-6;
+        const Quat turn = at(T + d).orientation * at(T - d).orientation.conjugate();
+        const Eigen::AngleAxisd aa(turn);
+        const Vec3 w_fd = aa.axis() * (aa.angle() / (2.0 * d));
+        EXPECT_LE((w_fd - b.w).norm(), 1e-7 * b.w.norm()) << T;
+    }
+}
+
 // An asymmetric body tumbling for 10^4 output steps of 0.01 s: |L| and kinetic energy kept to
 // 1e-9 relative (the midpoint rule keeps both quadratic invariants), and the direction of the
 // world angular momentum too.

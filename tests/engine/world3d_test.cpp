@@ -144,6 +144,58 @@ TEST(World3d, DzhanibekovFlip) {
     EXPECT_TRUE(events.empty());
 }
 
+// ---- 3b. Substeps as long as the motion allows ------------------------------------------------
+
+// Free motion in closed form bounds no substep (engine/world.h, kLongestSubstep): two spheres
+// (r = 0.1 m) flying apart at 1 m/s each without gravity take substeps of four radii of their
+// mean motion, 4 (0.1 + 0.1) / (1 + 1) = 0.4 s: 5 in 2 s, and are where x0 + v t puts them
+// (round-off). A symmetric top (half extents 0.1, 0.1, 0.3) at rest but turning also turns in
+// closed form: substeps of kLongestSubstep (1 s), its L and E kept to 1e-12. A box with three
+// different moments turning is integrated in steps: no substep turns it more than
+// kTurnPerSubstep (0.5 rad) at its spin bound sqrt(2 E / I_min) (toi.h), so 2 s take at least
+// 2 s * bound / 0.5 rad substeps (one more for round-off in the substeps' sum).
+TEST(World3d, SubstepsAreAsLongAsTheMotionAllows) {
+    {
+        Scene s = empty_scene(3);
+        s.bodies.push_back(sphere("a", 0.1, 1.0, Vec3(-1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 0, 3)));
+        s.bodies.push_back(sphere("b", 0.1, 1.0, Vec3(1, 0, 0), Vec3(0, 1, 0)));
+        World3 w(s);
+        std::vector<Event3> events;
+        w.advance_to(2.0, &events);
+        EXPECT_EQ(w.counters().substeps, 5u);
+        EXPECT_LE((w.bodies()[0].position - Vec3(-3, 0, 0)).norm(), 1e-15 * 3);
+        EXPECT_LE((w.bodies()[1].position - Vec3(1, 2, 0)).norm(), 1e-15 * 3);
+        EXPECT_TRUE(events.empty());
+    }
+    const Quat q0(Eigen::AngleAxisd(0.7, Vec3(1, 2, 3).normalized()));
+    {
+        Scene s = empty_scene(3);
+        s.bodies.push_back(box("top", Vec3(0.1, 0.1, 0.3), 2.0, Vec3::Zero(), q0, Vec3::Zero(), q0 * Vec3(1.5, 0, 5)));
+        World3 w(s);
+        const Totals3 t0 = totals(w.bodies());
+        std::vector<Event3> events;
+        w.advance_to(2.0, &events);
+        EXPECT_EQ(w.counters().substeps, 2u);
+        const Totals3 t1 = totals(w.bodies());
+        EXPECT_LE((t1.angular_momentum - t0.angular_momentum).norm(), 1e-12 * t0.angular_momentum.norm());
+        EXPECT_NEAR(t1.kinetic_energy, t0.kinetic_energy, 1e-12 * t0.kinetic_energy);
+    }
+    {
+        const Vec3 half(0.05, 0.15, 0.3);
+        Scene s = empty_scene(3);
+        s.bodies.push_back(box("tumbler", half, 1.0, Vec3::Zero(), q0, Vec3::Zero(), q0 * Vec3(3, 10, -2)));
+        World3 w(s);
+        const Body3& b = w.bodies()[0];
+        const double E = 0.5 * b.w.dot(b.inertia_world() * b.w);
+        const double bound = std::sqrt(2.0 * E / b.inertia.diagonal().minCoeff());
+        std::vector<Event3> events;
+        w.advance_to(2.0, &events);
+        const double fewest = std::ceil(2.0 * bound / 0.5);
+        EXPECT_GE(static_cast<double>(w.counters().substeps), fewest);
+        EXPECT_LE(static_cast<double>(w.counters().substeps), fewest + 1.0);
+    }
+}
+
 // ---- 4. Impact times and the elastic exchange ----------------------------------------------------
 
 // Two equal spheres on the line through their centres (direction n), gap d, closing speed u:
