@@ -8,9 +8,15 @@
 # module come with scripts/test.sh (or scripts/install-deps.sh and scripts/build.sh).
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Each stage's time is printed as it ends (a newcomer sees where the minutes go).
+stage() { echo "demo: $1 in $((SECONDS - start)) s (${SECONDS} s in all)" >&2; start=$SECONDS; }
+start=$SECONDS
 scripts/install-deps.sh --demo
+stage "packages installed"
 scripts/build.sh -DCOLLIDE_BUILD_TESTS=OFF -DCOLLIDE_BUILD_BENCH=OFF -DCOLLIDE_PYTHON=OFF
+stage "built (the command and the WebAssembly module)"
 build/cli/collide solve lessons/solve/rod-on-ground.toml
 build/cli/collide lessons
 build/cli/collide material -o out/site --force
+stage "site written"
 echo "Open out/site/index.html (each lesson's files are in out/site/ID/)."
