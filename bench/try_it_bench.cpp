@@ -1,5 +1,6 @@
 // try_it/<lesson>: the Try-it panel's answer (present/try_it_answer.h) to a bundled lesson with
-// its own values at the pages' 30 frames/s: the run, the collision worked out, the plots and the
+// its own values at the pages' 30 frames/s (try_it_move/<lesson>: with its first input moved to
+// its lowest value, as after a slider move): the run, the collision worked out, the plots and the
 // JSON, natively. The WebAssembly module computes the same at every slider move; the browser's
 // figures are scripts/browser-speed.sh's (docs/wasm.md, "Speed"). Benchmarks measure; they
 // assert nothing.
@@ -13,15 +14,16 @@
 #include <benchmark/benchmark.h>
 
 #include "present/try_it_answer.h"
+#include "scenario/lesson.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-void answer(benchmark::State& state, const std::string& text) {
+void answer(benchmark::State& state, const std::string& text, const std::string& values) {
     std::size_t bytes = 0;
     for (auto _ : state) {
-        const std::string json = collide::try_it_answer_json(text, "{}", 30.0);
+        const std::string json = collide::try_it_answer_json(text, values, 30.0);
         bytes = json.size();
         benchmark::DoNotOptimize(json.data());
     }
@@ -40,7 +42,18 @@ const int registered = [] {
         text << in.rdbuf();
         std::string name = file.stem().string();
         name = name.substr(name.find('-') + 1);  // "06-general-2d" -> "general-2d"
-        benchmark::RegisterBenchmark(("try_it/" + name).c_str(), answer, text.str())->Unit(benchmark::kMillisecond);
+        benchmark::RegisterBenchmark(("try_it/" + name).c_str(), answer, text.str(), "{}")
+            ->Unit(benchmark::kMillisecond);
+        // A slider moved: the first input at its lowest value, as the panel sends it.
+        const collide::Lesson lesson = collide::parse_lesson_text(text.str(), file.string(), file.string());
+        if (!lesson.vary.empty()) {
+            const collide::LessonVary& v = lesson.vary.front();
+            std::ostringstream values;
+            values.precision(17);
+            values << "{\"" << v.name() << "\": " << v.lo << "}";
+            benchmark::RegisterBenchmark(("try_it_move/" + name).c_str(), answer, text.str(), values.str())
+                ->Unit(benchmark::kMillisecond);
+        }
     }
     return static_cast<int>(files.size());
 }();

@@ -50,8 +50,8 @@ Lesson parse_lesson_text(const std::string& text, const std::string& name, const
     L.file = path;
     L.source = text;
     L.source_name = name;
-    L.scene = parse_scene_text(text, name, &L.view, lesson_tables());
-    const toml::table table = parse_toml_text(text, name);
+    const toml::table table = parse_toml_text(text, name);  // read once: the scene and the lesson's tables
+    L.scene = parse_scene_table(table, name, &L.view, lesson_tables());
     const TableReader root(table, name, "");
     const auto lt = root.table("lesson");
     if (!lt)

@@ -294,10 +294,8 @@ void set_value(toml::table& file, const std::string& name, double value, const L
     put_number(old, value, [&](auto&& v) { arr.replace(at, std::move(v)); });
 }
 
-}  // namespace
-
-Lesson lesson_with_values(const Lesson& L, const std::map<std::string, double>& values) {
-    toml::table file = parse_toml_text(L.source, L.source_name);
+// lesson_with_values on the lesson's file already read (`file`, a copy edited here).
+Lesson with_values(const Lesson& L, const std::map<std::string, double>& values, toml::table file) {
     file.erase("question");  // only the scene is wanted, and questions may hold what_if themselves
     file.erase("vary");      // the ranges are the caller's business (a worksheet draws from them)
     for (const auto& [name, value] : values) set_value(file, name, value, L);
@@ -307,9 +305,10 @@ Lesson lesson_with_values(const Lesson& L, const std::map<std::string, double>& 
     return out;
 }
 
-std::map<std::string, double> input_values(const Lesson& L, const std::map<std::string, double>& inputs) {
+// input_values on the lesson's file already read.
+std::map<std::string, double> values_of_inputs(const Lesson& L, const std::map<std::string, double>& inputs,
+                                               const toml::table& file) {
     std::map<std::string, double> out = inputs;
-    const toml::table file = parse_toml_text(L.source, L.source_name);
     for (const LessonVary& v : L.vary) {
         const auto given = inputs.find(v.name());
         if (given == inputs.end()) continue;
@@ -327,8 +326,21 @@ std::map<std::string, double> input_values(const Lesson& L, const std::map<std::
     return out;
 }
 
+}  // namespace
+
+Lesson lesson_with_values(const Lesson& L, const std::map<std::string, double>& values) {
+    return with_values(L, values, parse_toml_text(L.source, L.source_name));
+}
+
+std::map<std::string, double> input_values(const Lesson& L, const std::map<std::string, double>& inputs) {
+    return values_of_inputs(L, inputs, parse_toml_text(L.source, L.source_name));
+}
+
+// The file read once for both (the Try-it panel's every move).
 Lesson lesson_with_inputs(const Lesson& L, const std::map<std::string, double>& inputs) {
-    return lesson_with_values(L, input_values(L, inputs));
+    toml::table file = parse_toml_text(L.source, L.source_name);
+    const std::map<std::string, double> values = values_of_inputs(L, inputs, file);
+    return with_values(L, values, std::move(file));
 }
 
 }  // namespace collide
