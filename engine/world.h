@@ -146,9 +146,9 @@ public:
     // start to a sample or a time-of-impact guess, and in other pieces by the run's events: while
     // one exists no body turns more than kTurnPerSubstep in a substep, where such pieces agree
     // to 1e-11 m per metre of reach (10x under kTouch; measured: 2e-12 at up to 1 rad, 6e-10 at
-    // 5 rad, and near the middle axis, whose motion is unstable, 2e-2 at 50 rad); but for no
-    // spin shorter than kRestStep (over 500 rad/s: a turn beyond the work budget is still
-    // refused before it is taken, not after the budget is spent in short substeps). Each
+    // 5 rad, and near the middle axis, whose motion is unstable, 2e-2 at 50 rad); yet never
+    // shorter than kRestStep, whatever the spin (over 500 rad/s: a turn beyond the work budget
+    // is still refused before it is taken, not after the budget is spent in short substeps). Each
     // substep's start takes gaps under kTouch for contact, so two bodies closing at speed u meet
     // within kTouch / u of the exact instant.
     static constexpr double kLongestSubstep = 1.0;
